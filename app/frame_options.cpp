@@ -1,0 +1,140 @@
+#include "app/frame_options.h"
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "scenes/scene_library.h"
+
+namespace ml::app {
+
+namespace {
+// Larger than any GL implementation's maximum texture size; the context checks the real limit.
+constexpr int kMaxDimension = 16384;
+constexpr long long kMaxLights = 16'777'216;
+}  // namespace
+
+void addFrameOptions(CLI::App& cmd, FrameOptions& o) {
+    cmd.add_option("--scene", o.scene, "atrium, plane, boxes, or a .gltf/.glb file")->capture_default_str();
+    cmd.add_option("--detail", o.detail, "tessellation scale of procedural scenes")->capture_default_str();
+    cmd.add_option("--method", o.method, "shading method: " + [] {
+        std::string s;
+        for (const auto& n : methodNames()) s += (s.empty() ? "" : ", ") + n;
+        return s;
+    }())->capture_default_str();
+    auto* grid = cmd.add_option_group("clustering", "cluster grid and light assignment (forward-plus, deferred)");
+    grid->add_option("--tiles-x", o.tilesX, "tiles across the screen; tiles down follow so tiles stay square")->capture_default_str();
+    grid->add_option("--slices", o.slices, "depth slices")->capture_default_str();
+    grid->add_option("--slicing", o.slicing, "linear, log (near to far plane), or fitted (log over the visible depth range)")->capture_default_str();
+    grid->add_option("--workgroup", o.workgroup, "compute workgroup size of the light assignment")->capture_default_str();
+    grid->add_option("--assign", o.assign, "exact (count, prefix sum, fill; no cap) or capped (fixed lists, the seeds' baseline)")->capture_default_str();
+    grid->add_option("--max-per-cluster", o.maxPerCluster, "list size of --assign capped")->capture_default_str();
+    grid->add_flag("--active-only", o.activeOnly, "assign lights only to clusters that hold a visible sample");
+    grid->add_option("--resolve", o.resolve, "deferred lighting pass: compute or fragment")->capture_default_str();
+    cmd.add_option("--view", o.view, "shaded, light-count, slices, clusters, overflow, albedo, normal, depth")->capture_default_str();
+    cmd.add_option("--lights", o.lights, "number of point lights")->capture_default_str();
+    cmd.add_option("--light-radius", o.lightRadius, "light radius in scene units (default: a tenth of the scene's diagonal)");
+    cmd.add_option("--light-intensity", o.lightIntensity, "light intensity multiplier")->capture_default_str();
+    cmd.add_option("--seed", o.seed, "seed of the light placement")->capture_default_str();
+    cmd.add_option("--lights-file", o.lightsFile, "load an exact light set from JSON (overrides --lights/--seed/--light-radius)");
+    cmd.add_option("--save-lights", o.saveLights, "write the light set of the rendered frame (after animation) to JSON");
+    cmd.add_option("--size", o.size, "output size WxH")->capture_default_str();
+    cmd.add_option("--camera", o.camera, "px,py,pz,tx,ty,tz,fovy_deg (default: the scene's suggested view)");
+    cmd.add_option("--near", o.nearPlane, "near clip plane (default: fits the scene's bounds)");
+    cmd.add_option("--far", o.farPlane, "far clip plane (default: fits the scene's bounds)");
+    cmd.add_option("--frames", o.frames, "advance the light animation this many frames (1/60 s each) first")->capture_default_str();
+    cmd.add_option("--exposure", o.exposure, "exposure before the tonemap")->capture_default_str();
+    cmd.add_option("--drift-speed", o.driftSpeed, "mean upward drift of the lights, units per second (0: still)")->capture_default_str();
+    cmd.add_option("--backend", o.backend, "offscreen GL: auto (EGL, then OSMesa), egl, osmesa")->capture_default_str();
+    cmd.add_flag("--gl-debug", o.glDebug, "debug context; print every KHR_debug message");
+    cmd.add_flag("--verbose", o.verbose, "print GL_RENDERER, GL_VERSION and scene details");
+    cmd.add_flag("--time", o.time, "print per-pass times (GPU timer queries; wall clock after glFinish on llvmpipe)");
+}
+
+void parseSize(const std::string& text, int& width, int& height) {
+    const auto x = text.find('x');
+    auto parse = [&](const std::string& part) {
+        std::size_t used = 0;
+        long v = 0;
+        try {
+            v = std::stol(part, &used);
+        } catch (const std::exception&) {
+            used = 0;
+        }
+        if (used != part.size() || part.empty())
+            throw std::invalid_argument("--size '" + text + "': expected WxH with whole numbers, e.g. 1280x720");
+        if (v <= 0 || v > kMaxDimension)
+            throw std::invalid_argument("--size '" + text + "': each side must be between 1 and " + std::to_string(kMaxDimension));
+        return static_cast<int>(v);
+    };
+    if (x == std::string::npos) throw std::invalid_argument("--size '" + text + "': expected WxH, e.g. 1280x720");
+    width = parse(text.substr(0, x));
+    height = parse(text.substr(x + 1));
+}
+
+PreparedFrame prepareFrame(const FrameOptions& o) {
+    PreparedFrame f;
+    // Flags first: a bad flag is reported before any scene is built or GL touched.
+    parseSize(o.size, f.settings.width, f.settings.height);
+    f.settings.method.kind = parseMethod(o.method);
+    ClusteringSettings& clustering = f.settings.method.clustering;
+    clustering.grid = ClusterGridConfig{o.tilesX, o.slices, parseSlicing(o.slicing), o.workgroup};
+    validateGridConfig(clustering.grid);
+    clustering.assign = parseAssignMode(o.assign);
+    if (o.maxPerCluster == 0 || o.maxPerCluster > (1u << 24))
+        throw std::invalid_argument("--max-per-cluster " + std::to_string(o.maxPerCluster) + ": must be between 1 and 16777216");
+    clustering.maxPerCluster = o.maxPerCluster;
+    clustering.activeOnly = o.activeOnly;
+    clustering.view = parseDebugView(o.view);
+    if (f.settings.method.kind == MethodKind::Naive && clustering.view != DebugView::Shaded)
+        throw std::invalid_argument("--view " + o.view + ": needs a clustered method (--method forward-plus or deferred)");
+    f.settings.method.resolve = parseResolve(o.resolve);
+    f.context.backend = parseBackend(o.backend);
+    f.context.debug = o.glDebug;
+    if (o.lights < 0 || o.lights > kMaxLights)
+        throw std::invalid_argument("--lights " + std::to_string(o.lights) + ": must be between 0 and " + std::to_string(kMaxLights));
+    if (o.seed < 0 || o.seed > std::numeric_limits<std::uint32_t>::max())
+        throw std::invalid_argument("--seed " + std::to_string(o.seed) + ": must be between 0 and 4294967295");
+    if (o.frames < 0 || o.frames > 100'000'000)
+        throw std::invalid_argument("--frames " + std::to_string(o.frames) + ": must be between 0 and 100000000");
+    if (o.lightRadius && !(std::isfinite(*o.lightRadius) && *o.lightRadius >= 0.0f))
+        throw std::invalid_argument("--light-radius: must be a finite number >= 0");
+    if (!(std::isfinite(o.lightIntensity) && o.lightIntensity >= 0.0f))
+        throw std::invalid_argument("--light-intensity: must be a finite number >= 0");
+    if (!(std::isfinite(o.exposure) && o.exposure > 0.0f)) throw std::invalid_argument("--exposure: must be > 0");
+    if (!std::isfinite(o.driftSpeed)) throw std::invalid_argument("--drift-speed: must be finite");
+    if (!(std::isfinite(o.detail) && o.detail > 0.0f && o.detail <= 16.0f))
+        throw std::invalid_argument("--detail: must be in (0, 16]");
+    f.frameIndex = static_cast<std::uint32_t>(o.frames);
+
+    f.scene = loadScene(SceneRequest{o.scene, o.detail}, f.warnings);
+    if (f.scene.indices.empty()) throw SceneError(o.scene + ": the scene has no triangles");
+
+    Camera camera = o.camera.empty() ? cameraFromPose(f.scene.suggestedView.value_or(framingView(f.scene.bounds)))
+                                     : parseCamera(o.camera);
+    fitClipPlanes(camera, f.scene.bounds);
+    if (o.nearPlane) camera.nearPlane = *o.nearPlane;
+    if (o.farPlane) camera.farPlane = *o.farPlane;
+    if (!(camera.nearPlane > 0.0f && camera.farPlane > camera.nearPlane && std::isfinite(camera.farPlane)))
+        throw std::invalid_argument("--near/--far: need 0 < near < far (got near " + std::to_string(camera.nearPlane) +
+                                    ", far " + std::to_string(camera.farPlane) + ")");
+    f.settings.camera = camera;
+    f.settings.exposure = o.exposure;
+    f.settings.timing = o.time;
+    const Bounds volume = lightVolume(f.scene.bounds);
+    f.settings.animation = verticalDrift(volume, o.driftSpeed);
+
+    if (!o.lightsFile.empty()) {
+        f.lights = loadLightsFile(o.lightsFile);
+    } else {
+        LightGeneration gen;
+        gen.count = static_cast<std::uint32_t>(o.lights);
+        gen.radius = o.lightRadius.value_or(defaultLightRadius(f.scene.bounds));
+        gen.intensity = o.lightIntensity;
+        gen.seed = static_cast<std::uint32_t>(o.seed);
+        f.lights = generateLights(volume, gen);
+    }
+    return f;
+}
+
+}  // namespace ml::app

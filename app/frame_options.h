@@ -1,0 +1,69 @@
+// The flags that describe a frame (scene, lights, camera, method, size, context), shared by
+// the subcommands, and their validation into typed settings before any GL work is done.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "renderer/context/gl_context.h"
+#include "renderer/frame_renderer.h"
+#include "renderer/light_set.h"
+#include "scenes/scene.h"
+
+namespace ml::app {
+
+struct FrameOptions {
+    std::string scene = "atrium";
+    float detail = 1.0f;
+    std::string method = "deferred";
+    // Clustering
+    unsigned tilesX = 32;
+    unsigned slices = 24;
+    std::string slicing = "fitted";
+    unsigned workgroup = 64;
+    std::string assign = "exact";
+    unsigned maxPerCluster = 2048;
+    bool activeOnly = false;
+    std::string resolve = "compute";
+    std::string view = "shaded";
+    long long lights = 1024;
+    std::optional<float> lightRadius;
+    float lightIntensity = 1.0f;
+    long long seed = 1;
+    std::string lightsFile;
+    std::string saveLights;
+    std::string size = "1280x720";
+    std::string camera;
+    std::optional<float> nearPlane;
+    std::optional<float> farPlane;
+    long long frames = 0;
+    float exposure = 1.0f;
+    float driftSpeed = 0.5f;
+    std::string backend = "auto";
+    bool glDebug = false;
+    bool verbose = false;
+    bool time = false;
+};
+
+void addFrameOptions(CLI::App& command, FrameOptions& options);
+
+// Everything a frame needs, validated. Built on the CPU only.
+struct PreparedFrame {
+    Scene scene;
+    std::vector<PointLight> lights;
+    FrameSettings settings;
+    std::uint32_t frameIndex = 0;
+    ContextOptions context;
+    std::vector<std::string> warnings;
+};
+
+// Throws std::invalid_argument or SceneError with one line naming the culprit.
+PreparedFrame prepareFrame(const FrameOptions& options);
+
+// Parses "WxH"; throws std::invalid_argument.
+void parseSize(const std::string& text, int& width, int& height);
+
+}  // namespace ml::app

@@ -1,0 +1,48 @@
+#include "app/report.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <fstream>
+#include <stdexcept>
+
+namespace ml::app {
+
+void printPassTimes(const std::vector<PassTime>& times, TimingClock clock) {
+    std::printf("%-28s %10s\n", "pass", "ms");
+    for (const PassTime& t : times) std::printf("%-28s %10.3f\n", t.name.c_str(), t.milliseconds);
+    std::printf("%-28s %10.3f   (%s)\n", "total", totalMilliseconds(times), timingClockName(clock));
+}
+
+void printSceneSummary(const PreparedFrame& frame) {
+    const Bounds& b = frame.scene.bounds;
+    const Camera& c = frame.settings.camera;
+    std::printf("scene: %s, %zu triangles, %zu materials, %zu textures, bounds (%.2f %.2f %.2f)-(%.2f %.2f %.2f)\n",
+                frame.scene.name.c_str(), frame.scene.triangleCount(), frame.scene.materials.size(),
+                frame.scene.images.size(), b.min.x, b.min.y, b.min.z, b.max.x, b.max.y, b.max.z);
+    std::printf("camera: eye (%.2f %.2f %.2f) target (%.2f %.2f %.2f) fovy %.1f near %.4f far %.2f\n", c.eye.x, c.eye.y,
+                c.eye.z, c.target.x, c.target.y, c.target.z, c.fovyDegrees, c.nearPlane, c.farPlane);
+    std::printf("lights: %zu\n", frame.lights.size());
+}
+
+void printClusterStatistics(const ClusterStatistics& s) {
+    std::printf("clusters: %u x %u x %u = %u, slicing %s over z %.3f..%.3f\n", s.tilesX, s.tilesY, s.slices, s.clusters,
+                s.slicing.c_str(), s.zNear, s.zFar);
+    std::printf("empty clusters: %.1f %%\n", 100.0 * s.emptyShare);
+    std::printf("lights per cluster: mean %.2f (non-empty: %.2f), max %u\n", s.meanLightsPerCluster,
+                s.meanLightsPerNonEmptyCluster, s.maxLightsPerCluster);
+    std::printf("list entries: %llu\n", static_cast<unsigned long long>(s.listEntries));
+    std::printf("overflow: %u clusters over the cap, %llu light references dropped\n", s.overflowClusters,
+                static_cast<unsigned long long>(s.droppedReferences));
+    if (s.activeOnly) std::printf("active clusters: %u (%.1f %%)\n", s.activeClusters, 100.0 * s.activeClusters / std::max(1u, s.clusters));
+    else std::printf("active clusters: not computed (use --active-only)\n");
+    std::printf("memory: light lists %.2f MiB, grid %.2f MiB\n", s.listBytes / 1048576.0, s.gridBytes / 1048576.0);
+}
+
+void writeJsonFile(const std::string& path, const nlohmann::json& doc) {
+    std::ofstream out(path);
+    if (!out) throw std::runtime_error(path + ": cannot write");
+    out << doc.dump(1) << "\n";
+    if (!out) throw std::runtime_error(path + ": write failed");
+}
+
+}  // namespace ml::app

@@ -1,0 +1,20 @@
+// Console reports shared by the subcommands.
+#pragma once
+
+#include <vector>
+
+#include "app/frame_options.h"
+#include "renderer/clustering/cluster_statistics.h"
+#include "renderer/pass_timer.h"
+
+#include <nlohmann/json.hpp>
+
+namespace ml::app {
+
+void printPassTimes(const std::vector<PassTime>& times, TimingClock clock);
+void printSceneSummary(const PreparedFrame& frame);
+void printClusterStatistics(const ClusterStatistics& stats);
+// Throws std::runtime_error naming the path.
+void writeJsonFile(const std::string& path, const nlohmann::json& doc);
+
+}  // namespace ml::app

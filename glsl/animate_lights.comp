@@ -1,0 +1,29 @@
+#version 450 core
+// Light animation: each light drifts upward at its own speed and wraps within the scene's
+// vertical extent. Positions are a pure function of time, so frame K is reproducible alone.
+#include "include/bindings.h"
+#define ML_LIGHTS_WRITABLE
+#include "include/lights.glsl"
+#include "include/hash.glsl"
+
+layout(local_size_x = ML_ANIMATE_WORKGROUP) in;
+
+layout(std430, binding = ML_SSBO_LIGHTS_BASE) readonly buffer BaseLights { Light baseLights[]; };
+layout(std430, binding = ML_SSBO_LIGHTS) writeonly buffer AnimatedLights { Light animatedLights[]; };
+
+uniform uint u_lightCount;
+uniform float u_time;        // seconds
+uniform float u_driftSpeed;  // metres per second, mean
+uniform vec2 u_wrapY;        // min y, height
+
+void main() {
+    uint i = gl_GlobalInvocationID.x;
+    if (i >= u_lightCount) return;
+    Light l = baseLights[i];
+    if (u_wrapY.y > 0.0 && u_driftSpeed != 0.0) {
+        float speed = u_driftSpeed * (0.5 + hashToUnitFloat(i));
+        float y = l.positionRadius.y - u_wrapY.x + speed * u_time;
+        l.positionRadius.y = u_wrapY.x + mod(y, u_wrapY.y);
+    }
+    animatedLights[i] = l;
+}

@@ -1,0 +1,56 @@
+#version 450 core
+// Fitted slicing: the min and max view depth of the visible samples, reduced over the depth
+// buffer (phase 0), then turned into the log slicing of that range (phase 1, one invocation).
+// With no visible sample the camera's near and far are sliced instead.
+#include "include/bindings.h"
+#include "include/frame_uniforms.glsl"
+#define ML_CLUSTER_GRID_WRITABLE
+#include "include/cluster_grid.glsl"
+
+layout(local_size_x = ML_SCREEN_TILE, local_size_y = ML_SCREEN_TILE) in;
+layout(binding = ML_TEX_DEPTH) uniform sampler2D u_depth;
+uniform uint u_phase;
+
+shared uint s_min[ML_SCREEN_TILE * ML_SCREEN_TILE];
+shared uint s_max[ML_SCREEN_TILE * ML_SCREEN_TILE];
+
+void main() {
+    if (u_phase == 1u) {
+        float n = grid.tile.z, f = grid.tile.w;
+        if (grid.reduction.x <= grid.reduction.y) {
+            // Positive floats order like their bit patterns.
+            n = uintBitsToFloat(grid.reduction.x);
+            f = uintBitsToFloat(grid.reduction.y);
+        }
+        f = max(f, n * (1.0 + 1e-4) + 1e-6);
+        grid.slicing.x = n;
+        grid.slicing.y = f;
+        grid.slicing.z = float(grid.dims.z) / log(f / n);
+        grid.slicing.w = -log(n) * grid.slicing.z;
+        return;
+    }
+    ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+    uint lane = gl_LocalInvocationIndex;
+    uint lo = 0xFFFFFFFFu, hi = 0u;
+    if (all(lessThan(p, textureSize(u_depth, 0)))) {
+        float d = texelFetch(u_depth, p, 0).r;
+        if (d < 1.0) {
+            uint bits = floatBitsToUint(viewDepthFromWindowDepth(d));
+            lo = bits;
+            hi = bits;
+        }
+    }
+    s_min[lane] = lo;
+    s_max[lane] = hi;
+    for (uint stride = (ML_SCREEN_TILE * ML_SCREEN_TILE) / 2u; stride > 0u; stride >>= 1) {
+        barrier();
+        if (lane < stride) {
+            s_min[lane] = min(s_min[lane], s_min[lane + stride]);
+            s_max[lane] = max(s_max[lane], s_max[lane + stride]);
+        }
+    }
+    if (lane == 0u) {
+        if (s_min[0] != 0xFFFFFFFFu) atomicMin(grid.reduction.x, s_min[0]);
+        if (s_max[0] != 0u) atomicMax(grid.reduction.y, s_max[0]);
+    }
+}

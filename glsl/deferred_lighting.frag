@@ -1,0 +1,14 @@
+#version 450 core
+// Clustered deferred lighting as a full-screen fragment pass (--resolve fragment).
+#include "include/bindings.h"
+#include "include/frame_uniforms.glsl"
+#include "include/lights.glsl"
+#include "include/shading.glsl"
+#include "include/cluster_grid.glsl"
+#include "include/cluster_lists.glsl"
+#include "include/debug_views.glsl"
+#include "include/deferred_resolve.glsl"
+
+layout(location = 0) out vec4 o_color;
+
+void main() { o_color = resolvePixel(ivec2(gl_FragCoord.xy)); }

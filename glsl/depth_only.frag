@@ -1,0 +1,3 @@
+#version 450 core
+// Depth pre-pass: depth is all this pass writes.
+void main() {}

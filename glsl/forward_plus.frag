@@ -1,0 +1,27 @@
+#version 450 core
+// Clustered forward (Forward+): after the depth pre-pass, each visible fragment finds its
+// cluster (tile from the pixel, slice from view depth) and loops over that cluster's lights.
+#include "include/bindings.h"
+#include "include/frame_uniforms.glsl"
+#include "include/lights.glsl"
+#include "include/shading.glsl"
+#include "include/material.glsl"
+#include "include/cluster_grid.glsl"
+#include "include/cluster_lists.glsl"
+#include "include/debug_views.glsl"
+
+layout(location = 0) in vec3 v_worldPos;
+layout(location = 1) in vec3 v_worldNormal;
+layout(location = 2) in vec2 v_uv;
+layout(location = 0) out vec4 o_color;
+
+void main() {
+    SurfacePoint s = surfaceFromMaterial(v_worldPos, v_worldNormal, v_uv);
+    vec3 viewDir = normalize(u_cameraPos.xyz - s.position);
+    float viewDepth = -(u_view * vec4(v_worldPos, 1.0)).z;
+    uint cluster = clusterForFragment(gl_FragCoord.xy, viewDepth);
+    uint view = grid.options.w;
+    vec3 color = vec3(0.0);
+    if (view == ML_VIEW_SHADED || view == ML_VIEW_OVERFLOW) color = shadeAmbient(s) + shadeClusterLights(s, viewDir, cluster);
+    o_color = vec4(debugViewColor(view, s, cluster, viewDepth, color), 1.0);
+}

@@ -1,0 +1,66 @@
+// Binding points and constants shared by C++ and GLSL: the one source of truth for both.
+// C++ includes this file directly; shaders include it through the project's resolver.
+// Only #define lines may live here, so it stays valid in both languages.
+#ifndef ML_BINDINGS_H
+#define ML_BINDINGS_H
+
+// Uniform buffers
+#define ML_UBO_FRAME 0
+
+// Shader storage buffers
+#define ML_SSBO_LIGHTS 0           // animated lights, read by shading
+#define ML_SSBO_LIGHTS_BASE 1      // lights at time 0, read by the animation pass
+#define ML_SSBO_MATERIALS 2
+#define ML_SSBO_CLUSTER_GRID 3     // grid dimensions and the depth range sliced this frame
+#define ML_SSBO_CLUSTER_AABBS 4    // view-space bounds of every cluster
+#define ML_SSBO_CLUSTER_COUNTS 5   // lights per cluster
+#define ML_SSBO_CLUSTER_OFFSETS 6  // first entry of each cluster's list (exact lists: prefix sum of counts)
+#define ML_SSBO_LIGHT_INDICES 7    // the light lists, one after another
+#define ML_SSBO_CLUSTER_ACTIVE 8   // 1 where a visible sample falls in the cluster (--active-only)
+#define ML_SSBO_ASSIGN_STATS 9     // overflow counters of capped lists
+#define ML_SSBO_SCAN_DATA 10       // prefix sum: the values, scanned in place
+#define ML_SSBO_SCAN_BLOCKS 11     // prefix sum: one total per block
+#define ML_SSBO_FILL_CURSORS 12    // per-cluster write positions of the fill pass
+
+// Texture units
+#define ML_TEX_BASE_COLOR 0
+
+#define ML_TEX_DEPTH 1
+#define ML_TEX_GBUFFER0 2
+#define ML_TEX_GBUFFER1 3
+#define ML_TEX_GBUFFER2 4
+
+// Image units
+#define ML_IMG_HDR 0
+#define ML_IMG_LDR 1
+
+// The light animation's compute workgroup size.
+#define ML_ANIMATE_WORKGROUP 256
+// Prefix sum: threads per workgroup; each scans two elements, so a block is twice this.
+#define ML_SCAN_WORKGROUP 256
+// Screen-space compute passes (depth reduction, active clusters, compute resolve): tile edge.
+#define ML_SCREEN_TILE 8
+// Cluster AABB pass workgroup size.
+#define ML_CLUSTER_WORKGROUP 64
+// Default light-assignment workgroup size (--workgroup overrides it).
+#define ML_ASSIGN_WORKGROUP 64
+
+// --slicing modes, as stored in the cluster grid buffer.
+#define ML_SLICING_LINEAR 0
+#define ML_SLICING_LOG 1
+#define ML_SLICING_FITTED 2
+
+// --view debug modes.
+#define ML_VIEW_SHADED 0
+#define ML_VIEW_LIGHT_COUNT 1
+#define ML_VIEW_SLICES 2
+#define ML_VIEW_CLUSTERS 3
+#define ML_VIEW_OVERFLOW 4
+#define ML_VIEW_ALBEDO 5
+#define ML_VIEW_NORMAL 6
+#define ML_VIEW_DEPTH 7
+
+// Tonemap compute tile.
+#define ML_TONEMAP_TILE 8
+
+#endif

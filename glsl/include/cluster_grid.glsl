@@ -1,0 +1,47 @@
+// The cluster grid on the GPU, mirrored in C++ by ml::ClusterGridGpu (renderer/gpu_types.h);
+// the maths mirrors renderer/clustering/cluster_grid.{h,cpp}.
+struct ClusterGridData {
+    uvec4 dims;       // tilesX, tilesY, slices, cluster count
+    vec4 slicing;     // zNear, zFar of the range sliced; scale, bias: slice = floor(f(z) * scale + bias)
+    vec4 tile;        // tile size in pixels, logarithmic (0/1), camera near, camera far
+    uvec4 reduction;  // fitted slicing: min and max visible view depth as float bits
+    uvec4 options;    // x: fitted (0/1), y: per-cluster cap (0: exact lists), z: active-only (0/1), w: debug view
+};
+
+#ifdef ML_CLUSTER_GRID_WRITABLE
+layout(std430, binding = ML_SSBO_CLUSTER_GRID) coherent buffer ClusterGridBuffer { ClusterGridData grid; };
+#else
+layout(std430, binding = ML_SSBO_CLUSTER_GRID) readonly buffer ClusterGridBuffer { ClusterGridData grid; };
+#endif
+
+uint clusterSliceCount() { return grid.dims.z; }
+
+uint sliceForDepth(float z) {
+    float f = grid.tile.y > 0.5 ? log(max(z, 1e-7)) : z;
+    float s = floor(f * grid.slicing.z + grid.slicing.w);
+    return uint(clamp(s, 0.0, float(grid.dims.z - 1u)));
+}
+
+uvec2 tileForPixel(vec2 fragCoord) {
+    uvec2 t = uvec2(max(fragCoord / grid.tile.x, vec2(0.0)));
+    return min(t, grid.dims.xy - 1u);
+}
+
+uint clusterIndex(uvec3 c) { return c.x + grid.dims.x * (c.y + grid.dims.y * c.z); }
+
+uint clusterForFragment(vec2 fragCoord, float viewDepth) {
+    return clusterIndex(uvec3(tileForPixel(fragCoord), sliceForDepth(viewDepth)));
+}
+
+// Depth of the boundary below slice k.
+float sliceBoundary(uint k) {
+    float t = float(k) / float(grid.dims.z);
+    float n = grid.slicing.x, f = grid.slicing.y;
+    return grid.tile.y > 0.5 ? n * pow(f / n, t) : n + (f - n) * t;
+}
+
+// Positive view-space distance of a depth-buffer value (window depth in [0, 1]).
+float viewDepthFromWindowDepth(float windowDepth) {
+    vec4 v = u_invProj * vec4(0.0, 0.0, windowDepth * 2.0 - 1.0, 1.0);
+    return -v.z / v.w;
+}

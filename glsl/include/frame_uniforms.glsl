@@ -1,0 +1,15 @@
+// Per-frame values, mirrored in C++ by ml::FrameUniforms (renderer/gpu_types.h).
+layout(std140, binding = ML_UBO_FRAME) uniform FrameUniformsBlock {
+    mat4 u_view;
+    mat4 u_proj;
+    mat4 u_viewProj;
+    mat4 u_invProj;
+    mat4 u_invView;
+    vec4 u_cameraPos;      // xyz: world-space eye
+    vec4 u_viewport;       // width, height, 1/width, 1/height
+    vec4 u_depthRange;     // near, far, time (s), ambient
+    uvec4 u_counts;        // x: light count
+};
+
+uint lightCount() { return u_counts.x; }
+float ambientStrength() { return u_depthRange.w; }

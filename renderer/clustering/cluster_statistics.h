@@ -1,0 +1,26 @@
+// What the light assignment built this frame, read back on request (--stats).
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+namespace ml {
+
+struct ClusterStatistics {
+    std::uint32_t tilesX = 0, tilesY = 0, slices = 0, clusters = 0;
+    std::string slicing;
+    float zNear = 0.0f, zFar = 0.0f;          // the depth range sliced
+    double emptyShare = 0.0;                  // clusters with no light
+    double meanLightsPerCluster = 0.0;        // over all clusters
+    double meanLightsPerNonEmptyCluster = 0.0;
+    std::uint32_t maxLightsPerCluster = 0;    // demand, before any cap
+    std::uint64_t listEntries = 0;            // light references stored
+    std::uint32_t overflowClusters = 0;       // capped lists: clusters over the cap
+    std::uint64_t droppedReferences = 0;      // capped lists: light references lost at the cap
+    std::uint32_t activeClusters = 0;         // with --active-only: clusters holding a visible sample
+    bool activeOnly = false;
+    std::size_t listBytes = 0;                // light index list memory in use
+    std::size_t gridBytes = 0;                // counts, offsets, bounds and flags
+};
+
+}  // namespace ml

@@ -1,0 +1,305 @@
+#include "renderer/clustering/clustered_lighting.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "glsl/include/bindings.h"
+
+namespace ml {
+
+namespace {
+
+constexpr GLbitfield kComputeToCompute = GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT;
+
+gl::Program assignmentProgram(const char* label, const char* mode, std::uint32_t workgroup) {
+    return gl::Program(label, {{GL_COMPUTE_SHADER, "assign_lights.comp"}},
+                       {{mode, "1"}, {"ML_WORKGROUP", std::to_string(workgroup)}});
+}
+
+void clearToZero(const gl::Buffer& buffer, std::size_t bytes) {
+    if (bytes == 0) return;
+    glClearNamedBufferSubData(buffer.id(), GL_R32UI, 0, static_cast<GLsizeiptr>(bytes), GL_RED_INTEGER,
+                              GL_UNSIGNED_INT, nullptr);
+}
+
+std::string mib(std::size_t bytes) { return std::to_string((bytes + (1u << 20) - 1) >> 20) + " MiB"; }
+
+}  // namespace
+
+ClusteredLighting::ClusteredLighting(const ClusteringSettings& settings)
+    : settings_(settings),
+      depthRange_(gl::Program::compute("cluster_depth_range.comp")),
+      bounds_(gl::Program::compute("cluster_bounds.comp")),
+      active_(gl::Program::compute("cluster_active.comp")),
+      count_(assignmentProgram("assign.count", "ML_ASSIGN_COUNT", settings.grid.workgroup)),
+      fill_(assignmentProgram("assign.fill", "ML_ASSIGN_FILL", settings.grid.workgroup)),
+      capped_(assignmentProgram("assign.capped", "ML_ASSIGN_CAPPED", settings.grid.workgroup)),
+      gridBuffer_("clusters.grid", sizeof(ClusterGridGpu)),
+      counters_("clusters.counters", 16) {
+    validateGridConfig(settings.grid);
+    GLint64 maxBlock = 0;
+    glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &maxBlock);
+    maxStorageBlock_ = static_cast<std::size_t>(maxBlock);
+    GLint maxInvocations = 0;
+    glGetIntegerv(GL_MAX_COMPUTE_WORK_GROUP_INVOCATIONS, &maxInvocations);
+    if (settings.grid.workgroup > static_cast<std::uint32_t>(maxInvocations))
+        throw std::invalid_argument("--workgroup " + std::to_string(settings.grid.workgroup) +
+                                    ": larger than this GPU's GL_MAX_COMPUTE_WORK_GROUP_INVOCATIONS (" +
+                                    std::to_string(maxInvocations) + ")");
+}
+
+void ClusteredLighting::checkListFits(std::size_t bytes, const char* what) const {
+    if (bytes <= maxStorageBlock_) return;
+    throw std::runtime_error(std::string(what) + " need " + mib(bytes) +
+                             ", more than this GPU's GL_MAX_SHADER_STORAGE_BLOCK_SIZE (" + mib(maxStorageBlock_) +
+                             "); lower --lights or --light-radius" +
+                             (settings_.assign == AssignMode::Capped ? ", --max-per-cluster, --tiles-x or --slices"
+                                                                      : ", or use fewer clusters"));
+}
+
+void ClusteredLighting::ensureStorage(std::uint32_t clusters) {
+    const std::size_t perCluster = std::size_t(clusters) * 4;
+    checkListFits(std::size_t(clusters) * sizeof(ClusterAabbGpu), "cluster bounds");
+    aabbs_.ensure(std::size_t(clusters) * sizeof(ClusterAabbGpu));
+    counts_.ensure(perCluster);
+    offsets_.ensure(perCluster);
+    cursors_.ensure(perCluster);
+    activeFlags_.ensure(perCluster);
+}
+
+void ClusteredLighting::uploadGrid(const FrameContext& ctx) {
+    grid_ = ClusterGrid::forViewport(settings_.grid, ctx.targets.width(), ctx.targets.height());
+    const float cameraNear = ctx.uniforms.depthRange.x, cameraFar = ctx.uniforms.depthRange.y;
+    const bool fitted = settings_.grid.slicing == Slicing::Fitted;
+    // Fitted slicing starts from the camera's range; cluster.depth-range replaces it on the GPU.
+    const DepthSlicing slicing =
+        DepthSlicing::make(settings_.grid.slicing != Slicing::Linear, cameraNear, cameraFar, grid_.slices);
+    ClusterGridGpu g{};
+    g.dims = glm::uvec4(grid_.tilesX, grid_.tilesY, grid_.slices, grid_.clusterCount());
+    g.slicing = glm::vec4(slicing.zNear, slicing.zFar, slicing.scale, slicing.bias);
+    g.tile = glm::vec4(grid_.tileSizePx, slicing.logarithmic ? 1.0f : 0.0f, cameraNear, cameraFar);
+    g.reduction = glm::uvec4(0xFFFFFFFFu, 0u, 0u, 0u);
+    g.options = glm::uvec4(fitted ? 1u : 0u, settings_.assign == AssignMode::Capped ? settings_.maxPerCluster : 0u,
+                           settings_.activeOnly ? 1u : 0u, static_cast<std::uint32_t>(settings_.view));
+    gridBuffer_.upload(&g, sizeof(g));
+}
+
+void ClusteredLighting::bindForShading() const {
+    gridBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_CLUSTER_GRID);
+    counts_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_CLUSTER_COUNTS);
+    offsets_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_CLUSTER_OFFSETS);
+    indices_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_LIGHT_INDICES);
+}
+
+void ClusteredLighting::build(const FrameContext& ctx) {
+    uploadGrid(ctx);
+    const std::uint32_t clusters = grid_.clusterCount();
+    ensureStorage(clusters);
+    gridBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_CLUSTER_GRID);
+    glBindTextureUnit(ML_TEX_DEPTH, ctx.targets.depth().id());
+    const GLuint screenX = gl::groupsFor(ctx.targets.width(), ML_SCREEN_TILE);
+    const GLuint screenY = gl::groupsFor(ctx.targets.height(), ML_SCREEN_TILE);
+
+    if (settings_.grid.slicing == Slicing::Fitted) {
+        auto pass = ctx.timer.pass("cluster.depth-range");
+        depthRange_.use();
+        depthRange_.set("u_phase", 0u);
+        glDispatchCompute(screenX, screenY, 1);
+        glMemoryBarrier(kComputeToCompute);
+        depthRange_.set("u_phase", 1u);
+        glDispatchCompute(1, 1, 1);
+        glMemoryBarrier(kComputeToCompute);
+    }
+    {
+        auto pass = ctx.timer.pass("cluster.bounds");
+        bounds_.use();
+        aabbs_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_CLUSTER_AABBS);
+        glDispatchCompute(gl::groupsFor(clusters, ML_CLUSTER_WORKGROUP), 1, 1);
+        glMemoryBarrier(kComputeToCompute);
+    }
+    activeFlags_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_CLUSTER_ACTIVE);
+    if (settings_.activeOnly) {
+        auto pass = ctx.timer.pass("cluster.active");
+        clearToZero(activeFlags_.buffer(), std::size_t(clusters) * 4);
+        active_.use();
+        glDispatchCompute(screenX, screenY, 1);
+        glMemoryBarrier(kComputeToCompute);
+    }
+    ctx.lights.animated().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_LIGHTS);
+    counters_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_ASSIGN_STATS);
+    if (settings_.assign == AssignMode::Exact) buildExact(ctx);
+    else buildCapped(ctx);
+}
+
+void ClusteredLighting::dispatchAssignment(const gl::Program& program, std::uint32_t lightCount) const {
+    program.use();
+    if (lightCount > 0) glDispatchCompute(gl::groupsFor(lightCount, settings_.grid.workgroup), 1, 1);
+    glMemoryBarrier(kComputeToCompute);
+}
+
+void ClusteredLighting::buildExact(const FrameContext& ctx) {
+    const std::uint32_t clusters = grid_.clusterCount();
+    const std::size_t perCluster = std::size_t(clusters) * 4;
+    {
+        auto pass = ctx.timer.pass("assign.count");
+        clearToZero(counts_.buffer(), perCluster);
+        counts_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_CLUSTER_COUNTS);
+        dispatchAssignment(count_, ctx.lights.count());
+    }
+    {
+        auto pass = ctx.timer.pass("assign.scan");
+        glCopyNamedBufferSubData(counts_.buffer().id(), offsets_.buffer().id(), 0, 0, static_cast<GLsizeiptr>(perCluster));
+        glMemoryBarrier(kComputeToCompute);
+        scan_.run(offsets_.buffer(), clusters, counters_, 4);
+        glMemoryBarrier(kComputeToCompute);
+    }
+    {
+        auto pass = ctx.timer.pass("assign.fill");
+        // The list is sized by this frame's total, read back here (one small sync per frame).
+        std::uint32_t total = 0;
+        counters_.download(&total, 4, 4);
+        listEntries_ = total;
+        checkListFits(std::size_t(total) * 4, "the light lists");
+        indices_.ensure(std::size_t(total) * 4);
+        clearToZero(cursors_.buffer(), perCluster);
+        counts_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_CLUSTER_COUNTS);
+        offsets_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_CLUSTER_OFFSETS);
+        indices_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_LIGHT_INDICES);
+        cursors_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_FILL_CURSORS);
+        dispatchAssignment(fill_, ctx.lights.count());
+    }
+}
+
+void ClusteredLighting::buildCapped(const FrameContext& ctx) {
+    const std::uint32_t clusters = grid_.clusterCount();
+    const std::size_t listBytes = std::size_t(clusters) * settings_.maxPerCluster * 4;
+    checkListFits(listBytes, "capped light lists (clusters x --max-per-cluster x 4 B)");
+    indices_.ensure(listBytes);
+    listEntries_ = 0;
+    auto pass = ctx.timer.pass("assign.capped");
+    clearToZero(counts_.buffer(), std::size_t(clusters) * 4);
+    clearToZero(counters_, 16);
+    counts_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_CLUSTER_COUNTS);
+    indices_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_LIGHT_INDICES);
+    dispatchAssignment(capped_, ctx.lights.count());
+}
+
+ClusterGridGpu ClusteredLighting::downloadGrid() const {
+    ClusterGridGpu g{};
+    gridBuffer_.download(&g, sizeof(g));
+    return g;
+}
+
+std::vector<std::uint32_t> ClusteredLighting::downloadCounts() const {
+    std::vector<std::uint32_t> counts(grid_.clusterCount());
+    counts_.buffer().download(counts.data(), counts.size() * 4);
+    return counts;
+}
+
+std::vector<ClusterAabbGpu> ClusteredLighting::downloadAabbs() const {
+    std::vector<ClusterAabbGpu> boxes(grid_.clusterCount());
+    aabbs_.buffer().download(boxes.data(), boxes.size() * sizeof(ClusterAabbGpu));
+    return boxes;
+}
+
+std::vector<std::vector<std::uint32_t>> ClusteredLighting::downloadLists() const {
+    const std::vector<std::uint32_t> counts = downloadCounts();
+    const std::uint32_t clusters = grid_.clusterCount();
+    std::vector<std::uint32_t> offsets(clusters);
+    const bool capped = settings_.assign == AssignMode::Capped;
+    if (!capped) offsets_.buffer().download(offsets.data(), offsets.size() * 4);
+    std::vector<std::uint32_t> indices(indices_.buffer().size() / 4);
+    indices_.buffer().download(indices.data(), indices.size() * 4);
+    std::vector<std::vector<std::uint32_t>> lists(clusters);
+    for (std::uint32_t c = 0; c < clusters; ++c) {
+        const std::uint32_t first = capped ? c * settings_.maxPerCluster : offsets[c];
+        const std::uint32_t n = capped ? std::min(counts[c], settings_.maxPerCluster) : counts[c];
+        lists[c].assign(indices.begin() + first, indices.begin() + first + n);
+    }
+    return lists;
+}
+
+ClusterStatistics ClusteredLighting::statistics() const {
+    ClusterStatistics s;
+    const ClusterGridGpu g = downloadGrid();
+    s.tilesX = grid_.tilesX;
+    s.tilesY = grid_.tilesY;
+    s.slices = grid_.slices;
+    s.clusters = grid_.clusterCount();
+    s.slicing = slicingName(settings_.grid.slicing);
+    s.zNear = g.slicing.x;
+    s.zFar = g.slicing.y;
+    const std::vector<std::uint32_t> counts = downloadCounts();
+    const bool capped = settings_.assign == AssignMode::Capped;
+    std::uint64_t demand = 0, stored = 0;
+    std::uint32_t empty = 0;
+    for (std::uint32_t c : counts) {
+        demand += c;
+        stored += capped ? std::min(c, settings_.maxPerCluster) : c;
+        empty += c == 0;
+        s.maxLightsPerCluster = std::max(s.maxLightsPerCluster, c);
+        if (capped && c > settings_.maxPerCluster) ++s.overflowClusters;
+    }
+    s.emptyShare = s.clusters ? double(empty) / s.clusters : 0.0;
+    s.meanLightsPerCluster = s.clusters ? double(demand) / s.clusters : 0.0;
+    s.meanLightsPerNonEmptyCluster = s.clusters > empty ? double(demand) / (s.clusters - empty) : 0.0;
+    s.listEntries = stored;
+    std::uint32_t dropped = 0;
+    counters_.download(&dropped, 4, 0);
+    s.droppedReferences = capped ? dropped : 0;
+    s.activeOnly = settings_.activeOnly;
+    if (settings_.activeOnly) {
+        std::vector<std::uint32_t> flags(s.clusters);
+        activeFlags_.buffer().download(flags.data(), flags.size() * 4);
+        s.activeClusters = static_cast<std::uint32_t>(std::count(flags.begin(), flags.end(), 1u));
+    }
+    s.listBytes = capped ? std::size_t(s.clusters) * settings_.maxPerCluster * 4 : std::size_t(listEntries_) * 4;
+    s.gridBytes = std::size_t(s.clusters) * (4 * 4 + sizeof(ClusterAabbGpu));
+    return s;
+}
+
+nlohmann::json ClusteredLighting::dump(const FrameUniforms& uniforms) const {
+    const ClusterGridGpu g = downloadGrid();
+    auto matrix = [](const glm::mat4& m) {
+        nlohmann::json rows = nlohmann::json::array();
+        for (int r = 0; r < 4; ++r) rows.push_back({m[0][r], m[1][r], m[2][r], m[3][r]});
+        return rows;
+    };
+    nlohmann::json doc;
+    doc["grid"] = {{"tiles_x", grid_.tilesX},
+                   {"tiles_y", grid_.tilesY},
+                   {"slices", grid_.slices},
+                   {"tile_size_px", grid_.tileSizePx},
+                   {"index", "x + tiles_x * (y + tiles_y * slice); tiles from the bottom-left pixel"}};
+    doc["slicing"] = {{"mode", slicingName(settings_.grid.slicing)},
+                      {"spacing", g.tile.y > 0.5f ? "log" : "linear"},
+                      {"z_near", g.slicing.x},
+                      {"z_far", g.slicing.y},
+                      {"camera_near", g.tile.z},
+                      {"camera_far", g.tile.w}};
+    doc["assign"] = assignModeName(settings_.assign);
+    if (settings_.assign == AssignMode::Capped) doc["max_per_cluster"] = settings_.maxPerCluster;
+    doc["viewport"] = {uniforms.viewport.x, uniforms.viewport.y};
+    doc["view_matrix"] = matrix(uniforms.view);
+    doc["projection_matrix"] = matrix(uniforms.proj);
+    const auto lists = downloadLists();
+    const auto counts = downloadCounts();
+    nlohmann::json clusters = nlohmann::json::array();
+    for (std::uint32_t c = 0; c < lists.size(); ++c) {
+        if (counts[c] == 0) continue;
+        const std::uint32_t x = c % grid_.tilesX, y = (c / grid_.tilesX) % grid_.tilesY, slice = c / (grid_.tilesX * grid_.tilesY);
+        clusters.push_back({{"index", c}, {"x", x}, {"y", y}, {"slice", slice}, {"count", counts[c]}, {"lights", lists[c]}});
+    }
+    doc["clusters"] = std::move(clusters);
+    return doc;
+}
+
+AssignMode parseAssignMode(const std::string& text) {
+    if (text == "exact") return AssignMode::Exact;
+    if (text == "capped") return AssignMode::Capped;
+    throw std::invalid_argument("--assign '" + text + "': expected exact or capped");
+}
+
+const char* assignModeName(AssignMode mode) { return mode == AssignMode::Exact ? "exact" : "capped"; }
+
+}  // namespace ml

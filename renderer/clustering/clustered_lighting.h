@@ -1,0 +1,79 @@
+// Builds this frame's per-cluster light lists on the GPU and binds them for shading; shared by
+// Forward+ and clustered deferred, which differ only in how they shade.
+//
+//   depth ─> [cluster.depth-range]  fitted slicing only: min/max visible depth ─> grid.slicing
+//         ─> [cluster.bounds]       view-space AABB per cluster
+//         ─> [cluster.active]       --active-only: flag clusters holding a visible sample
+//   exact:  [assign.count] ─> [assign.scan] ─> [assign.fill]    one compact list, no cap
+//   capped: [assign.capped]                                     fixed lists, overflow counted
+//
+// Memory per cluster: count, offset, fill cursor, active flag (4 B each) and an AABB (32 B):
+// 48 B, so 32 x 18 x 24 clusters take 648 KiB. Exact lists take 4 B per light reference;
+// capped lists take clusters x cap x 4 B whatever the frame needs (42x24x12 x 2048: 99 MiB).
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include "renderer/clustering/cluster_grid.h"
+#include "renderer/clustering/cluster_statistics.h"
+#include "renderer/clustering/clustering_settings.h"
+#include "renderer/clustering/prefix_sum.h"
+#include "renderer/gl/buffer.h"
+#include "renderer/gl/program.h"
+#include "renderer/gpu_types.h"
+#include "renderer/methods/shading_method.h"
+
+namespace ml {
+
+class ClusteredLighting {
+public:
+    explicit ClusteredLighting(const ClusteringSettings& settings);
+
+    // Builds the lists from the lights and the depth already in ctx.targets.depth().
+    // Throws std::runtime_error when the lists cannot fit this GPU's storage-buffer limit.
+    void build(const FrameContext& ctx);
+    // Binds the grid, counts, offsets and light indices at their ML_SSBO_* points.
+    void bindForShading() const;
+
+    const ClusterGrid& grid() const { return grid_; }
+    const ClusteringSettings& settings() const { return settings_; }
+
+    // Reads back the counts and counters of the last build (a GPU sync).
+    ClusterStatistics statistics() const;
+    // The grid, slicing, camera matrices and, for each non-empty cluster, its light indices.
+    nlohmann::json dump(const FrameUniforms& uniforms) const;
+
+    // Read-backs for tests and dumps.
+    ClusterGridGpu downloadGrid() const;
+    std::vector<std::uint32_t> downloadCounts() const;
+    std::vector<ClusterAabbGpu> downloadAabbs() const;
+    // Light indices of every cluster, in list order.
+    std::vector<std::vector<std::uint32_t>> downloadLists() const;
+
+private:
+    void uploadGrid(const FrameContext& ctx);
+    void ensureStorage(std::uint32_t clusters);
+    void checkListFits(std::size_t bytes, const char* what) const;
+    void buildExact(const FrameContext& ctx);
+    void buildCapped(const FrameContext& ctx);
+    void dispatchAssignment(const gl::Program& program, std::uint32_t lightCount) const;
+
+    ClusteringSettings settings_;
+    ClusterGrid grid_;
+    std::size_t maxStorageBlock_ = 0;
+    std::uint64_t listEntries_ = 0;
+
+    gl::Program depthRange_, bounds_, active_, count_, fill_, capped_;
+    PrefixSum scan_;
+
+    gl::Buffer gridBuffer_;
+    gl::Buffer counters_;  // [0] dropped references (capped), [1] total entries (exact, from the scan)
+    gl::GrowableBuffer aabbs_{"clusters.aabbs"};
+    gl::GrowableBuffer counts_{"clusters.counts"};
+    gl::GrowableBuffer offsets_{"clusters.offsets"};
+    gl::GrowableBuffer cursors_{"clusters.fill-cursors"};
+    gl::GrowableBuffer activeFlags_{"clusters.active"};
+    gl::GrowableBuffer indices_{"clusters.light-indices"};
+};
+
+}  // namespace ml

@@ -1,0 +1,87 @@
+#include "renderer/frame_renderer.h"
+
+#include <cstring>
+
+#include "glsl/include/bindings.h"
+
+namespace ml {
+
+FrameRenderer::FrameRenderer(const Scene& scene, const std::vector<PointLight>& lights, const FrameSettings& settings)
+    : settings_(settings),
+      scene_(scene),
+      lights_(lights),
+      targets_(settings.width, settings.height),
+      frameUniformBuffer_("frame.uniforms", sizeof(FrameUniforms)),
+      method_(createMethod(settings.method)),
+      timer_(settings.timing, settings.clock) {}
+
+void FrameRenderer::resize(int width, int height) {
+    settings_.width = width;
+    settings_.height = height;
+    targets_.resize(width, height);
+}
+
+void FrameRenderer::setMethod(const MethodSettings& method) {
+    settings_.method = method;
+    method_ = createMethod(method);
+}
+
+void FrameRenderer::updateUniforms(float time) {
+    const Camera& c = settings_.camera;
+    const float w = static_cast<float>(settings_.width), h = static_cast<float>(settings_.height);
+    uniforms_.view = c.view();
+    uniforms_.proj = c.projection(w / h);
+    uniforms_.viewProj = uniforms_.proj * uniforms_.view;
+    uniforms_.invProj = glm::inverse(uniforms_.proj);
+    uniforms_.invView = glm::inverse(uniforms_.view);
+    uniforms_.cameraPos = glm::vec4(c.eye, 1.0f);
+    uniforms_.viewport = glm::vec4(w, h, 1.0f / w, 1.0f / h);
+    uniforms_.depthRange = glm::vec4(c.nearPlane, c.farPlane, time, settings_.ambient);
+    uniforms_.counts = glm::uvec4(lights_.count(), 0, 0, 0);
+    frameUniformBuffer_.upload(&uniforms_, sizeof(uniforms_));
+    frameUniformBuffer_.bindBase(GL_UNIFORM_BUFFER, ML_UBO_FRAME);
+}
+
+std::vector<PassTime> FrameRenderer::render(std::uint32_t frameIndex) {
+    const float time = static_cast<float>(frameIndex) * kSecondsPerFrame;
+    timer_.beginFrame();
+    updateUniforms(time);
+    {
+        auto pass = timer_.pass("lights.animate");
+        animate_.run(lights_, time, settings_.animation);
+    }
+    method_->render(FrameContext{scene_, lights_, frameUniformBuffer_, uniforms_, targets_, timer_});
+    {
+        auto pass = timer_.pass("tonemap");
+        tonemap_.run(targets_, settings_.exposure, settings_.method.clustering.view != DebugView::Shaded);
+    }
+    return timer_.endFrame();
+}
+
+RgbaImage FrameRenderer::readLdr() const {
+    RgbaImage image{targets_.width(), targets_.height(), {}};
+    const std::size_t row = static_cast<std::size_t>(image.width) * 4;
+    std::vector<std::uint8_t> bottomUp(row * image.height);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glGetTextureImage(targets_.ldr().id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, static_cast<GLsizei>(bottomUp.size()), bottomUp.data());
+    image.pixels.resize(bottomUp.size());
+    // GL's first row is the bottom one; images are stored top row first.
+    for (int y = 0; y < image.height; ++y)
+        std::memcpy(&image.pixels[y * row], &bottomUp[(image.height - 1 - y) * row], row);
+    return image;
+}
+
+FloatImage FrameRenderer::readHdr() const {
+    FloatImage image{targets_.width(), targets_.height(), {}};
+    const std::size_t row = static_cast<std::size_t>(image.width) * 3;
+    std::vector<float> bottomUp(row * image.height);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glGetTextureImage(targets_.hdr().id(), 0, GL_RGB, GL_FLOAT, static_cast<GLsizei>(bottomUp.size() * sizeof(float)),
+                      bottomUp.data());
+    image.pixels.resize(bottomUp.size());
+    for (int y = 0; y < image.height; ++y)
+        std::memcpy(&image.pixels[y * row], &bottomUp[(image.height - 1 - y) * row], row * sizeof(float));
+    return image;
+}
+
+}  // namespace ml

@@ -1,0 +1,72 @@
+// One frame, end to end: animate the lights, run the chosen shading method into the HDR
+// target, tonemap. The same object serves `render`, `view`, `bench` and the tests.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "renderer/camera.h"
+#include "renderer/frame_targets.h"
+#include "renderer/gl/buffer.h"
+#include "renderer/image.h"
+#include "renderer/light_buffers.h"
+#include "renderer/methods/shading_method.h"
+#include "renderer/pass_timer.h"
+#include "renderer/scene_gpu.h"
+#include "renderer/tonemap_pass.h"
+
+namespace ml {
+
+// The animation advances this much per frame index, whatever the real frame rate.
+inline constexpr float kSecondsPerFrame = 1.0f / 60.0f;
+
+struct FrameSettings {
+    int width = 1280;
+    int height = 720;
+    Camera camera;
+    MethodSettings method;
+    float exposure = 1.0f;
+    float ambient = 0.03f;
+    LightAnimation animation;
+    bool timing = false;
+    TimingClock clock = TimingClock::GpuQueries;
+};
+
+class FrameRenderer {
+public:
+    FrameRenderer(const Scene& scene, const std::vector<PointLight>& lights, const FrameSettings& settings);
+
+    // Renders the frame at animation time frameIndex * kSecondsPerFrame. Returns the pass times
+    // (empty unless settings.timing).
+    std::vector<PassTime> render(std::uint32_t frameIndex);
+
+    RgbaImage readLdr() const;
+    FloatImage readHdr() const;
+
+    void resize(int width, int height);
+    void setCamera(const Camera& camera) { settings_.camera = camera; }
+    void setMethod(const MethodSettings& method);
+    const ShadingMethod& method() const { return *method_; }
+    const FrameSettings& settings() const { return settings_; }
+    const LightBuffers& lights() const { return lights_; }
+    const FrameTargets& targets() const { return targets_; }
+    const FrameUniforms& uniforms() const { return uniforms_; }
+    const SceneGpu& scene() const { return scene_; }
+
+private:
+    void updateUniforms(float time);
+
+    FrameSettings settings_;
+    SceneGpu scene_;
+    LightBuffers lights_;
+    FrameTargets targets_;
+    gl::Buffer frameUniformBuffer_;
+    FrameUniforms uniforms_{};
+    AnimateLightsPass animate_;
+    TonemapPass tonemap_;
+    std::unique_ptr<ShadingMethod> method_;
+    PassTimer timer_;
+};
+
+}  // namespace ml

@@ -1,0 +1,31 @@
+#include "renderer/gl/texture.h"
+
+#include <algorithm>
+
+namespace ml::gl {
+
+Texture2D::Texture2D(std::string_view name, GLenum internalFormat, int width, int height, int levels)
+    : width_(width), height_(height), format_(internalFormat) {
+    GLuint id = 0;
+    glCreateTextures(GL_TEXTURE_2D, 1, &id);
+    handle_ = Handle<TextureDeleter>(id);
+    glTextureStorage2D(id, levels, internalFormat, width, height);
+    label(GL_TEXTURE, id, name);
+    setSampling(levels > 1 ? GL_LINEAR_MIPMAP_LINEAR : GL_NEAREST, levels > 1 ? GL_LINEAR : GL_NEAREST,
+                GL_CLAMP_TO_EDGE);
+}
+
+void Texture2D::setSampling(GLenum minFilter, GLenum magFilter, GLenum wrap) const {
+    glTextureParameteri(handle_.id(), GL_TEXTURE_MIN_FILTER, static_cast<GLint>(minFilter));
+    glTextureParameteri(handle_.id(), GL_TEXTURE_MAG_FILTER, static_cast<GLint>(magFilter));
+    glTextureParameteri(handle_.id(), GL_TEXTURE_WRAP_S, static_cast<GLint>(wrap));
+    glTextureParameteri(handle_.id(), GL_TEXTURE_WRAP_T, static_cast<GLint>(wrap));
+}
+
+int fullMipLevels(int width, int height) {
+    int levels = 1;
+    for (int size = std::max(width, height); size > 1; size /= 2) ++levels;
+    return levels;
+}
+
+}  // namespace ml::gl

@@ -1,0 +1,56 @@
+// C++ mirrors of the structs the shaders read. Layouts are locked with static_assert so a
+// change on one side cannot silently drift from the other (glsl/include/*.glsl).
+#pragma once
+
+#include <cstdint>
+
+#include <glm/glm.hpp>
+
+namespace ml {
+
+// glsl/include/lights.glsl: struct Light (std430).
+struct alignas(16) GpuLight {
+    glm::vec4 positionRadius;  // xyz world position, w radius
+    glm::vec4 color;           // rgb linear colour times intensity
+};
+static_assert(sizeof(GpuLight) == 32);
+
+// glsl/include/material.glsl: struct Material (std430).
+struct alignas(16) GpuMaterial {
+    glm::vec4 baseColorFactor;
+    glm::vec4 params;  // specular strength, shininess, has texture, unused
+};
+static_assert(sizeof(GpuMaterial) == 32);
+
+// glsl/include/frame_uniforms.glsl: FrameUniformsBlock (std140).
+struct alignas(16) FrameUniforms {
+    glm::mat4 view;
+    glm::mat4 proj;
+    glm::mat4 viewProj;
+    glm::mat4 invProj;
+    glm::mat4 invView;
+    glm::vec4 cameraPos;
+    glm::vec4 viewport;    // width, height, 1/width, 1/height
+    glm::vec4 depthRange;  // near, far, time, ambient
+    glm::uvec4 counts;     // light count, ...
+};
+static_assert(sizeof(FrameUniforms) == 5 * 64 + 4 * 16);
+
+// glsl/include/cluster_grid.glsl: ClusterGridData (std430).
+struct alignas(16) ClusterGridGpu {
+    glm::uvec4 dims;       // tilesX, tilesY, slices, cluster count
+    glm::vec4 slicing;     // zNear, zFar, scale, bias
+    glm::vec4 tile;        // tile size px, logarithmic, camera near, camera far
+    glm::uvec4 reduction;  // min, max visible depth bits (fitted)
+    glm::uvec4 options;    // fitted, cap (0: exact), active-only, debug view
+};
+static_assert(sizeof(ClusterGridGpu) == 80);
+
+// glsl/cluster_bounds.comp: ClusterAabb (std430).
+struct alignas(16) ClusterAabbGpu {
+    glm::vec4 minPoint;
+    glm::vec4 maxPoint;
+};
+static_assert(sizeof(ClusterAabbGpu) == 32);
+
+}  // namespace ml

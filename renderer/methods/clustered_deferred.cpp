@@ -1,0 +1,66 @@
+#include "renderer/methods/clustered_deferred.h"
+
+#include "glsl/include/bindings.h"
+
+namespace ml {
+
+namespace {
+gl::Program lightingProgram(Resolve resolve) {
+    if (resolve == Resolve::Compute) return gl::Program::compute("deferred_lighting.comp");
+    return gl::Program("deferred.lighting", {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "deferred_lighting.frag"}});
+}
+}  // namespace
+
+ClusteredDeferred::ClusteredDeferred(const ClusteringSettings& settings, Resolve resolve)
+    : resolve_(resolve),
+      gbufferProgram_("deferred.gbuffer", {{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "gbuffer.frag"}}),
+      lightingProgram_(lightingProgram(resolve)),
+      clustering_(settings) {
+    GLuint vao = 0;
+    glCreateVertexArrays(1, &vao);
+    emptyVao_ = gl::Handle<gl::VertexArrayDeleter>(vao);
+    gl::label(GL_VERTEX_ARRAY, vao, "fullscreen.vao");
+}
+
+void ClusteredDeferred::render(const FrameContext& ctx) {
+    {
+        auto pass = ctx.timer.pass("deferred.gbuffer");
+        const gl::Framebuffer& fbo = gbuffer_.prepare(ctx.targets);
+        fbo.bind();
+        glViewport(0, 0, ctx.targets.width(), ctx.targets.height());
+        const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+        const float clearDepth = 1.0f;
+        for (int i = 0; i < 3; ++i) glClearNamedFramebufferfv(fbo.id(), GL_COLOR, i, zero);
+        glClearNamedFramebufferfv(fbo.id(), GL_DEPTH, 0, &clearDepth);
+        glEnable(GL_DEPTH_TEST);
+        glDepthFunc(GL_LESS);
+        glDepthMask(GL_TRUE);
+        gbufferProgram_.use();
+        ctx.scene.draw(gbufferProgram_);
+        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+    }
+    clustering_.build(ctx);
+    {
+        auto pass = ctx.timer.pass(resolve_ == Resolve::Compute ? "deferred.lighting-compute" : "deferred.lighting-fragment");
+        gbuffer_.bindForReading();
+        glBindTextureUnit(ML_TEX_DEPTH, ctx.targets.depth().id());
+        ctx.lights.animated().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_LIGHTS);
+        clustering_.bindForShading();
+        lightingProgram_.use();
+        if (resolve_ == Resolve::Compute) {
+            glBindImageTexture(ML_IMG_HDR, ctx.targets.hdr().id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+            glDispatchCompute(gl::groupsFor(ctx.targets.width(), ML_SCREEN_TILE),
+                              gl::groupsFor(ctx.targets.height(), ML_SCREEN_TILE), 1);
+            glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+        } else {
+            // Colour only: the depth texture is read, so it must not be attached while drawing.
+            ctx.targets.hdrOnlyFramebuffer().bind();
+            glDisable(GL_DEPTH_TEST);
+            glBindVertexArray(emptyVao_.id());
+            glDrawArrays(GL_TRIANGLES, 0, 3);
+            glEnable(GL_DEPTH_TEST);
+        }
+    }
+}
+
+}  // namespace ml

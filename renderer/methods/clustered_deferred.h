@@ -1,0 +1,30 @@
+// Clustered deferred: raster once into the G-buffer, assign lights to clusters, then light
+// every pixel from the G-buffer with its cluster's lights, as a full-screen fragment pass or
+// as a compute pass (--resolve).
+#pragma once
+
+#include "renderer/clustering/clustered_lighting.h"
+#include "renderer/gl/program.h"
+#include "renderer/methods/gbuffer.h"
+#include "renderer/methods/shading_method.h"
+
+namespace ml {
+
+class ClusteredDeferred final : public ShadingMethod {
+public:
+    ClusteredDeferred(const ClusteringSettings& settings, Resolve resolve);
+    std::string name() const override { return "deferred"; }
+    void render(const FrameContext& ctx) override;
+    const ClusteredLighting* clustering() const override { return &clustering_; }
+    std::size_t extraTargetBytes() const override { return gbuffer_.bytes(); }
+
+private:
+    Resolve resolve_;
+    gl::Program gbufferProgram_;
+    gl::Program lightingProgram_;
+    gl::Handle<gl::VertexArrayDeleter> emptyVao_;
+    GBuffer gbuffer_;
+    ClusteredLighting clustering_;
+};
+
+}  // namespace ml

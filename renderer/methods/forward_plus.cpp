@@ -1,0 +1,48 @@
+#include "renderer/methods/forward_plus.h"
+
+#include "glsl/include/bindings.h"
+
+namespace ml {
+
+ForwardPlus::ForwardPlus(const ClusteringSettings& settings)
+    : depthProgram_("forward-plus.depth", {{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "depth_only.frag"}}),
+      shadeProgram_("forward-plus.shade", {{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "forward_plus.frag"}}),
+      clustering_(settings) {}
+
+void ForwardPlus::render(const FrameContext& ctx) {
+    const gl::Framebuffer& fbo = ctx.targets.hdrFramebuffer();
+    {
+        auto pass = ctx.timer.pass("forward+.depth-prepass");
+        fbo.bind();
+        glViewport(0, 0, ctx.targets.width(), ctx.targets.height());
+        const float clearColor[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+        const float clearDepth = 1.0f;
+        glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 0, clearColor);
+        glClearNamedFramebufferfv(fbo.id(), GL_DEPTH, 0, &clearDepth);
+        glEnable(GL_DEPTH_TEST);
+        glDepthFunc(GL_LESS);
+        glDepthMask(GL_TRUE);
+        glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+        depthProgram_.use();
+        ctx.scene.drawDepthOnly();
+        glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+    }
+    clustering_.build(ctx);
+    {
+        auto pass = ctx.timer.pass("forward+.shade");
+        fbo.bind();
+        // gl_Position is invariant in scene.vert, so only the nearest surface passes EQUAL:
+        // every pixel is shaded once, whatever the overdraw.
+        glDepthFunc(GL_EQUAL);
+        glDepthMask(GL_FALSE);
+        shadeProgram_.use();
+        ctx.lights.animated().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_LIGHTS);
+        clustering_.bindForShading();
+        ctx.scene.draw(shadeProgram_);
+        glDepthFunc(GL_LESS);
+        glDepthMask(GL_TRUE);
+    }
+}
+
+}  // namespace ml

@@ -1,0 +1,62 @@
+#include <stdexcept>
+
+#include "renderer/methods/clustered_deferred.h"
+#include "renderer/methods/forward_plus.h"
+#include "renderer/methods/naive_forward.h"
+#include "renderer/methods/shading_method.h"
+
+namespace ml {
+
+namespace {
+struct MethodEntry {
+    MethodKind kind;
+    const char* name;
+};
+constexpr MethodEntry kMethods[] = {
+    {MethodKind::Naive, "naive"},
+    {MethodKind::ForwardPlus, "forward-plus"},
+    {MethodKind::Deferred, "deferred"},
+};
+}  // namespace
+
+const std::vector<std::string>& methodNames() {
+    static const std::vector<std::string> names = [] {
+        std::vector<std::string> out;
+        for (const MethodEntry& m : kMethods) out.emplace_back(m.name);
+        return out;
+    }();
+    return names;
+}
+
+MethodKind parseMethod(const std::string& text) {
+    for (const MethodEntry& m : kMethods)
+        if (text == m.name) return m.kind;
+    std::string list;
+    for (const std::string& n : methodNames()) list += (list.empty() ? "" : ", ") + n;
+    throw std::invalid_argument("unknown method '" + text + "' (expected one of: " + list + ")");
+}
+
+std::string methodName(MethodKind kind) {
+    for (const MethodEntry& m : kMethods)
+        if (kind == m.kind) return m.name;
+    return "?";
+}
+
+std::unique_ptr<ShadingMethod> createMethod(const MethodSettings& settings) {
+    switch (settings.kind) {
+    case MethodKind::Naive: return std::make_unique<NaiveForward>();
+    case MethodKind::ForwardPlus: return std::make_unique<ForwardPlus>(settings.clustering);
+    case MethodKind::Deferred: return std::make_unique<ClusteredDeferred>(settings.clustering, settings.resolve);
+    }
+    throw std::invalid_argument("unhandled method");
+}
+
+Resolve parseResolve(const std::string& text) {
+    if (text == "fragment") return Resolve::Fragment;
+    if (text == "compute") return Resolve::Compute;
+    throw std::invalid_argument("--resolve '" + text + "': expected fragment or compute");
+}
+
+const char* resolveName(Resolve resolve) { return resolve == Resolve::Fragment ? "fragment" : "compute"; }
+
+}  // namespace ml

@@ -1,0 +1,26 @@
+#include "renderer/methods/naive_forward.h"
+
+#include "glsl/include/bindings.h"
+
+namespace ml {
+
+NaiveForward::NaiveForward()
+    : program_("naive_forward", {{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "naive_forward.frag"}}) {}
+
+void NaiveForward::render(const FrameContext& ctx) {
+    auto pass = ctx.timer.pass("naive.shade");
+    ctx.targets.hdrFramebuffer().bind();
+    glViewport(0, 0, ctx.targets.width(), ctx.targets.height());
+    const float clearColor[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+    const float clearDepth = 1.0f;
+    glClearNamedFramebufferfv(ctx.targets.hdrFramebuffer().id(), GL_COLOR, 0, clearColor);
+    glClearNamedFramebufferfv(ctx.targets.hdrFramebuffer().id(), GL_DEPTH, 0, &clearDepth);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    program_.use();
+    ctx.lights.animated().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_LIGHTS);
+    ctx.scene.draw(program_);
+}
+
+}  // namespace ml

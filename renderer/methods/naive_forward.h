@@ -1,0 +1,20 @@
+// Naive forward shading: raster the scene once; every fragment loops over every light.
+// O(fragments x lights), and exact: the reference every other method is held to.
+#pragma once
+
+#include "renderer/gl/program.h"
+#include "renderer/methods/shading_method.h"
+
+namespace ml {
+
+class NaiveForward final : public ShadingMethod {
+public:
+    NaiveForward();
+    std::string name() const override { return "naive"; }
+    void render(const FrameContext& ctx) override;
+
+private:
+    gl::Program program_;
+};
+
+}  // namespace ml

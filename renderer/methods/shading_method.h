@@ -1,0 +1,64 @@
+// The interface every shading method implements. Methods are siblings over the same scene,
+// lights, uniforms and targets, so switching method changes nothing else (style.md, practice 1).
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "renderer/clustering/clustering_settings.h"
+#include "renderer/frame_targets.h"
+#include "renderer/gl/buffer.h"
+#include "renderer/gpu_types.h"
+#include "renderer/light_buffers.h"
+#include "renderer/pass_timer.h"
+#include "renderer/scene_gpu.h"
+
+namespace ml {
+
+// What a method may read and write in one frame.
+struct FrameContext {
+    const SceneGpu& scene;
+    const LightBuffers& lights;
+    const gl::Buffer& frameUniforms;    // bound at ML_UBO_FRAME before render()
+    const FrameUniforms& uniforms;      // the same values on the CPU
+    FrameTargets& targets;              // render into targets.hdr() (+ depth)
+    PassTimer& timer;
+};
+
+class ClusteredLighting;
+
+class ShadingMethod {
+public:
+    virtual ~ShadingMethod() = default;
+    virtual std::string name() const = 0;
+    // Leaves the shaded linear colour (or a debug view's display colour) in ctx.targets.hdr().
+    virtual void render(const FrameContext& ctx) = 0;
+    // The light lists of a clustered method (null for naive).
+    virtual const ClusteredLighting* clustering() const { return nullptr; }
+    // Bytes of screen-sized targets the method owns beyond FrameTargets (the G-buffer).
+    virtual std::size_t extraTargetBytes() const { return 0; }
+};
+
+enum class MethodKind { Naive, ForwardPlus, Deferred };
+
+// The lighting pass of clustered deferred: a full-screen fragment pass or a compute pass.
+enum class Resolve { Fragment, Compute };
+Resolve parseResolve(const std::string& text);  // throws std::invalid_argument
+const char* resolveName(Resolve resolve);
+
+struct MethodSettings {
+    MethodKind kind = MethodKind::Naive;
+    ClusteringSettings clustering;
+    Resolve resolve = Resolve::Compute;
+};
+
+// Names as the command line spells them.
+const std::vector<std::string>& methodNames();
+// Throws std::invalid_argument naming the value.
+MethodKind parseMethod(const std::string& text);
+std::string methodName(MethodKind kind);
+
+std::unique_ptr<ShadingMethod> createMethod(const MethodSettings& settings);
+
+}  // namespace ml

@@ -1,0 +1,93 @@
+#include "renderer/pass_timer.h"
+
+#include <algorithm>
+
+namespace ml {
+
+const char* timingClockName(TimingClock clock) {
+    return clock == TimingClock::GpuQueries ? "GPU timer queries" : "wall clock after glFinish";
+}
+
+PassTimer::~PassTimer() {
+    if (!allQueries_.empty()) glDeleteQueries(static_cast<GLsizei>(allQueries_.size()), allQueries_.data());
+}
+
+PassTimer::Scope::Scope(PassTimer& timer, std::string_view name)
+    : timer_(timer), group_(name), index_(timer.begin(name)) {}
+
+PassTimer::Scope::~Scope() { timer_.end(index_); }
+
+GLuint PassTimer::takeQuery() {
+    if (freeQueries_.empty()) {
+        GLuint id = 0;
+        glCreateQueries(GL_TIMESTAMP, 1, &id);
+        allQueries_.push_back(id);
+        return id;
+    }
+    const GLuint id = freeQueries_.back();
+    freeQueries_.pop_back();
+    return id;
+}
+
+void PassTimer::beginFrame() {
+    for (const Pending& p : pending_) {
+        if (p.startQuery) freeQueries_.push_back(p.startQuery);
+        if (p.endQuery) freeQueries_.push_back(p.endQuery);
+    }
+    pending_.clear();
+}
+
+std::size_t PassTimer::begin(std::string_view name) {
+    if (!enabled_) return 0;
+    Pending p;
+    p.name = std::string(name);
+    if (clock_ == TimingClock::GpuQueries) {
+        p.startQuery = takeQuery();
+        glQueryCounter(p.startQuery, GL_TIMESTAMP);
+    } else {
+        glFinish();
+        p.start = std::chrono::steady_clock::now();
+    }
+    pending_.push_back(std::move(p));
+    return pending_.size() - 1;
+}
+
+void PassTimer::end(std::size_t index) {
+    if (!enabled_) return;
+    Pending& p = pending_[index];
+    if (clock_ == TimingClock::GpuQueries) {
+        p.endQuery = takeQuery();
+        glQueryCounter(p.endQuery, GL_TIMESTAMP);
+    } else {
+        glFinish();
+        p.end = std::chrono::steady_clock::now();
+    }
+}
+
+std::vector<PassTime> PassTimer::endFrame() {
+    std::vector<PassTime> out;
+    if (!enabled_) return out;
+    for (const Pending& p : pending_) {
+        double ms = 0.0;
+        if (clock_ == TimingClock::GpuQueries) {
+            GLuint64 t0 = 0, t1 = 0;
+            glGetQueryObjectui64v(p.startQuery, GL_QUERY_RESULT, &t0);
+            glGetQueryObjectui64v(p.endQuery, GL_QUERY_RESULT, &t1);
+            ms = static_cast<double>(t1 - t0) * 1e-6;
+        } else {
+            ms = std::chrono::duration<double, std::milli>(p.end - p.start).count();
+        }
+        auto same = std::find_if(out.begin(), out.end(), [&](const PassTime& t) { return t.name == p.name; });
+        if (same != out.end()) same->milliseconds += ms;
+        else out.push_back({p.name, ms});
+    }
+    return out;
+}
+
+double totalMilliseconds(const std::vector<PassTime>& times) {
+    double total = 0.0;
+    for (const PassTime& t : times) total += t.milliseconds;
+    return total;
+}
+
+}  // namespace ml

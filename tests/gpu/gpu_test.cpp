@@ -1,0 +1,76 @@
+#include "gpu_test.h"
+
+#include <array>
+#include <cstdio>
+#include <cstdlib>
+#include <sys/wait.h>
+
+#include "renderer/gl/debug_output.h"
+
+namespace ml::test {
+
+void GpuTest::SetUp() {
+    try {
+        context_ = createEglContext(ContextOptions{OffscreenBackend::Egl, true});
+    } catch (const ContextError& e) {
+        GTEST_FAIL() << "no EGL context for GPU tests: " << e.what();
+    }
+    gl::enableDebugOutput(gl::DebugVerbosity::ErrorsOnly);
+    gl::resetDebugErrors();
+}
+
+void GpuTest::TearDown() {
+    if (context_) {
+        EXPECT_EQ(gl::drainGlErrors(), "");
+        EXPECT_EQ(gl::debugErrorCount(), 0) << "KHR_debug error: " << gl::lastDebugError();
+    }
+    context_.reset();
+}
+
+std::filesystem::path testOutputDir() {
+    const char* env = std::getenv("ML_TEST_TMP");
+    std::filesystem::path root = env ? env : std::filesystem::temp_directory_path() / "manylights-tests";
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    if (info) root /= std::string(info->test_suite_name()) + "." + info->name();
+    std::filesystem::create_directories(root);
+    return root;
+}
+
+std::string writeFailureImages(const std::string& name, const RgbaImage& test, const RgbaImage& reference) {
+    const std::filesystem::path dir = testOutputDir() / name;
+    std::filesystem::create_directories(dir);
+    writePng((dir / "test.png").string(), test);
+    writePng((dir / "reference.png").string(), reference);
+    if (test.width == reference.width && test.height == reference.height)
+        writePng((dir / "diff.png").string(), differenceImage(test, reference));
+    return dir.string();
+}
+
+FrameSettings smallFrame(const Scene& scene, int width, int height) {
+    FrameSettings s;
+    s.width = width;
+    s.height = height;
+    s.camera = cameraFromPose(scene.suggestedView.value_or(framingView(scene.bounds)));
+    fitClipPlanes(s.camera, scene.bounds);
+    s.animation = verticalDrift(lightVolume(scene.bounds), 0.5f);
+    return s;
+}
+
+int runManylights(const std::string& args, std::string& output, const std::string& workingDir) {
+    const std::string cd = workingDir.empty() ? "" : "cd \"" + workingDir + "\" && ";
+    const std::string command = cd + "\"" + ML_MANYLIGHTS_EXE + "\" " + args + " 2>&1";
+    output.clear();
+    FILE* pipe = popen(command.c_str(), "r");
+    if (!pipe) return -1;
+    std::array<char, 4096> buffer{};
+    while (std::fgets(buffer.data(), buffer.size(), pipe)) output += buffer.data();
+    const int status = pclose(pipe);
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+}  // namespace ml::test
+
+int main(int argc, char** argv) {
+    ::testing::InitGoogleTest(&argc, argv);
+    return RUN_ALL_TESTS();
+}

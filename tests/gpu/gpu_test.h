@@ -1,0 +1,39 @@
+// Shared set-up for GPU tests: a fresh EGL (llvmpipe) context per test with KHR_debug on;
+// any GL error fails the test. Image helpers write the images and a diff on failure.
+#pragma once
+
+#include <filesystem>
+#include <memory>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "renderer/context/gl_context.h"
+#include "renderer/frame_renderer.h"
+#include "renderer/image.h"
+#include "renderer/image_compare.h"
+#include "scenes/scene.h"
+
+namespace ml::test {
+
+class GpuTest : public ::testing::Test {
+protected:
+    void SetUp() override;
+    void TearDown() override;
+    std::unique_ptr<GlContext> context_;
+};
+
+// Where tests may write files: $ML_TEST_TMP/<suite>.<test>/, created on demand.
+std::filesystem::path testOutputDir();
+
+// Writes test.png, reference.png and diff.png under testOutputDir()/name and returns that path.
+std::string writeFailureImages(const std::string& name, const RgbaImage& test, const RgbaImage& reference);
+
+// Frame settings for a scene at a small size, the scene's suggested camera, clip planes fitted.
+FrameSettings smallFrame(const Scene& scene, int width, int height);
+
+// Runs the manylights executable with `args` (a shell-quoted string) in `workingDir` (if not
+// empty); returns the exit status, output (stdout and stderr together) in `output`.
+int runManylights(const std::string& args, std::string& output, const std::string& workingDir = "");
+
+}  // namespace ml::test

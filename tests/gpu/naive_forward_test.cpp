@@ -1,0 +1,103 @@
+// The naive method, the reference of every other method, checked against the README's formula
+// computed on the CPU, and the light animation against its CPU mirror.
+#include <gtest/gtest.h>
+
+#include "gpu_test.h"
+#include "renderer/shading_reference.h"
+#include "scenes/procedural_scenes.h"
+
+namespace ml::test {
+namespace {
+
+class NaiveForwardTest : public GpuTest {};
+
+TEST_F(NaiveForwardTest, MatchesTheFormulaOnThePlane) {
+    const Scene plane = makePlane();
+    ASSERT_FALSE(plane.materials.empty());
+    const Material& m = plane.materials[plane.draws.at(0).material];
+    ASSERT_LT(m.baseColorTexture, 0) << "this test assumes an untextured plane";
+
+    std::vector<PointLight> lights{
+        {{0.0f, 1.0f, 0.0f}, 4.0f, {1.0f, 0.5f, 0.25f}},
+        {{3.0f, 0.5f, -2.0f}, 3.0f, {0.2f, 1.0f, 0.4f}},
+        {{-4.0f, 2.0f, 3.0f}, 6.0f, {0.5f, 0.5f, 2.0f}},
+        {{8.0f, -1.0f, 0.0f}, 5.0f, {5.0f, 5.0f, 5.0f}},  // below the plane: must add nothing
+    };
+    FrameSettings s;
+    s.width = 96;
+    s.height = 64;
+    s.camera.eye = {0.0f, 6.0f, 8.0f};
+    s.camera.target = {0.0f, 0.0f, 0.0f};
+    s.camera.fovyDegrees = 60.0f;
+    s.camera.nearPlane = 0.1f;
+    s.camera.farPlane = 50.0f;
+    s.animation.driftSpeed = 0.0f;
+    s.ambient = 0.03f;
+    FrameRenderer renderer(plane, lights, s);
+    renderer.render(0);
+    const FloatImage hdr = renderer.readHdr();
+
+    const glm::mat4 invViewProj = glm::inverse(renderer.uniforms().viewProj);
+    int checked = 0;
+    for (int y = 2; y < s.height; y += 7) {
+        for (int x = 3; x < s.width; x += 9) {
+            // The pixel centre's ray, intersected with the plane y = 0.
+            const glm::vec2 ndc((x + 0.5f) / s.width * 2.0f - 1.0f, 1.0f - (y + 0.5f) / s.height * 2.0f);
+            glm::vec4 nearP = invViewProj * glm::vec4(ndc, -1.0f, 1.0f);
+            glm::vec4 farP = invViewProj * glm::vec4(ndc, 1.0f, 1.0f);
+            const glm::vec3 a = glm::vec3(nearP) / nearP.w, b = glm::vec3(farP) / farP.w;
+            const float t = a.y / (a.y - b.y);
+            const glm::vec3 p = a + t * (b - a);
+            const float* gpu = hdr.at(x, y);
+            if (t < 0.0f || t > 1.0f || std::abs(p.x) > 9.9f || std::abs(p.z) > 9.9f) {
+                if (std::abs(p.x) > 10.1f || std::abs(p.z) > 10.1f || t < 0.0f) {
+                    EXPECT_EQ(gpu[0] + gpu[1] + gpu[2], 0.0f) << "background at " << x << "," << y;
+                }
+                continue;
+            }
+            SurfaceSample sample{p, {0, 1, 0}, glm::vec3(m.baseColorFactor), m.specularStrength, m.shininess};
+            const glm::vec3 expected = shadeReference(sample, s.camera.eye, lights, s.ambient);
+            for (int c = 0; c < 3; ++c)
+                EXPECT_NEAR(gpu[c], expected[c], 2e-3f + 2e-3f * expected[c]) << "pixel " << x << "," << y << " channel " << c;
+            ++checked;
+        }
+    }
+    EXPECT_GT(checked, 40);
+}
+
+TEST_F(NaiveForwardTest, LightAnimationMatchesItsCpuMirror) {
+    const Scene boxes = makeBoxes();
+    LightGeneration gen;
+    gen.count = 1000;
+    gen.radius = 2.0f;
+    const std::vector<PointLight> lights = generateLights(lightVolume(boxes.bounds), gen);
+    FrameSettings s = smallFrame(boxes, 32, 32);
+    FrameRenderer renderer(boxes, lights, s);
+    const std::uint32_t frame = 377;
+    renderer.render(frame);
+    const std::vector<PointLight> gpu = renderer.lights().downloadAnimated();
+    ASSERT_EQ(gpu.size(), lights.size());
+    const float time = frame * kSecondsPerFrame;
+    for (std::uint32_t i = 0; i < lights.size(); ++i) {
+        const PointLight cpu = animateLight(lights[i], i, time, s.animation);
+        EXPECT_NEAR(gpu[i].position.y, cpu.position.y, 1e-4f) << i;
+        EXPECT_EQ(gpu[i].position.x, cpu.position.x) << i;
+        EXPECT_GE(gpu[i].position.y, lightVolume(boxes.bounds).min.y - 1e-4f);
+        EXPECT_LE(gpu[i].position.y, lightVolume(boxes.bounds).max.y + 1e-4f);
+    }
+}
+
+TEST_F(NaiveForwardTest, ZeroLightsGivesAmbientOnly) {
+    const Scene boxes = makeBoxes();
+    FrameSettings s = smallFrame(boxes, 48, 32);
+    FrameRenderer renderer(boxes, {}, s);
+    renderer.render(0);
+    const FloatImage hdr = renderer.readHdr();
+    float maxValue = 0.0f;
+    for (float v : hdr.pixels) maxValue = std::max(maxValue, v);
+    EXPECT_GT(maxValue, 0.0f);                 // ambient is visible
+    EXPECT_LE(maxValue, s.ambient + 1e-6f);    // and nothing else (albedo <= 1)
+}
+
+}  // namespace
+}  // namespace ml::test

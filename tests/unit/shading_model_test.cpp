@@ -1,0 +1,63 @@
+// The falloff and shading formula of the README, on the CPU.
+#include <gtest/gtest.h>
+
+#include "renderer/shading_reference.h"
+#include "renderer/tonemap.h"
+
+namespace ml {
+namespace {
+
+TEST(Falloff, IsExactlyZeroAtAndBeyondTheRadius) {
+    EXPECT_EQ(lightFalloff(2.0f, 2.0f), 0.0f);
+    EXPECT_EQ(lightFalloff(2.5f, 2.0f), 0.0f);
+    EXPECT_EQ(lightFalloff(1.0f, 0.0f), 0.0f);
+    EXPECT_GT(lightFalloff(1.999f, 2.0f), 0.0f);
+}
+
+TEST(Falloff, IsOneAtTheCentreAndDecreasing) {
+    EXPECT_FLOAT_EQ(lightFalloff(0.0f, 3.0f), 1.0f);
+    float previous = 2.0f;
+    for (float d = 0.0f; d < 3.0f; d += 0.01f) {
+        const float f = lightFalloff(d, 3.0f);
+        EXPECT_LE(f, previous) << "at d=" << d;
+        previous = f;
+    }
+}
+
+TEST(Falloff, IsContinuousAtTheRadius) {
+    // The window's value and slope both vanish at r: no visible edge where culling cuts off.
+    const float r = 4.0f;
+    for (float eps : {1e-2f, 1e-3f}) EXPECT_LT(lightFalloff(r - eps, r), 1e-3f) << eps;
+    // Largest jump between neighbouring samples stays small everywhere.
+    float maxJump = 0.0f;
+    for (float d = 0.0f; d < r + 0.1f; d += 1e-3f) maxJump = std::max(maxJump, std::abs(lightFalloff(d + 1e-3f, r) - lightFalloff(d, r)));
+    EXPECT_LT(maxJump, 2e-3f);
+}
+
+TEST(ShadeReference, LightBehindTheSurfaceAddsNothing) {
+    SurfaceSample s{{0, 0, 0}, {0, 1, 0}, {1, 1, 1}};
+    const std::vector<PointLight> below{{{0.0f, -1.0f, 0.0f}, 5.0f, {1, 1, 1}}};
+    const glm::vec3 c = shadeReference(s, {0, 5, 5}, below, 0.0f);
+    EXPECT_EQ(c, glm::vec3(0.0f));
+}
+
+TEST(ShadeReference, DiffuseDirectlyAbove) {
+    SurfaceSample s{{0, 0, 0}, {0, 1, 0}, {0.5f, 0.5f, 0.5f}, 0.0f, 32.0f};
+    const std::vector<PointLight> above{{{0.0f, 1.0f, 0.0f}, 10.0f, {2, 2, 2}}};
+    const glm::vec3 c = shadeReference(s, {0, 5, 0}, above, 0.0f);
+    // W(1, 10) = (1 - 1e-4)^2 / 2; N.L = 1.
+    const float expected = 2.0f * (1.0f - 1e-4f) * (1.0f - 1e-4f) / 2.0f * 0.5f;
+    EXPECT_NEAR(c.r, expected, 1e-6f);
+}
+
+TEST(Tonemap, MapsZeroToZeroAndSaturatesBelowOne) {
+    EXPECT_EQ(tonemapToSrgb(glm::vec3(0.0f), 1.0f), glm::vec3(0.0f));
+    const glm::vec3 big = tonemapToSrgb(glm::vec3(1e6f), 1.0f);
+    EXPECT_GT(big.r, 0.99f);
+    EXPECT_LE(big.r, 1.0f);
+    // Reinhard maps 1 to 0.5, which sRGB encodes as ~0.7354.
+    EXPECT_NEAR(tonemapToSrgb(glm::vec3(1.0f), 1.0f).g, 0.7354f, 1e-3f);
+}
+
+}  // namespace
+}  // namespace ml
