@@ -21,8 +21,8 @@ public:
     const gl::Framebuffer& hdrFramebuffer() const { return hdrFbo_; }
     const gl::Framebuffer& ldrFramebuffer() const { return ldrFbo_; }
     const gl::Framebuffer& hdrOnlyFramebuffer() const { return hdrOnlyFbo_; }
-    // hdr + depth at 16 + 4 bytes per pixel, ldr at 4.
-    std::size_t bytes() const { return static_cast<std::size_t>(width_) * height_ * 24; }
+    // hdr 16, depth-stencil 8, ldr 4 bytes per pixel.
+    std::size_t bytes() const { return static_cast<std::size_t>(width_) * height_ * 28; }
 
 private:
     int width_ = 0, height_ = 0;

@@ -21,7 +21,10 @@ Framebuffer::Framebuffer(std::string_view name, std::initializer_list<const Text
     } else {
         glNamedFramebufferDrawBuffers(id, static_cast<GLsizei>(drawBuffers.size()), drawBuffers.data());
     }
-    if (depth) glNamedFramebufferTexture(id, GL_DEPTH_ATTACHMENT, depth->id(), 0);
+    if (depth) {
+        const bool hasStencil = depth->format() == GL_DEPTH32F_STENCIL8 || depth->format() == GL_DEPTH24_STENCIL8;
+        glNamedFramebufferTexture(id, hasStencil ? GL_DEPTH_STENCIL_ATTACHMENT : GL_DEPTH_ATTACHMENT, depth->id(), 0);
+    }
     label(GL_FRAMEBUFFER, id, name);
     const GLenum status = glCheckNamedFramebufferStatus(id, GL_FRAMEBUFFER);
     if (status != GL_FRAMEBUFFER_COMPLETE) {

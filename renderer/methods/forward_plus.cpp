@@ -18,7 +18,7 @@ void ForwardPlus::render(const FrameContext& ctx) {
         const float clearColor[4] = {0.0f, 0.0f, 0.0f, 1.0f};
         const float clearDepth = 1.0f;
         glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 0, clearColor);
-        glClearNamedFramebufferfv(fbo.id(), GL_DEPTH, 0, &clearDepth);
+        glClearNamedFramebufferfi(fbo.id(), GL_DEPTH_STENCIL, 0, clearDepth, 0);
         glEnable(GL_DEPTH_TEST);
         glDepthFunc(GL_LESS);
         glDepthMask(GL_TRUE);
@@ -32,14 +32,19 @@ void ForwardPlus::render(const FrameContext& ctx) {
     {
         auto pass = ctx.timer.pass("forward+.shade");
         fbo.bind();
-        // gl_Position is invariant in scene.vert, so only the nearest surface passes EQUAL:
-        // every pixel is shaded once, whatever the overdraw.
+        // gl_Position is invariant in scene.vert, so only the nearest surface passes EQUAL; the
+        // stencil then lets only the first such fragment through, so coplanar ties resolve as
+        // in naive's single pass (first drawn wins) and every pixel is shaded exactly once.
         glDepthFunc(GL_EQUAL);
         glDepthMask(GL_FALSE);
+        glEnable(GL_STENCIL_TEST);
+        glStencilFunc(GL_EQUAL, 0, 0xFF);
+        glStencilOp(GL_KEEP, GL_KEEP, GL_INCR);
         shadeProgram_.use();
         ctx.lights.animated().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_LIGHTS);
         clustering_.bindForShading();
         ctx.scene.draw(shadeProgram_);
+        glDisable(GL_STENCIL_TEST);
         glDepthFunc(GL_LESS);
         glDepthMask(GL_TRUE);
     }

@@ -6,11 +6,13 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <initializer_list>
+#include <iterator>
 #include <limits>
 #include <string>
 #include <vector>
@@ -536,7 +538,6 @@ TEST(GltfLoaderWarnings, UnmodelledFeaturesWarnOncePerKind) {
     EXPECT_EQ(countContaining(warnings, "normal x2, emissive x1"), 1u);
     EXPECT_EQ(countContaining(warnings, "POINTS x2, LINES x1"), 1u);
     EXPECT_EQ(warnings.size(), 9u);
-    for (const std::string& w : warnings) std::printf("    warning: %s\n", w.c_str());
 }
 
 TEST(GltfLoaderWarnings, UndecodableImageBecomesWhite) {
