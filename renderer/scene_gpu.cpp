@@ -1,5 +1,6 @@
 #include "renderer/scene_gpu.h"
 
+#include <algorithm>
 #include <cstddef>
 
 #include "glsl/include/bindings.h"
@@ -42,11 +43,19 @@ SceneGpu::SceneGpu(const Scene& scene) : draws_(scene.draws), indexCount_(scene.
     std::vector<GpuMaterial> materials;
     for (const Material& m : scene.materials) {
         const bool textured = m.baseColorTexture >= 0 && m.baseColorTexture < static_cast<int>(textures_.size());
-        materials.push_back({m.baseColorFactor, glm::vec4(m.specularStrength, m.shininess, textured ? 1.0f : 0.0f, 0.0f)});
+        materials.push_back({m.baseColorFactor, glm::vec4(m.specularStrength, m.shininess, textured ? 1.0f : 0.0f,
+                                                          textured ? float(m.baseColorTexture) : -1.0f)});
         materialTexture_.push_back(textured ? m.baseColorTexture : -1);
     }
-    if (materials.empty()) materials.push_back({glm::vec4(1.0f), glm::vec4(0.25f, 32.0f, 0.0f, 0.0f)});
+    if (materials.empty()) materials.push_back({glm::vec4(1.0f), glm::vec4(0.25f, 32.0f, 0.0f, -1.0f)});
     materials_ = gl::Buffer::fromSpan<GpuMaterial>("scene.materials", materials, 0);
+
+    std::vector<std::uint32_t> triangleMaterials(scene.indices.size() / 3, 0u);
+    for (const DrawRange& d : scene.draws) {
+        const std::uint32_t material = d.material < scene.materials.size() ? d.material : 0u;
+        std::fill_n(triangleMaterials.begin() + d.firstIndex / 3, d.indexCount / 3, material);
+    }
+    triangleMaterials_ = gl::Buffer::fromSpan<std::uint32_t>("scene.triangle-materials", triangleMaterials, 0);
 }
 
 void SceneGpu::draw(const gl::Program& program) const {
@@ -62,11 +71,30 @@ void SceneGpu::draw(const gl::Program& program) const {
     }
 }
 
+void SceneGpu::drawTriangleIds(const gl::Program& program) const {
+    glBindVertexArray(vao_.id());
+    const GLint firstTriangle = glGetUniformLocation(program.id(), "u_firstTriangle");
+    for (const DrawRange& d : draws_) {
+        glProgramUniform1ui(program.id(), firstTriangle, d.firstIndex / 3);
+        glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(d.indexCount), GL_UNSIGNED_INT,
+                       reinterpret_cast<const void*>(static_cast<std::uintptr_t>(d.firstIndex) * sizeof(std::uint32_t)));
+    }
+}
+
+void SceneGpu::bindGeometryForCompute() const {
+    vertices_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_VERTICES);
+    indices_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_INDICES);
+    triangleMaterials_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_TRIANGLE_MATERIALS);
+    materials_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_MATERIALS);
+}
+
 void SceneGpu::drawDepthOnly() const {
     glBindVertexArray(vao_.id());
     glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(indexCount_), GL_UNSIGNED_INT, nullptr);
 }
 
-std::size_t SceneGpu::bytes() const { return vertices_.size() + indices_.size() + materials_.size(); }
+std::size_t SceneGpu::bytes() const {
+    return vertices_.size() + indices_.size() + materials_.size() + triangleMaterials_.size();
+}
 
 }  // namespace ml

@@ -21,6 +21,9 @@
 #define ML_SSBO_SCAN_DATA 10       // prefix sum: the values, scanned in place
 #define ML_SSBO_SCAN_BLOCKS 11     // prefix sum: one total per block
 #define ML_SSBO_FILL_CURSORS 12    // per-cluster write positions of the fill pass
+#define ML_SSBO_VERTICES 13        // scene vertices as floats (visibility resolve)
+#define ML_SSBO_INDICES 14         // scene triangle indices (visibility resolve)
+#define ML_SSBO_TRIANGLE_MATERIALS 15  // material of every triangle (visibility resolve)
 
 // Texture units
 #define ML_TEX_BASE_COLOR 0
@@ -29,10 +32,14 @@
 #define ML_TEX_GBUFFER0 2
 #define ML_TEX_GBUFFER1 3
 #define ML_TEX_GBUFFER2 4
+#define ML_TEX_VISIBILITY 5
 
 // Image units
 #define ML_IMG_HDR 0
 #define ML_IMG_LDR 1
+#define ML_IMG_GBUFFER0 2
+#define ML_IMG_GBUFFER1 3
+#define ML_IMG_GBUFFER2 4
 
 // The light animation's compute workgroup size.
 #define ML_ANIMATE_WORKGROUP 256

@@ -23,4 +23,10 @@ void GBuffer::bindForReading() const {
     glBindTextureUnit(ML_TEX_GBUFFER2, specular_.id());
 }
 
+void GBuffer::bindForWriting() const {
+    glBindImageTexture(ML_IMG_GBUFFER0, normal_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+    glBindImageTexture(ML_IMG_GBUFFER1, albedo_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+    glBindImageTexture(ML_IMG_GBUFFER2, specular_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+}
+
 }  // namespace ml

@@ -13,6 +13,7 @@ public:
     // Re-creates the targets when the frame size changed; returns the framebuffer.
     const gl::Framebuffer& prepare(const FrameTargets& frame);
     void bindForReading() const;  // at ML_TEX_GBUFFER0..2
+    void bindForWriting() const;  // as images at ML_IMG_GBUFFER0..2 (compute writes)
     std::size_t bytes() const { return static_cast<std::size_t>(width_) * height_ * 24; }
 
 private:

@@ -3,6 +3,7 @@
 #include "renderer/methods/clustered_deferred.h"
 #include "renderer/methods/forward_plus.h"
 #include "renderer/methods/naive_forward.h"
+#include "renderer/methods/visibility_buffer.h"
 #include "renderer/methods/shading_method.h"
 
 namespace ml {
@@ -16,6 +17,7 @@ constexpr MethodEntry kMethods[] = {
     {MethodKind::Naive, "naive"},
     {MethodKind::ForwardPlus, "forward-plus"},
     {MethodKind::Deferred, "deferred"},
+    {MethodKind::Visibility, "visibility"},
 };
 }  // namespace
 
@@ -47,6 +49,7 @@ std::unique_ptr<ShadingMethod> createMethod(const MethodSettings& settings) {
     case MethodKind::Naive: return std::make_unique<NaiveForward>();
     case MethodKind::ForwardPlus: return std::make_unique<ForwardPlus>(settings.clustering);
     case MethodKind::Deferred: return std::make_unique<ClusteredDeferred>(settings.clustering, settings.resolve);
+    case MethodKind::Visibility: return std::make_unique<VisibilityBuffer>(settings.clustering);
     }
     throw std::invalid_argument("unhandled method");
 }

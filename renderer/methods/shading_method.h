@@ -40,7 +40,7 @@ public:
     virtual std::size_t extraTargetBytes() const { return 0; }
 };
 
-enum class MethodKind { Naive, ForwardPlus, Deferred };
+enum class MethodKind { Naive, ForwardPlus, Deferred, Visibility };
 
 // The lighting pass of clustered deferred: a full-screen fragment pass or a compute pass.
 enum class Resolve { Fragment, Compute };

@@ -1,4 +1,4 @@
-// Forward+ and clustered deferred (both resolves) against the naive reference on the same
+// Forward+, clustered deferred (both resolves) and the visibility buffer against the naive reference on the same
 // frame, over grids and slicings: the accuracy contract of design.md. With exact lists,
 // max error <= 1/255 on the 8-bit output and PSNR >= 50 dB on the float output.
 #include <gtest/gtest.h>
@@ -47,7 +47,8 @@ TEST_P(ClusteredAccuracy, MatchesNaiveOnEveryGridAndSlicing) {
 
     const Variant variants[] = {{MethodKind::ForwardPlus, Resolve::Compute, "forward-plus"},
                                 {MethodKind::Deferred, Resolve::Compute, "deferred/compute"},
-                                {MethodKind::Deferred, Resolve::Fragment, "deferred/fragment"}};
+                                {MethodKind::Deferred, Resolve::Fragment, "deferred/fragment"},
+                                {MethodKind::Visibility, Resolve::Compute, "visibility"}};
     const ClusterGridConfig grids[] = {{4, 3, Slicing::Fitted, 32}, {16, 12, Slicing::Fitted, 64}, {40, 32, Slicing::Fitted, 128}};
     for (const Variant& v : variants) {
         for (ClusterGridConfig grid : grids) {

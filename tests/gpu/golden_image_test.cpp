@@ -53,6 +53,7 @@ TEST_P(GoldenImage, MatchesTheStoredFrame) {
 
 INSTANTIATE_TEST_SUITE_P(Scenes, GoldenImage,
     ::testing::Values(GoldenCase{"atrium", "naive"}, GoldenCase{"atrium", "forward-plus"}, GoldenCase{"atrium", "deferred"},
+                      GoldenCase{"atrium", "visibility"},
                       GoldenCase{"boxes", "naive"}, GoldenCase{"boxes", "forward-plus"}, GoldenCase{"boxes", "deferred"},
                       GoldenCase{"plane", "naive"}, GoldenCase{"plane", "forward-plus"}, GoldenCase{"plane", "deferred"}),
     [](const auto& info) {

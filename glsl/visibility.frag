@@ -1,0 +1,7 @@
+#version 450 core
+// Visibility buffer: the raster pass writes only depth and which triangle is nearest (index + 1;
+// 0 is background). Everything else is rebuilt in compute (visibility_resolve.comp).
+layout(location = 0) out uint o_triangle;
+uniform uint u_firstTriangle;
+
+void main() { o_triangle = u_firstTriangle + uint(gl_PrimitiveID) + 1u; }

@@ -1,0 +1,70 @@
+#include "renderer/methods/visibility_buffer.h"
+
+#include "glsl/include/bindings.h"
+
+namespace ml {
+
+VisibilityBuffer::VisibilityBuffer(const ClusteringSettings& settings)
+    : rasterProgram_("visibility.raster", {{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "visibility.frag"}}),
+      resolveProgram_(gl::Program::compute("visibility_resolve.comp")),
+      lightingProgram_(gl::Program::compute("deferred_lighting.comp")),
+      clustering_(settings) {}
+
+void VisibilityBuffer::prepareTargets(const FrameTargets& frame) {
+    if (frame.width() == width_ && frame.height() == height_ && frame.depth().id() == depthId_) return;
+    width_ = frame.width();
+    height_ = frame.height();
+    depthId_ = frame.depth().id();
+    triangleIds_ = gl::Texture2D("visibility.triangle-ids", GL_R32UI, width_, height_);
+    fbo_ = gl::Framebuffer("visibility", {&triangleIds_}, &frame.depth());
+}
+
+void VisibilityBuffer::render(const FrameContext& ctx) {
+    prepareTargets(ctx.targets);
+    gbuffer_.prepare(ctx.targets);
+    {
+        auto pass = ctx.timer.pass("visibility.raster");
+        fbo_.bind();
+        glViewport(0, 0, ctx.targets.width(), ctx.targets.height());
+        const GLuint background = 0;
+        const float clearDepth = 1.0f;
+        glClearNamedFramebufferuiv(fbo_.id(), GL_COLOR, 0, &background);
+        glClearNamedFramebufferfi(fbo_.id(), GL_DEPTH_STENCIL, 0, clearDepth, 0);
+        glEnable(GL_DEPTH_TEST);
+        glDepthFunc(GL_LESS);
+        glDepthMask(GL_TRUE);
+        rasterProgram_.use();
+        ctx.scene.drawTriangleIds(rasterProgram_);
+        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+    }
+    {
+        auto pass = ctx.timer.pass("visibility.resolve");
+        resolveProgram_.use();
+        ctx.scene.bindGeometryForCompute();
+        gbuffer_.bindForWriting();
+        glBindTextureUnit(ML_TEX_VISIBILITY, triangleIds_.id());
+        const GLuint groupsX = gl::groupsFor(ctx.targets.width(), ML_SCREEN_TILE);
+        const GLuint groupsY = gl::groupsFor(ctx.targets.height(), ML_SCREEN_TILE);
+        // One dispatch per base-colour texture, and one for untextured materials.
+        for (int group = -1; group < static_cast<int>(ctx.scene.textureCount()); ++group) {
+            if (group >= 0) ctx.scene.bindTexture(static_cast<std::size_t>(group), ML_TEX_BASE_COLOR);
+            resolveProgram_.set("u_textureGroup", group);
+            glDispatchCompute(groupsX, groupsY, 1);
+        }
+        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    }
+    clustering_.build(ctx);
+    {
+        auto pass = ctx.timer.pass("visibility.lighting");
+        gbuffer_.bindForReading();
+        glBindTextureUnit(ML_TEX_DEPTH, ctx.targets.depth().id());
+        ctx.lights.animated().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_LIGHTS);
+        clustering_.bindForShading();
+        lightingProgram_.use();
+        glBindImageTexture(ML_IMG_HDR, ctx.targets.hdr().id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+        glDispatchCompute(gl::groupsFor(ctx.targets.width(), ML_SCREEN_TILE), gl::groupsFor(ctx.targets.height(), ML_SCREEN_TILE), 1);
+        glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    }
+}
+
+}  // namespace ml
