@@ -72,7 +72,7 @@ void parseSize(const std::string& text, int& width, int& height) {
     height = parse(text.substr(x + 1));
 }
 
-PreparedFrame prepareFrame(const FrameOptions& o) {
+PreparedFrame prepareFrame(const FrameOptions& o, const Scene* loaded) {
     PreparedFrame f;
     // Flags first: a bad flag is reported before any scene is built or GL touched.
     parseSize(o.size, f.settings.width, f.settings.height);
@@ -107,7 +107,7 @@ PreparedFrame prepareFrame(const FrameOptions& o) {
         throw std::invalid_argument("--detail: must be in (0, 16]");
     f.frameIndex = static_cast<std::uint32_t>(o.frames);
 
-    f.scene = loadScene(SceneRequest{o.scene, o.detail}, f.warnings);
+    f.scene = loaded ? *loaded : loadScene(SceneRequest{o.scene, o.detail}, f.warnings);
     if (f.scene.indices.empty()) throw SceneError(o.scene + ": the scene has no triangles");
 
     Camera camera = o.camera.empty() ? cameraFromPose(f.scene.suggestedView.value_or(framingView(f.scene.bounds)))

@@ -60,8 +60,9 @@ struct PreparedFrame {
     std::vector<std::string> warnings;
 };
 
-// Throws std::invalid_argument or SceneError with one line naming the culprit.
-PreparedFrame prepareFrame(const FrameOptions& options);
+// Throws std::invalid_argument or SceneError with one line naming the culprit. `loaded`, when
+// given, is options.scene already loaded (bench reuses one scene across many frames).
+PreparedFrame prepareFrame(const FrameOptions& options, const Scene* loaded = nullptr);
 
 // Parses "WxH"; throws std::invalid_argument.
 void parseSize(const std::string& text, int& width, int& height);

@@ -5,13 +5,17 @@
 
 #include <CLI/CLI.hpp>
 
+#include "app/bench_command.h"
 #include "app/render_command.h"
+#include "app/view_command.h"
 
 int main(int argc, char** argv) {
     CLI::App app{"manylights: many-light rendering by naive, clustered forward and clustered deferred shading"};
     app.require_subcommand(0, 1);
     int exitCode = 0;
     ml::app::addRenderCommand(app, exitCode);
+    ml::app::addBenchCommand(app, exitCode);
+    ml::app::addViewCommand(app, exitCode);
     try {
         app.parse(argc, argv);
         // With no subcommand, do the main job: render the default scene.

@@ -13,7 +13,7 @@ FrameRenderer::FrameRenderer(const Scene& scene, const std::vector<PointLight>& 
       targets_(settings.width, settings.height),
       frameUniformBuffer_("frame.uniforms", sizeof(FrameUniforms)),
       method_(createMethod(settings.method)),
-      timer_(settings.timing, settings.clock) {}
+      timer_(settings.timing, settings.clock, settings.readback) {}
 
 void FrameRenderer::resize(int width, int height) {
     settings_.width = width;
@@ -25,6 +25,8 @@ void FrameRenderer::setMethod(const MethodSettings& method) {
     settings_.method = method;
     method_ = createMethod(method);
 }
+
+void FrameRenderer::setLights(const std::vector<PointLight>& lights) { lights_ = LightBuffers(lights); }
 
 void FrameRenderer::updateUniforms(float time) {
     const Camera& c = settings_.camera;
@@ -43,7 +45,10 @@ void FrameRenderer::updateUniforms(float time) {
 }
 
 std::vector<PassTime> FrameRenderer::render(std::uint32_t frameIndex) {
-    const float time = static_cast<float>(frameIndex) * kSecondsPerFrame;
+    return renderAt(static_cast<float>(frameIndex) * kSecondsPerFrame);
+}
+
+std::vector<PassTime> FrameRenderer::renderAt(float time) {
     timer_.beginFrame();
     updateUniforms(time);
     {

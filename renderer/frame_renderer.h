@@ -31,6 +31,7 @@ struct FrameSettings {
     LightAnimation animation;
     bool timing = false;
     TimingClock clock = TimingClock::GpuQueries;
+    TimingReadback readback = TimingReadback::Wait;
 };
 
 class FrameRenderer {
@@ -40,6 +41,8 @@ public:
     // Renders the frame at animation time frameIndex * kSecondsPerFrame. Returns the pass times
     // (empty unless settings.timing).
     std::vector<PassTime> render(std::uint32_t frameIndex);
+    // The same at any animation time (the live view's clock runs at the real frame rate).
+    std::vector<PassTime> renderAt(float seconds);
 
     RgbaImage readLdr() const;
     FloatImage readHdr() const;
@@ -47,6 +50,9 @@ public:
     void resize(int width, int height);
     void setCamera(const Camera& camera) { settings_.camera = camera; }
     void setMethod(const MethodSettings& method);
+    // Replaces the light set (count or radius changed); the GPU buffers are re-created.
+    void setLights(const std::vector<PointLight>& lights);
+    void setExposure(float exposure) { settings_.exposure = exposure; }
     const ShadingMethod& method() const { return *method_; }
     const FrameSettings& settings() const { return settings_; }
     const LightBuffers& lights() const { return lights_; }

@@ -29,13 +29,15 @@ GLuint PassTimer::takeQuery() {
     return id;
 }
 
-void PassTimer::beginFrame() {
-    for (const Pending& p : pending_) {
+void PassTimer::recycle(std::vector<Pending>& frame) {
+    for (const Pending& p : frame) {
         if (p.startQuery) freeQueries_.push_back(p.startQuery);
         if (p.endQuery) freeQueries_.push_back(p.endQuery);
     }
-    pending_.clear();
+    frame.clear();
 }
+
+void PassTimer::beginFrame() { recycle(pending_); }
 
 std::size_t PassTimer::begin(std::string_view name) {
     if (!enabled_) return 0;
@@ -65,9 +67,32 @@ void PassTimer::end(std::size_t index) {
 }
 
 std::vector<PassTime> PassTimer::endFrame() {
+    if (!enabled_) return {};
+    // The wall clock has its numbers already (it waited with glFinish around each pass).
+    if (readback_ == TimingReadback::Latest && clock_ == TimingClock::GpuQueries) return newestFinishedFrame();
+    return collect(pending_);
+}
+
+std::vector<PassTime> PassTimer::newestFinishedFrame() {
+    inFlight_.push_back(std::move(pending_));
+    pending_.clear();
+    std::vector<PassTime> newest;
+    while (!inFlight_.empty()) {
+        std::vector<Pending>& oldest = inFlight_.front();
+        GLint available = GL_TRUE;
+        // Timestamps complete in submission order: the frame's last query done means all are.
+        if (!oldest.empty()) glGetQueryObjectiv(oldest.back().endQuery, GL_QUERY_RESULT_AVAILABLE, &available);
+        if (!available && inFlight_.size() <= kMaxFramesInFlight) break;
+        newest = collect(oldest);
+        recycle(oldest);
+        inFlight_.pop_front();
+    }
+    return newest;
+}
+
+std::vector<PassTime> PassTimer::collect(const std::vector<Pending>& frame) const {
     std::vector<PassTime> out;
-    if (!enabled_) return out;
-    for (const Pending& p : pending_) {
+    for (const Pending& p : frame) {
         double ms = 0.0;
         if (clock_ == TimingClock::GpuQueries) {
             GLuint64 t0 = 0, t1 = 0;

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <chrono>
+#include <deque>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -20,10 +21,17 @@ struct PassTime {
 enum class TimingClock { GpuQueries, WallClockAfterFinish };
 const char* timingClockName(TimingClock clock);
 
+// When a frame's GPU times are read. Wait: endFrame() blocks until the frame's queries are done,
+// so the numbers belong to that frame (render, bench). Latest: endFrame() never blocks and returns
+// the newest frame whose queries are done, typically 1-3 frames late, or nothing yet; the live
+// view uses it so timing does not drain the CPU-GPU pipeline every frame.
+enum class TimingReadback { Wait, Latest };
+
 class PassTimer {
 public:
     PassTimer() = default;
-    PassTimer(bool enabled, TimingClock clock) : enabled_(enabled), clock_(clock) {}
+    PassTimer(bool enabled, TimingClock clock, TimingReadback readback = TimingReadback::Wait)
+        : enabled_(enabled), clock_(clock), readback_(readback) {}
     ~PassTimer();
     PassTimer(const PassTimer&) = delete;
     PassTimer& operator=(const PassTimer&) = delete;
@@ -45,7 +53,8 @@ public:
     [[nodiscard]] Scope pass(std::string_view name) { return Scope(*this, name); }
 
     void beginFrame();
-    // Waits for the frame's results; passes in the order they ran (repeated names summed).
+    // Passes in the order they ran (repeated names summed). With TimingReadback::Wait, this
+    // frame's; with Latest, the newest finished frame's (empty when none has finished yet).
     std::vector<PassTime> endFrame();
 
     bool enabled() const { return enabled_; }
@@ -60,10 +69,18 @@ private:
     std::size_t begin(std::string_view name);
     void end(std::size_t index);
     GLuint takeQuery();
+    std::vector<PassTime> collect(const std::vector<Pending>& frame) const;  // blocks until done
+    void recycle(std::vector<Pending>& frame);
+    std::vector<PassTime> newestFinishedFrame();
+
+    // TimingReadback::Latest: beyond this many unfinished frames, endFrame() waits for the oldest.
+    static constexpr std::size_t kMaxFramesInFlight = 4;
 
     bool enabled_ = false;
     TimingClock clock_ = TimingClock::GpuQueries;
+    TimingReadback readback_ = TimingReadback::Wait;
     std::vector<Pending> pending_;
+    std::deque<std::vector<Pending>> inFlight_;  // TimingReadback::Latest: oldest first
     std::vector<GLuint> freeQueries_;
     std::vector<GLuint> allQueries_;
 };

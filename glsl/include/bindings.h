@@ -24,6 +24,10 @@
 #define ML_SSBO_VERTICES 13        // scene vertices as floats (visibility resolve)
 #define ML_SSBO_INDICES 14         // scene triangle indices (visibility resolve)
 #define ML_SSBO_TRIANGLE_MATERIALS 15  // material of every triangle (visibility resolve)
+#define ML_SSBO_LIGHT_RANGES 16    // exact assignment: each light's block of candidate clusters
+#define ML_SSBO_LIGHT_VIEW 17      // exact assignment: each light's view-space centre and radius
+#define ML_SSBO_CANDIDATE_OFFSETS 18   // exact assignment: prefix sum of candidates per light
+#define ML_SSBO_DISPATCH 19        // exact assignment: indirect dispatch arguments of the test passes
 
 // Texture units
 #define ML_TEX_BASE_COLOR 0

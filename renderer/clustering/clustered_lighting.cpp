@@ -11,9 +11,9 @@ namespace {
 
 constexpr GLbitfield kComputeToCompute = GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT;
 
-gl::Program assignmentProgram(const char* label, const char* mode, std::uint32_t workgroup) {
-    return gl::Program(label, {{GL_COMPUTE_SHADER, "assign_lights.comp"}},
-                       {{mode, "1"}, {"ML_WORKGROUP", std::to_string(workgroup)}});
+gl::Program exactProgram(const char* label, const char* phase, std::uint32_t workgroup) {
+    return gl::Program(label, {{GL_COMPUTE_SHADER, "assign_exact.comp"}},
+                       {{phase, "1"}, {"ML_WORKGROUP", std::to_string(workgroup)}});
 }
 
 void clearToZero(const gl::Buffer& buffer, std::size_t bytes) {
@@ -31,15 +31,22 @@ ClusteredLighting::ClusteredLighting(const ClusteringSettings& settings)
       depthRange_(gl::Program::compute("cluster_depth_range.comp")),
       bounds_(gl::Program::compute("cluster_bounds.comp")),
       active_(gl::Program::compute("cluster_active.comp")),
-      count_(assignmentProgram("assign.count", "ML_ASSIGN_COUNT", settings.grid.workgroup)),
-      fill_(assignmentProgram("assign.fill", "ML_ASSIGN_FILL", settings.grid.workgroup)),
-      capped_(assignmentProgram("assign.capped", "ML_ASSIGN_CAPPED", settings.grid.workgroup)),
+      ranges_(exactProgram("assign.ranges", "ML_EXACT_RANGES", settings.grid.workgroup)),
+      dispatch_(exactProgram("assign.dispatch", "ML_EXACT_DISPATCH", settings.grid.workgroup)),
+      count_(exactProgram("assign.count", "ML_EXACT_COUNT", settings.grid.workgroup)),
+      fill_(exactProgram("assign.fill", "ML_EXACT_FILL", settings.grid.workgroup)),
+      capped_(gl::Program("assign.capped", {{GL_COMPUTE_SHADER, "assign_lights.comp"}},
+                          {{"ML_WORKGROUP", std::to_string(settings.grid.workgroup)}})),
       gridBuffer_("clusters.grid", sizeof(ClusterGridGpu)),
-      counters_("clusters.counters", 16) {
+      counters_("clusters.counters", 16),
+      dispatchArgs_("assign.dispatch-args", 16) {
     validateGridConfig(settings.grid);
     GLint64 maxBlock = 0;
     glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &maxBlock);
     maxStorageBlock_ = static_cast<std::size_t>(maxBlock);
+    GLint maxGroupsX = 0;
+    glGetIntegeri_v(GL_MAX_COMPUTE_WORK_GROUP_COUNT, 0, &maxGroupsX);
+    dispatch_.set("u_maxGroupsX", static_cast<unsigned>(std::max(maxGroupsX, 1)));
     GLint maxInvocations = 0;
     glGetIntegerv(GL_MAX_COMPUTE_WORK_GROUP_INVOCATIONS, &maxInvocations);
     if (settings.grid.workgroup > static_cast<std::uint32_t>(maxInvocations))
@@ -140,11 +147,38 @@ void ClusteredLighting::dispatchAssignment(const gl::Program& program, std::uint
 void ClusteredLighting::buildExact(const FrameContext& ctx) {
     const std::uint32_t clusters = grid_.clusterCount();
     const std::size_t perCluster = std::size_t(clusters) * 4;
+    const std::uint32_t lights = ctx.lights.count();
+    lightRanges_.ensure(std::size_t(lights) * 16);
+    lightView_.ensure(std::size_t(lights) * 16);
+    candidateOffsets_.ensure(std::size_t(lights) * 4);
+    lightRanges_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_LIGHT_RANGES);
+    lightView_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_LIGHT_VIEW);
+    candidateOffsets_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_CANDIDATE_OFFSETS);
+    dispatchArgs_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_DISPATCH);
+    counts_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_CLUSTER_COUNTS);
+    offsets_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_CLUSTER_OFFSETS);
+    cursors_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_FILL_CURSORS);
+    {
+        // Each light's candidate block, then where its candidates start among all of them.
+        auto pass = ctx.timer.pass("assign.ranges");
+        dispatchAssignment(ranges_, lights);
+        scan_.run(candidateOffsets_.buffer(), lights, counters_, 8);
+        glMemoryBarrier(kComputeToCompute);
+        candidateOffsets_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_CANDIDATE_OFFSETS);
+        counters_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_ASSIGN_STATS);
+        dispatchArgs_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_DISPATCH);
+        dispatch_.use();
+        glDispatchCompute(1, 1, 1);
+        glMemoryBarrier(GL_COMMAND_BARRIER_BIT | kComputeToCompute);
+    }
+    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, dispatchArgs_.id());
     {
         auto pass = ctx.timer.pass("assign.count");
         clearToZero(counts_.buffer(), perCluster);
-        counts_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_CLUSTER_COUNTS);
-        dispatchAssignment(count_, ctx.lights.count());
+        glMemoryBarrier(kComputeToCompute);
+        count_.use();
+        glDispatchComputeIndirect(0);
+        glMemoryBarrier(kComputeToCompute);
     }
     {
         auto pass = ctx.timer.pass("assign.scan");
@@ -162,12 +196,16 @@ void ClusteredLighting::buildExact(const FrameContext& ctx) {
         checkListFits(std::size_t(total) * 4, "the light lists");
         indices_.ensure(std::size_t(total) * 4);
         clearToZero(cursors_.buffer(), perCluster);
+        glMemoryBarrier(kComputeToCompute);
         counts_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_CLUSTER_COUNTS);
         offsets_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_CLUSTER_OFFSETS);
         indices_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_LIGHT_INDICES);
-        cursors_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_FILL_CURSORS);
-        dispatchAssignment(fill_, ctx.lights.count());
+        counters_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_ASSIGN_STATS);
+        fill_.use();
+        glDispatchComputeIndirect(0);
+        glMemoryBarrier(kComputeToCompute);
     }
+    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
 }
 
 void ClusteredLighting::buildCapped(const FrameContext& ctx) {

@@ -4,8 +4,9 @@
 //   depth ─> [cluster.depth-range]  fitted slicing only: min/max visible depth ─> grid.slicing
 //         ─> [cluster.bounds]       view-space AABB per cluster
 //         ─> [cluster.active]       --active-only: flag clusters holding a visible sample
-//   exact:  [assign.count] ─> [assign.scan] ─> [assign.fill]    one compact list, no cap
-//   capped: [assign.capped]                                     fixed lists, overflow counted
+//   exact:  [assign.ranges] ─> [assign.count] ─> [assign.scan] ─> [assign.fill]
+//           one invocation per (light, candidate cluster); one compact list, no cap
+//   capped: [assign.capped]    one invocation per light; fixed lists, overflow counted
 //
 // Memory per cluster: count, offset, fill cursor, active flag (4 B each) and an AABB (32 B):
 // 48 B, so 32 x 18 x 24 clusters take 648 KiB. Exact lists take 4 B per light reference;
@@ -63,11 +64,15 @@ private:
     std::size_t maxStorageBlock_ = 0;
     std::uint64_t listEntries_ = 0;
 
-    gl::Program depthRange_, bounds_, active_, count_, fill_, capped_;
+    gl::Program depthRange_, bounds_, active_, ranges_, dispatch_, count_, fill_, capped_;
     PrefixSum scan_;
 
     gl::Buffer gridBuffer_;
-    gl::Buffer counters_;  // [0] dropped references (capped), [1] total entries (exact, from the scan)
+    gl::Buffer counters_;  // [0] dropped references (capped), [1] list entries, [2] candidate pairs (exact)
+    gl::Buffer dispatchArgs_;  // indirect dispatch of the per-candidate passes
+    gl::GrowableBuffer lightRanges_{"assign.light-ranges"};  // 16 B per light
+    gl::GrowableBuffer lightView_{"assign.light-view"};      // 16 B per light
+    gl::GrowableBuffer candidateOffsets_{"assign.candidate-offsets"};  // 4 B per light
     gl::GrowableBuffer aabbs_{"clusters.aabbs"};
     gl::GrowableBuffer counts_{"clusters.counts"};
     gl::GrowableBuffer offsets_{"clusters.offsets"};

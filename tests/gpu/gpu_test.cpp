@@ -56,9 +56,10 @@ FrameSettings smallFrame(const Scene& scene, int width, int height) {
     return s;
 }
 
-int runManylights(const std::string& args, std::string& output, const std::string& workingDir) {
+int runManylights(const std::string& args, std::string& output, const std::string& workingDir, const std::string& wrapper) {
     const std::string cd = workingDir.empty() ? "" : "cd \"" + workingDir + "\" && ";
-    const std::string command = cd + "\"" + ML_MANYLIGHTS_EXE + "\" " + args + " 2>&1";
+    const std::string prefix = wrapper.empty() ? "" : wrapper + " ";
+    const std::string command = cd + prefix + "\"" + ML_MANYLIGHTS_EXE + "\" " + args + " 2>&1";
     output.clear();
     FILE* pipe = popen(command.c_str(), "r");
     if (!pipe) return -1;

@@ -33,7 +33,9 @@ std::string writeFailureImages(const std::string& name, const RgbaImage& test, c
 FrameSettings smallFrame(const Scene& scene, int width, int height);
 
 // Runs the manylights executable with `args` (a shell-quoted string) in `workingDir` (if not
-// empty); returns the exit status, output (stdout and stderr together) in `output`.
-int runManylights(const std::string& args, std::string& output, const std::string& workingDir = "");
+// empty), behind `wrapper` if given (e.g. "xvfb-run -a", "env -u DISPLAY"); returns the exit
+// status, output (stdout and stderr together) in `output`.
+int runManylights(const std::string& args, std::string& output, const std::string& workingDir = "",
+                  const std::string& wrapper = "");
 
 }  // namespace ml::test

@@ -81,7 +81,7 @@ TEST(LightSet, BadFilesAreRejectedWithTheIndex) {
     expectRejected(R"({"lights":[{"position":[0,0,0],"radius":-1,"color":[1,1,1]}]})", "radius is negative");
     expectRejected(R"({"lights":[{"position":[0,0,0],"radius":"big","color":[1,1,1]}]})", "radius");
     expectRejected(R"({"lights":[{"position":[0,0,0],"radius":1,"color":[1,-1,1]}]})", "color is negative");
-    expectRejected(R"({"lights":[{"position":[0,1e999,0],"radius":1,"color":[1,1,1]}]})", "light 0");
+    expectRejected(R"({"lights":[{"position":[0,1e999,0],"radius":1,"color":[1,1,1]}]})", "number overflow");
 }
 
 TEST(LightSet, ValidationNamesTheFirstBadLight) {

@@ -1,0 +1,99 @@
+// A benchmark sweep: named experiments, each the product of a few axes (methods, light counts,
+// sizes, grid settings, ...), expanded into the points `manylights bench` measures. One JSON
+// form serves the built-in presets, a --sweep file and the command-line flags:
+//
+//   {
+//     "name": "quick",
+//     "description": "...",
+//     "run":      {"warmup": 1, "timed_frames": 3, "frame": 60, "naive_budget": 2e9},
+//     "defaults": {"scene": "atrium", "size": "320x180"},          axis -> value or [values]
+//     "experiments": [
+//       {"name": "lights", "method": ["naive", "forward-plus", "deferred"], "lights": [64, 256]},
+//       {"name": "workgroup", "method": "forward-plus", "workgroup": [32, 64, 128]}
+//     ]
+//   }
+//
+// An experiment's points are the product of its axes (defaults fill what it leaves out). Axes
+// a method does not use (the grid for naive, resolve for forward-plus, the cap for exact lists)
+// are dropped from its points, so a product never measures the same thing twice.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "app/frame_options.h"
+
+namespace ml::app {
+
+// A light radius as a sweep gives it: the scene's default, a number, or "overlap:K" — the
+// radius at which about K lights reach any point of the light volume (see overlapRadius).
+struct RadiusSpec {
+    enum class Kind { SceneDefault, Fixed, Overlap };
+    Kind kind = Kind::SceneDefault;
+    double value = 0.0;  // Fixed: the radius; Overlap: K
+    std::string text() const;  // "default", "2.5", "overlap:32"
+};
+
+// n lights uniform in a volume v, each a sphere of radius r, cover a point on average
+// n * (4/3) pi r^3 / v times; solving for `overlap` lights per point:
+//   r = cbrt(3 * overlap * v / (4 * pi * n))
+// so r shrinks as n^(-1/3) and the shading work per pixel stays about constant.
+double overlapRadius(double volume, std::uint64_t lights, double overlap);
+
+// How each point is measured.
+struct RunSettings {
+    int warmupFrames = 3;
+    int timedFrames = 10;
+    std::uint32_t firstFrame = 60;      // animation frame index of the first timed frame and of the accuracy frame
+    std::optional<double> naiveBudget;  // pixels x lights a naive frame may cost; unset: by renderer
+};
+
+// The G-buffer layouts that exist. Issue 5 adds packed ones; a new name goes here and into
+// the deferred method's settings.
+const std::vector<std::string>& gbufferFormats();
+
+struct BenchPoint {
+    std::string experiment;
+    FrameOptions frame;       // the point's flags, as `render` would take them
+    RadiusSpec radius;        // resolved against the scene when the point runs
+    std::string gbuffer = "standard";
+    bool clustered = false;   // forward-plus or deferred: the grid axes apply
+    bool deferred = false;    // resolve and gbuffer apply
+    bool capped = false;      // max_per_cluster applies
+};
+
+// "lights: deferred, 256 lights, 160x90, grid 16 across x 16 fitted, exact, wg 64, ..."
+std::string describePoint(const BenchPoint& point);
+
+struct Sweep {
+    std::string name;
+    std::string description;
+    RunSettings run;
+    std::vector<std::string> experiments;  // names, in order
+    std::vector<BenchPoint> points;
+    nlohmann::json document;               // the sweep as run (after flag overrides), for the record
+};
+
+// One sweep axis: its JSON key, its `bench` flag and what it means.
+struct SweepAxis {
+    const char* key;
+    const char* flag;
+    const char* help;
+};
+const std::vector<SweepAxis>& sweepAxes();
+
+// Expands a sweep document. `overrides` maps axis keys to values that replace the axis in the
+// defaults and in every experiment (the flags given beside a preset); `only` keeps the named
+// experiments. Throws std::invalid_argument with one line naming the sweep, the experiment,
+// the key and the value at fault.
+Sweep expandSweep(const nlohmann::json& document, const nlohmann::json& overrides, const std::vector<std::string>& only);
+
+// The value of a comma-separated flag ("64,256,1024") as the JSON list the sweep takes, typed
+// by the axis ("64" becomes 64). Throws std::invalid_argument naming the flag.
+nlohmann::json axisValuesFromFlag(const std::string& key, const std::string& commaList);
+
+}  // namespace ml::app

@@ -1,0 +1,66 @@
+// The view's Dear ImGui panel: the controls, which edit a ViewSettings, and the statistics block
+// (frame time and its graph, per-pass GPU times, cluster statistics, memory, GL renderer).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "renderer/camera_controller.h"
+#include "renderer/clustering/cluster_statistics.h"
+#include "renderer/methods/shading_method.h"
+#include "renderer/pass_timer.h"
+
+namespace ml::app {
+
+// What the user can change while the view runs. Starts from the command line's flags.
+struct ViewSettings {
+    // As chosen: a debug view stays selected while naive (which has none) is shown.
+    MethodSettings method;
+    int lightCount = 1024;
+    float lightRadius = 1.0f;
+    bool animate = true;
+    float animationSpeed = 1.0f;  // times real time
+    float exposure = 1.0f;
+    bool vsync = true;
+    CameraMode cameraMode = CameraMode::Fly;
+};
+
+// The largest light count the slider offers.
+inline constexpr int kMaxViewLights = 1'000'000;
+
+// What the statistics block shows; gathered by the view each frame.
+struct ViewStatistics {
+    double frameMilliseconds = 0.0;          // mean wall-clock time between frames
+    std::vector<float> frameGraph;           // recent frame times, oldest first
+    std::vector<PassTime> passes;            // mean per pass over recent frames
+    TimingClock clock = TimingClock::GpuQueries;
+    std::optional<ClusterStatistics> clusters;  // clustered methods; refreshed a few times a second
+    std::size_t rendererBytes = 0;           // the renderer's buffers and targets
+    std::optional<std::size_t> gpuUsedBytes; // the whole GPU, where GL_NVX_gpu_memory_info says
+    std::string glRenderer, glVersion;
+    int width = 0, height = 0;
+    std::size_t lights = 0;
+    bool lightsFromFile = false;
+    float sceneSize = 1.0f;                  // bounds' diagonal: the radius slider's scale
+    float flySpeed = 0.0f;
+    int glErrors = 0;
+    std::string error;                       // the last change that failed, and why
+};
+
+struct PanelEdits {
+    bool method = false;      // method, grid, assignment, resolve or debug view
+    bool lights = false;      // count or radius (applied when the slider is let go)
+    bool vsync = false;
+    bool cameraMode = false;
+    bool resetCamera = false;
+    bool screenshot = false;
+};
+
+PanelEdits drawViewPanel(ViewSettings& settings, const ViewStatistics& stats);
+
+// The settings a FrameRenderer gets: naive shows no debug view (the tonemap would otherwise
+// treat its shaded colour as a debug colour).
+MethodSettings effectiveMethod(const MethodSettings& chosen);
+
+}  // namespace ml::app

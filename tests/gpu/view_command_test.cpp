@@ -1,0 +1,138 @@
+// `manylights view` in a real window: under xvfb-run (Mesa llvmpipe through GLX) its scripted
+// screenshots are compared with the same frame from `render` (EGL). Skipped, with a message,
+// where xvfb-run is missing (Debian package xvfb).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <fstream>
+#include <unistd.h>
+
+#include "gpu_test.h"
+
+namespace ml::test {
+namespace {
+
+// Same Mesa, same shaders: GLX and EGL contexts give the same pixels. One step of slack for a
+// driver that rounds a blit differently, none for a different frame.
+constexpr double kMaxAbs = 1.0 / 255.0 + 1e-9;
+
+bool haveXvfb() { return std::system("command -v xvfb-run >/dev/null 2>&1") == 0; }
+
+// Runs `manylights view <args>` on a private X server. -a takes the first free display from
+// -n on; starting the search from this process's id keeps tests that CTest runs side by side
+// from racing for the same number.
+int runViewUnderXvfb(const std::string& args, std::string& output) {
+    const std::string server = std::to_string(100 + getpid() % 800);
+    return runManylights("view " + args, output, "", "xvfb-run -a -n " + server + " -s '-screen 0 1024x768x24'");
+}
+
+#define REQUIRE_XVFB() \
+    if (!haveXvfb()) GTEST_SKIP() << "xvfb-run not found (apt install xvfb): the window tests need an X server"
+
+TEST(ViewCommand, ScreenshotMatchesRenderForEveryMethod) {
+    REQUIRE_XVFB();
+    const std::string dir = testOutputDir().string();
+    for (const std::string& method : methodNames()) {
+        const std::string common = "--scene boxes --detail 0.5 --size 160x90 --lights 64 --seed 3 --method " + method;
+        std::string output;
+        ASSERT_EQ(runViewUnderXvfb(common + " --frames 12 --screenshot " + dir + "/view_" + method + ".png", output), 0)
+            << output;
+        EXPECT_NE(output.find("frame 12"), std::string::npos) << output;
+        ASSERT_EQ(runManylights("render " + common + " --frames 12 --out " + dir + "/render_" + method + ".png", output), 0)
+            << output;
+        const RgbaImage view = readPng(dir + "/view_" + method + ".png");
+        const RgbaImage render = readPng(dir + "/render_" + method + ".png");
+        ASSERT_EQ(view.width, 160);
+        ASSERT_EQ(view.height, 90);
+        const ImageDifference d = compareImages(view, render);
+        EXPECT_LE(d.maxAbs, kMaxAbs) << method << ": images in " << writeFailureImages(method, view, render);
+    }
+    // The comparison can tell frames apart: the lights drift, so frame 11 is not frame 12.
+    std::string output;
+    const std::string common = "--scene boxes --detail 0.5 --size 160x90 --lights 64 --seed 3 --method naive";
+    ASSERT_EQ(runManylights("render " + common + " --frames 11 --out " + dir + "/render_11.png", output), 0) << output;
+    EXPECT_GT(compareImages(readPng(dir + "/view_naive.png"), readPng(dir + "/render_11.png")).maxAbs, kMaxAbs);
+}
+
+TEST(ViewCommand, CameraPathIsFollowedFrameByFrame) {
+    REQUIRE_XVFB();
+    const std::string dir = testOutputDir().string();
+    {
+        std::ofstream path(dir + "/path.json");
+        path << R"({"keyframes": [
+            {"frame": 0,  "eye": [8, 8, 14],  "target": [0, 1, 0], "fovy": 50},
+            {"frame": 10, "eye": [12, 6, 10], "target": [2, 1, 0], "fovy": 70}]})";
+    }
+    const std::string common = "--scene boxes --detail 0.5 --size 128x96 --lights 48 --seed 5 --method forward-plus";
+    std::string output;
+    ASSERT_EQ(runViewUnderXvfb(common + " --frames 5 --camera-path " + dir + "/path.json --screenshot " + dir + "/view.png",
+                               output),
+              0)
+        << output;
+    // Halfway between the keyframes, exactly representable.
+    ASSERT_EQ(runManylights("render " + common + " --frames 5 --camera 10,7,12,1,1,0,60 --out " + dir + "/render.png", output), 0)
+        << output;
+    const RgbaImage view = readPng(dir + "/view.png");
+    const RgbaImage render = readPng(dir + "/render.png");
+    const ImageDifference d = compareImages(view, render);
+    EXPECT_LE(d.maxAbs, kMaxAbs) << "images in " << writeFailureImages("path", view, render);
+}
+
+TEST(ViewCommand, WindowScreenshotShowsThePanelOverTheSameFrame) {
+    REQUIRE_XVFB();
+    const std::string dir = testOutputDir().string();
+    std::string output;
+    ASSERT_EQ(runViewUnderXvfb("--scene boxes --detail 0.5 --size 1024x640 --lights 32 --method deferred --frames 2"
+                               " --screenshot " + dir + "/scene.png --screenshot-window " + dir + "/window.png",
+                               output),
+              0)
+        << output;
+    EXPECT_NE(output.find("panel shown"), std::string::npos) << output;
+    const RgbaImage scene = readPng(dir + "/scene.png");
+    const RgbaImage window = readPng(dir + "/window.png");
+    ASSERT_EQ(window.width, scene.width);
+    ASSERT_EQ(window.height, scene.height);
+    // The controls sit at the top left (from 10, 10), the statistics at the top right, both
+    // under 560 pixels tall; below them the window is the scene's image.
+    std::size_t panelDiffers = 0, restDiffers = 0, panelPixels = 0, restPixels = 0;
+    for (int y = 0; y < scene.height; ++y) {
+        for (int x = 0; x < scene.width; ++x) {
+            const bool differs = !std::equal(scene.at(x, y), scene.at(x, y) + 3, window.at(x, y));
+            if (x >= 20 && x < 380 && y >= 20 && y < 120) {
+                ++panelPixels;
+                panelDiffers += differs;
+            } else if (y >= 580) {
+                ++restPixels;
+                restDiffers += differs;
+            }
+        }
+    }
+    EXPECT_GT(panelDiffers, panelPixels / 2) << "no panel in " << dir << "/window.png";
+    EXPECT_EQ(restDiffers, 0u) << "outside the panel the window should show the scene image: " << dir;
+}
+
+TEST(ViewCommand, WithoutADisplaySaysSoInOneLineAndPointsToRender) {
+    std::string output;
+    const int status = runManylights("view --scene boxes --detail 0.25", output, "", "env -u DISPLAY -u WAYLAND_DISPLAY");
+    EXPECT_NE(status, 0);
+    EXPECT_EQ(std::count(output.begin(), output.end(), '\n'), 1) << output;
+    EXPECT_NE(output.find("manylights render"), std::string::npos) << output;
+}
+
+TEST(ViewCommand, ABadCameraPathIsReportedBeforeAWindowOpens) {
+    const std::string dir = testOutputDir().string();
+    {
+        std::ofstream path(dir + "/bad.json");
+        path << R"({"keyframes": [{"frame": 0, "eye": [0, 0, 5]}]})";
+    }
+    std::string output;
+    // No display needed: the file is read first.
+    EXPECT_NE(runManylights("view --scene boxes --detail 0.25 --camera-path " + dir + "/bad.json", output, "",
+                            "env -u DISPLAY -u WAYLAND_DISPLAY"),
+              0);
+    EXPECT_NE(output.find("keyframe 0: missing \"target\""), std::string::npos) << output;
+}
+
+}  // namespace
+}  // namespace ml::test
