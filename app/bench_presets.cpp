@@ -57,7 +57,12 @@ constexpr const char* kSeeds = R"json({
      "method": ["forward-plus", "deferred"], "assign": "exact", "far": [1000, 30, "auto"],
      "slicing": ["linear", "log", "fitted"], "lights": [100, 2000, 5000]},
     {"name": "resolve", "description": "deferred lighting as a fragment pass against a compute pass (seed 004)",
-     "method": "deferred", "assign": "exact", "resolve": ["fragment", "compute"], "lights": [1000, 8192]}
+     "method": "deferred", "assign": "exact", "resolve": ["fragment", "compute"], "lights": [1000, 8192]},
+    {"name": "baseline", "description": "the seeds' configuration (deferred, three-target G-buffer, fragment resolve, linear 42x24x12, cap 2048) at the seeds' radius 2",
+     "method": "deferred", "resolve": "fragment", "radius": 2, "lights": [1000, 2000, 4096, 8192]},
+    {"name": "ours", "description": "our fast exact path on the same frames: visibility buffer, exact lists, fitted slicing, 32 across x 24",
+     "method": ["visibility", "deferred"], "assign": "exact", "slicing": "fitted", "tiles_x": 32, "slices": 24,
+     "radius": 2, "lights": [1000, 2000, 4096, 8192]}
   ]
 })json";
 
@@ -65,12 +70,12 @@ constexpr const char* kSeeds = R"json({
 // box, so about 32 lights reach any point whatever N (see overlapRadius).
 constexpr const char* kScale = R"json({
   "name": "scale",
-  "description": "1k to 1M lights at 2560x1440 for Forward+ and deferred, naive where the budget allows; the radius shrinks as N^(-1/3), r = cbrt(3 * 32 * V / (4 * pi * N)) with V the light box's volume, so about 32 lights reach any point.",
+  "description": "1k to 1M lights at 2560x1440 for Forward+, deferred and the visibility buffer, naive where the budget allows; the radius shrinks as N^(-1/3), r = cbrt(3 * 32 * V / (4 * pi * N)) with V the light box's volume, so about 32 lights reach any point.",
   "run": {"warmup": 3, "timed_frames": 10, "frame": 60},
   "defaults": {"scene": "atrium", "size": "2560x1440", "radius": "overlap:32", "assign": "exact"},
   "experiments": [
     {"name": "lights", "description": "frame time, error and cluster occupancy from 1024 to 1048576 lights",
-     "method": ["naive", "forward-plus", "deferred"],
+     "method": ["naive", "forward-plus", "deferred", "visibility"],
      "lights": [1024, 2048, 4096, 8192, 16384, 32768, 65536, 131072, 262144, 524288, 1048576]}
   ]
 })json";

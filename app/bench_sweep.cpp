@@ -149,7 +149,7 @@ const std::vector<AxisDef>& axisDefs() {
          }},
         {{"drift_speed", "--drift-speed", "mean upward drift of the lights, units per second"}, ValueKind::Number,
          Applies::Always, [](BenchPoint& p, const json& v) { p.frame.driftSpeed = static_cast<float>(asNumber(v)); }},
-        {{"method", "--method", "naive, forward-plus, deferred"}, ValueKind::Text, Applies::Always,
+        {{"method", "--method", "naive, forward-plus, deferred, visibility"}, ValueKind::Text, Applies::Always,
          [](BenchPoint& p, const json& v) {
              const MethodKind kind = parseMethod(asText(v));
              p.frame.method = v.get<std::string>();
