@@ -26,12 +26,7 @@ void PrefixSum::scanLevel(GLuint data, std::uint32_t count, std::size_t level, c
     gl::GrowableBuffer& sums = levels_[level];
     sums.ensure(std::size_t(blocks) * 4);
 
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_SCAN_DATA, data);
-    sums.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_SCAN_BLOCKS);
-    program_.set("u_count", count);
-    program_.set("u_phase", 0u);
-    glDispatchCompute(blocks, 1, 1);
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+    dispatchPhase(0, data, sums.buffer(), count, blocks);
 
     if (blocks == 1) {
         // One block: its total is the total of everything.
@@ -41,10 +36,15 @@ void PrefixSum::scanLevel(GLuint data, std::uint32_t count, std::size_t level, c
     scanLevel(sums.buffer().id(), blocks, level + 1, total, totalOffset);
 
     program_.use();
+    dispatchPhase(1, data, sums.buffer(), count, blocks);
+}
+
+void PrefixSum::dispatchPhase(unsigned phase, GLuint data, const gl::Buffer& sums, std::uint32_t count,
+                              std::uint32_t blocks) const {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_SCAN_DATA, data);
-    sums.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_SCAN_BLOCKS);
+    sums.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_SCAN_BLOCKS);
     program_.set("u_count", count);
-    program_.set("u_phase", 1u);
+    program_.set("u_phase", phase);
     glDispatchCompute(blocks, 1, 1);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
 }

@@ -23,6 +23,8 @@ public:
     static constexpr std::uint32_t kBlockSize = 2u * ML_SCAN_WORKGROUP;
 
 private:
+    // Phase 0 scans each block and writes block totals to sums; phase 1 adds them back.
+    void dispatchPhase(unsigned phase, GLuint data, const gl::Buffer& sums, std::uint32_t count, std::uint32_t blocks) const;
     void scanLevel(GLuint data, std::uint32_t count, std::size_t level, const gl::Buffer& total, std::size_t totalOffset);
     gl::Program program_;
     std::deque<gl::GrowableBuffer> levels_;  // block totals, one buffer per recursion level (deque: references stay valid as levels are added)

@@ -30,13 +30,9 @@ class ClusteredAccuracy : public GpuTest, public ::testing::WithParamInterface<A
 
 TEST_P(ClusteredAccuracy, MatchesNaiveOnEveryGridAndSlicing) {
     const AccuracyCase c = GetParam();
-    std::vector<std::string> warnings;
-    const Scene scene = loadScene(SceneRequest{c.scene, 0.25f}, warnings);
-    LightGeneration gen;
-    gen.count = c.lights;
-    gen.seed = 5;
-    gen.radius = defaultLightRadius(scene.bounds) * (c.lights >= 1024 ? 0.5f : 1.0f);
-    const std::vector<PointLight> lights = generateLights(lightVolume(scene.bounds), gen);
+    const TestScene t = testScene(c.scene, c.lights, 5, c.lights >= 1024 ? 0.5f : 1.0f);
+    const Scene& scene = t.scene;
+    const std::vector<PointLight>& lights = t.lights;
     const std::uint32_t frame = 45;
 
     FrameSettings s = smallFrame(scene, 160, 90);

@@ -27,15 +27,10 @@ class GoldenImage : public GpuTest, public ::testing::WithParamInterface<GoldenC
 
 TEST_P(GoldenImage, MatchesTheStoredFrame) {
     const GoldenCase c = GetParam();
-    std::vector<std::string> warnings;
-    const Scene scene = loadScene(SceneRequest{c.scene, 0.25f}, warnings);
-    LightGeneration gen;
-    gen.count = 64;
-    gen.seed = 7;
-    gen.radius = defaultLightRadius(scene.bounds);
-    FrameSettings s = smallFrame(scene, 160, 90);
+    const TestScene t = testScene(c.scene, 64, 7);
+    FrameSettings s = smallFrame(t.scene, 160, 90);
     s.method.kind = parseMethod(c.method);
-    FrameRenderer renderer(scene, generateLights(lightVolume(scene.bounds), gen), s);
+    FrameRenderer renderer(t.scene, t.lights, s);
     renderer.render(30);
     const RgbaImage image = renderer.readLdr();
 

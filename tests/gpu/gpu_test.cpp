@@ -6,6 +6,7 @@
 #include <sys/wait.h>
 
 #include "renderer/gl/debug_output.h"
+#include "scenes/scene_library.h"
 
 namespace ml::test {
 
@@ -44,6 +45,17 @@ std::string writeFailureImages(const std::string& name, const RgbaImage& test, c
     if (test.width == reference.width && test.height == reference.height)
         writePng((dir / "diff.png").string(), differenceImage(test, reference));
     return dir.string();
+}
+
+TestScene testScene(const std::string& name, std::uint32_t count, std::uint32_t seed, float radiusScale) {
+    std::vector<std::string> warnings;
+    TestScene t{loadScene(SceneRequest{name, 0.25f}, warnings), {}};
+    LightGeneration gen;
+    gen.count = count;
+    gen.seed = seed;
+    gen.radius = defaultLightRadius(t.scene.bounds) * radiusScale;
+    t.lights = generateLights(lightVolume(t.scene.bounds), gen);
+    return t;
 }
 
 FrameSettings smallFrame(const Scene& scene, int width, int height) {

@@ -29,6 +29,14 @@ std::filesystem::path testOutputDir();
 // Writes test.png, reference.png and diff.png under testOutputDir()/name and returns that path.
 std::string writeFailureImages(const std::string& name, const RgbaImage& test, const RgbaImage& reference);
 
+// A built-in scene at test detail (0.25) and `count` lights from `seed` in its light volume,
+// with radius defaultLightRadius x radiusScale.
+struct TestScene {
+    Scene scene;
+    std::vector<PointLight> lights;
+};
+TestScene testScene(const std::string& name, std::uint32_t count, std::uint32_t seed, float radiusScale = 1.0f);
+
 // Frame settings for a scene at a small size, the scene's suggested camera, clip planes fitted.
 FrameSettings smallFrame(const Scene& scene, int width, int height);
 

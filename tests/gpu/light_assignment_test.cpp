@@ -26,17 +26,13 @@ class LightAssignment : public GpuTest, public ::testing::WithParamInterface<Ass
 
 TEST_P(LightAssignment, ListsMatchTheCpuReference) {
     const AssignmentCase c = GetParam();
-    std::vector<std::string> warnings;
-    const Scene scene = loadScene(SceneRequest{c.scene, 0.25f}, warnings);
-    LightGeneration gen;
-    gen.count = c.lights;
-    gen.seed = 11;
-    gen.radius = defaultLightRadius(scene.bounds) * 0.5f;
+    const TestScene t = testScene(c.scene, c.lights, 11, 0.5f);
+    const Scene& scene = t.scene;
     FrameSettings s = smallFrame(scene, 200, 120);
     s.method.kind = MethodKind::Deferred;
     s.method.clustering.grid = ClusterGridConfig{c.tilesX, c.slices, c.slicing, 64};
     s.method.clustering.activeOnly = c.activeOnly;
-    FrameRenderer renderer(scene, generateLights(lightVolume(scene.bounds), gen), s);
+    FrameRenderer renderer(scene, t.lights, s);
     renderer.render(20);
     const ClusteredLighting& clustering = *renderer.method().clustering();
     const ClusterGrid& grid = clustering.grid();
