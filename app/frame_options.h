@@ -20,8 +20,8 @@ struct FrameOptions {
     float detail = 1.0f;
     std::string method = "deferred";
     // Clustering
-    unsigned tilesX = 32;
-    unsigned slices = 24;
+    unsigned tilesX = ClusterGridConfig{}.tilesX;
+    unsigned slices = ClusterGridConfig{}.slices;
     std::string slicing = "fitted";
     unsigned workgroup = 64;
     std::string assign = "exact";
