@@ -9,7 +9,7 @@
 #include "app/sample_spread.h"
 #include "renderer/clustering/clustered_lighting.h"
 #include "renderer/gl/debug_output.h"
-#include "renderer/gl/gl.h"
+#include "renderer/gl/gl_api.h"
 #include "renderer/image_compare.h"
 #include "renderer/light_set.h"
 #include "scenes/scene_library.h"

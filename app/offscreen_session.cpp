@@ -3,7 +3,7 @@
 #include <cstdio>
 
 #include "renderer/gl/debug_output.h"
-#include "renderer/gl/gl.h"
+#include "renderer/gl/gl_api.h"
 
 namespace ml::app {
 

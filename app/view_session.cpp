@@ -5,7 +5,7 @@
 #include <cstring>
 #include <filesystem>
 
-#include "renderer/gl/gl.h"  // before glfw3.h, which must not include GL/gl.h itself
+#include "renderer/gl/gl_api.h"  // before glfw3.h, which must not include GL/gl.h itself
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>

@@ -7,7 +7,7 @@
 #include <string>
 
 #include "app/frame_options.h"
-#include "app/imgui_layer.h"
+#include "app/gui_layer.h"
 #include "app/timing_history.h"
 #include "app/view_input.h"
 #include "app/view_panel.h"

@@ -3,7 +3,7 @@
 #include <cstring>
 #include <ctime>
 
-#include "renderer/gl/gl.h"
+#include "renderer/gl/gl_api.h"
 
 namespace ml::app {
 

@@ -3,7 +3,7 @@
 // the renderer draws into framebuffer objects.
 #include "renderer/context/gl_context.h"
 
-#include "renderer/gl/gl.h"
+#include "renderer/gl/gl_api.h"
 
 #include <EGL/egl.h>
 #include <EGL/eglext.h>

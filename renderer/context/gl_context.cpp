@@ -1,6 +1,6 @@
 #include "renderer/context/gl_context.h"
 
-#include "renderer/gl/gl.h"
+#include "renderer/gl/gl_api.h"
 
 namespace ml {
 

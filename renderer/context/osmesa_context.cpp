@@ -3,7 +3,7 @@
 // through EGL on a GPU neither needs nor may have.
 #include "renderer/context/gl_context.h"
 
-#include "renderer/gl/gl.h"  // before osmesa.h, whose GL/gl.h include glad's header then guards
+#include "renderer/gl/gl_api.h"  // before osmesa.h, whose GL/gl.h include glad's header then guards
 
 #include <GL/osmesa.h>
 #include <dlfcn.h>

@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <mutex>
 
-#include "renderer/gl/gl.h"
+#include "renderer/gl/gl_api.h"
 
 namespace ml::gl {
 

@@ -4,7 +4,7 @@
 #include <string_view>
 #include <utility>
 
-#include "renderer/gl/gl.h"
+#include "renderer/gl/gl_api.h"
 
 namespace ml::gl {
 

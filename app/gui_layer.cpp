@@ -1,4 +1,4 @@
-#include "app/imgui_layer.h"
+#include "app/gui_layer.h"
 
 #include <stdexcept>
 
