@@ -57,11 +57,10 @@ ClusteredLighting::ClusteredLighting(const ClusteringSettings& settings)
 
 void ClusteredLighting::checkListFits(std::size_t bytes, const char* what) const {
     if (bytes <= maxStorageBlock_) return;
+    const bool capped = settings_.assign == AssignMode::Capped;
     throw std::runtime_error(std::string(what) + " need " + mib(bytes) +
-                             ", more than this GPU's GL_MAX_SHADER_STORAGE_BLOCK_SIZE (" + mib(maxStorageBlock_) +
-                             "); lower --lights or --light-radius" +
-                             (settings_.assign == AssignMode::Capped ? ", --max-per-cluster, --tiles-x or --slices"
-                                                                      : ", or use fewer clusters"));
+                             ", more than this GPU's GL_MAX_SHADER_STORAGE_BLOCK_SIZE (" + mib(maxStorageBlock_) + "); lower " +
+                             (capped ? "--max-per-cluster, --tiles-x or --slices" : "--lights, --light-radius, --tiles-x or --slices"));
 }
 
 void ClusteredLighting::ensureStorage(std::uint32_t clusters) {

@@ -102,7 +102,12 @@ INSTANTIATE_TEST_SUITE_P(Flags, RenderCommandBadFlag,
                       BadFlag{"--scene nowhere.gltf", "nowhere.gltf"}, BadFlag{"--scene colosseum", "colosseum"},
                       BadFlag{"--camera 1,2,3", "--camera"}, BadFlag{"--backend vulkan", "vulkan"},
                       BadFlag{"--near 5 --far 1", "--near"}, BadFlag{"--lights-file /nonexistent.json", "/nonexistent.json"},
-                      BadFlag{"--size 100000x10", "--size"}));
+                      BadFlag{"--size 100000x10", "--size"}, BadFlag{"--tiles-x 0", "--tiles-x"},
+                      BadFlag{"--slices 5000", "--slices"}, BadFlag{"--workgroup 2048", "--workgroup"},
+                      BadFlag{"--workgroup 48", "--workgroup"}, BadFlag{"--slicing cubic", "cubic"},
+                      BadFlag{"--assign greedy", "greedy"}, BadFlag{"--resolve raytrace", "raytrace"},
+                      BadFlag{"--view heat", "heat"}, BadFlag{"--method naive --view light-count", "--view"},
+                      BadFlag{"--scene boxes --size 320x180 --assign capped --tiles-x 64", "GL_MAX_SHADER_STORAGE_BLOCK_SIZE"}));
 
 }  // namespace
 }  // namespace ml::test
