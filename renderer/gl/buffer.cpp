@@ -1,6 +1,9 @@
 #include "renderer/gl/buffer.h"
 
 #include <algorithm>
+#include <array>
+#include <cstdint>
+#include <cstring>
 
 namespace ml::gl {
 
@@ -8,8 +11,17 @@ Buffer::Buffer(std::string_view name, std::size_t bytes, const void* data, GLbit
     GLuint id = 0;
     glCreateBuffers(1, &id);
     handle_ = Handle<BufferDeleter>(id);
-    // Zero-sized storage is an error in GL; keep one element's worth so bindings stay valid.
-    glNamedBufferStorage(id, static_cast<GLsizeiptr>(std::max<std::size_t>(bytes, 16)), bytes ? data : nullptr, flags);
+    // Zero-sized storage is an error in GL, so small buffers get 16 bytes and bindings stay
+    // valid. GL copies the whole storage size from `data`, so small data goes through a padded
+    // copy: reading past the caller's data would overrun it (AddressSanitizer caught this).
+    constexpr std::size_t kMinimum = 16;
+    if (bytes >= kMinimum || !data) {
+        glNamedBufferStorage(id, static_cast<GLsizeiptr>(std::max(bytes, kMinimum)), bytes ? data : nullptr, flags);
+    } else {
+        std::array<std::uint8_t, kMinimum> padded{};
+        std::memcpy(padded.data(), data, bytes);
+        glNamedBufferStorage(id, static_cast<GLsizeiptr>(kMinimum), padded.data(), flags);
+    }
     label(GL_BUFFER, id, name);
 }
 
