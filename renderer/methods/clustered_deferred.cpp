@@ -1,6 +1,7 @@
 #include "renderer/methods/clustered_deferred.h"
 
 #include "glsl/include/bindings.h"
+#include "renderer/methods/deferred_lighting.h"
 
 namespace ml {
 
@@ -42,16 +43,10 @@ void ClusteredDeferred::render(const FrameContext& ctx) {
     clustering_.build(ctx);
     {
         auto pass = ctx.timer.pass(resolve_ == Resolve::Compute ? "deferred.lighting-compute" : "deferred.lighting-fragment");
-        gbuffer_.bindForReading();
-        glBindTextureUnit(ML_TEX_DEPTH, ctx.targets.depth().id());
-        ctx.lights.animated().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_LIGHTS);
-        clustering_.bindForShading();
+        bindDeferredLightingInputs(gbuffer_, ctx, clustering_);
         lightingProgram_.use();
         if (resolve_ == Resolve::Compute) {
-            glBindImageTexture(ML_IMG_HDR, ctx.targets.hdr().id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-            glDispatchCompute(gl::groupsFor(ctx.targets.width(), ML_SCREEN_TILE),
-                              gl::groupsFor(ctx.targets.height(), ML_SCREEN_TILE), 1);
-            glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+            dispatchComputeLighting(ctx.targets);
         } else {
             // Colour only: the depth texture is read, so it must not be attached while drawing.
             ctx.targets.hdrOnlyFramebuffer().bind();

@@ -1,0 +1,20 @@
+#include "renderer/methods/deferred_lighting.h"
+
+#include "glsl/include/bindings.h"
+
+namespace ml {
+
+void bindDeferredLightingInputs(const GBuffer& gbuffer, const FrameContext& ctx, const ClusteredLighting& clustering) {
+    gbuffer.bindForReading();
+    glBindTextureUnit(ML_TEX_DEPTH, ctx.targets.depth().id());
+    ctx.lights.animated().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_LIGHTS);
+    clustering.bindForShading();
+}
+
+void dispatchComputeLighting(const FrameTargets& targets) {
+    glBindImageTexture(ML_IMG_HDR, targets.hdr().id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    glDispatchCompute(gl::groupsFor(targets.width(), ML_SCREEN_TILE), gl::groupsFor(targets.height(), ML_SCREEN_TILE), 1);
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+}
+
+}  // namespace ml

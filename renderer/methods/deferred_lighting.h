@@ -1,0 +1,17 @@
+// The lighting pass shared by clustered deferred and the visibility buffer: both light the
+// G-buffer with the cluster lists, and both can run it as glsl/deferred_lighting.comp.
+#pragma once
+
+#include "renderer/clustering/clustered_lighting.h"
+#include "renderer/methods/gbuffer.h"
+#include "renderer/methods/shading_method.h"
+
+namespace ml {
+
+// Binds the G-buffer, the depth, the lights and the cluster lists the lighting shaders read.
+void bindDeferredLightingInputs(const GBuffer& gbuffer, const FrameContext& ctx, const ClusteredLighting& clustering);
+
+// Runs the bound compute lighting program over the frame, writing the HDR target.
+void dispatchComputeLighting(const FrameTargets& targets);
+
+}  // namespace ml
