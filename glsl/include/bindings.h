@@ -55,6 +55,10 @@
 #define ML_CLUSTER_WORKGROUP 64
 // Default light-assignment workgroup size (--workgroup overrides it).
 #define ML_ASSIGN_WORKGROUP 64
+// Light-list sort: threads per cluster, and the longest list sorted in shared memory (16 KiB);
+// longer lists sort in place in the buffer.
+#define ML_SORT_WORKGROUP 64
+#define ML_SORT_SHARED_CAPACITY 4096
 
 // --slicing modes, as stored in the cluster grid buffer.
 #define ML_SLICING_LINEAR 0

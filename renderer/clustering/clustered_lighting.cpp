@@ -37,6 +37,7 @@ ClusteredLighting::ClusteredLighting(const ClusteringSettings& settings)
       fill_(exactProgram("assign.fill", "ML_EXACT_FILL", settings.grid.workgroup)),
       capped_(gl::Program("assign.capped", {{GL_COMPUTE_SHADER, "assign_lights.comp"}},
                           {{"ML_WORKGROUP", std::to_string(settings.grid.workgroup)}})),
+      sort_(gl::Program::compute("sort_cluster_lists.comp")),
       gridBuffer_("clusters.grid", sizeof(ClusterGridGpu)),
       counters_("clusters.counters", 16),
       dispatchArgs_("assign.dispatch-args", 16) {
@@ -46,7 +47,8 @@ ClusteredLighting::ClusteredLighting(const ClusteringSettings& settings)
     maxStorageBlock_ = static_cast<std::size_t>(maxBlock);
     GLint maxGroupsX = 0;
     glGetIntegeri_v(GL_MAX_COMPUTE_WORK_GROUP_COUNT, 0, &maxGroupsX);
-    dispatch_.set("u_maxGroupsX", static_cast<unsigned>(std::max(maxGroupsX, 1)));
+    maxGroupsX_ = static_cast<std::uint32_t>(std::max(maxGroupsX, 1));
+    dispatch_.set("u_maxGroupsX", maxGroupsX_);
     GLint maxInvocations = 0;
     glGetIntegerv(GL_MAX_COMPUTE_WORK_GROUP_INVOCATIONS, &maxInvocations);
     if (settings.grid.workgroup > static_cast<std::uint32_t>(maxInvocations))
@@ -135,6 +137,20 @@ void ClusteredLighting::build(const FrameContext& ctx) {
     counters_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_ASSIGN_STATS);
     if (settings_.assign == AssignMode::Exact) buildExact(ctx);
     else buildCapped(ctx);
+    sortLists(ctx);
+}
+
+void ClusteredLighting::sortLists(const FrameContext& ctx) {
+    auto pass = ctx.timer.pass("assign.sort");
+    const std::uint32_t clusters = grid_.clusterCount();
+    counts_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_CLUSTER_COUNTS);
+    offsets_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_CLUSTER_OFFSETS);
+    indices_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_LIGHT_INDICES);
+    sort_.use();
+    // One workgroup per cluster; past the device's limit in x, the rest goes to y.
+    const std::uint32_t groupsX = std::min(clusters, maxGroupsX_);
+    glDispatchCompute(groupsX, (clusters + groupsX - 1) / groupsX, 1);
+    glMemoryBarrier(kComputeToCompute);
 }
 
 void ClusteredLighting::dispatchAssignment(const gl::Program& program, std::uint32_t lightCount) const {

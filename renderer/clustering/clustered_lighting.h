@@ -7,6 +7,7 @@
 //   exact:  [assign.ranges] ─> [assign.count] ─> [assign.scan] ─> [assign.fill]
 //           one invocation per (light, candidate cluster); one compact list, no cap
 //   capped: [assign.capped]    one invocation per light; fixed lists, overflow counted
+//   both:   [assign.sort]      each list in light-index order, so shading sums in a fixed order
 //
 // Memory per cluster: count, offset, fill cursor, active flag (4 B each) and an AABB (32 B):
 // 48 B, so 32 x 18 x 24 clusters take 648 KiB. Exact lists take 4 B per light reference;
@@ -57,14 +58,16 @@ private:
     void checkListFits(std::size_t bytes, const char* what) const;
     void buildExact(const FrameContext& ctx);
     void buildCapped(const FrameContext& ctx);
+    void sortLists(const FrameContext& ctx);
     void dispatchAssignment(const gl::Program& program, std::uint32_t lightCount) const;
 
     ClusteringSettings settings_;
     ClusterGrid grid_;
     std::size_t maxStorageBlock_ = 0;
     std::uint64_t listEntries_ = 0;
+    std::uint32_t maxGroupsX_ = 65535;
 
-    gl::Program depthRange_, bounds_, active_, ranges_, dispatch_, count_, fill_, capped_;
+    gl::Program depthRange_, bounds_, active_, ranges_, dispatch_, count_, fill_, capped_, sort_;
     PrefixSum scan_;
 
     gl::Buffer gridBuffer_;

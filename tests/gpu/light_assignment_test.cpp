@@ -84,6 +84,8 @@ TEST_P(LightAssignment, ListsMatchTheCpuReference) {
                 ASSERT_LT(glm::length(glm::vec3(aabbs[cluster].maxPoint) - box.max), tolerance) << "cluster " << cluster;
                 const std::set<std::uint32_t> listed(lists[cluster].begin(), lists[cluster].end());
                 EXPECT_EQ(listed.size(), lists[cluster].size()) << "duplicate light in cluster " << cluster;
+                EXPECT_TRUE(std::is_sorted(lists[cluster].begin(), lists[cluster].end()))
+                    << "cluster " << cluster << ": list not in light-index order";
                 references += lists[cluster].size();
                 const std::vector<glm::vec3> points = samplesInside(x, y, slice);
                 for (std::uint32_t i = 0; i < lights.size(); ++i) {
@@ -124,6 +126,39 @@ INSTANTIATE_TEST_SUITE_P(Grids, LightAssignment,
                       AssignmentCase{"atrium", 200, 24, 16, Slicing::Fitted, false},
                       AssignmentCase{"atrium", 200, 13, 9, Slicing::Fitted, true},
                       AssignmentCase{"atrium", 0, 8, 4, Slicing::Fitted, false}));
+
+// Lists longer than the sort's shared memory (ML_SORT_SHARED_CAPACITY) take the in-buffer
+// bitonic path; capped lists are sorted too. One cluster per tile row, lights covering it all.
+struct LongListCase {
+    AssignMode assign;
+    std::uint32_t lights;
+};
+
+class LongLists : public GpuTest, public ::testing::WithParamInterface<LongListCase> {};
+
+TEST_P(LongLists, AreCompleteAndSorted) {
+    const LongListCase c = GetParam();
+    const TestScene t = testScene("boxes", c.lights, 5, 3.0f);
+    FrameSettings s = smallFrame(t.scene, 64, 96);
+    s.method.kind = MethodKind::Deferred;
+    s.method.clustering.grid = ClusterGridConfig{1, 1, Slicing::Linear, 64};
+    s.method.clustering.assign = c.assign;
+    s.method.clustering.maxPerCluster = c.lights + 7;  // capped: room for every light, odd size
+    FrameRenderer renderer(t.scene, t.lights, s);
+    renderer.render(0);
+    const auto lists = renderer.method().clustering()->downloadLists();
+    ASSERT_EQ(lists.size(), 2u);
+    for (const auto& list : lists) {
+        std::printf("list of %zu lights\n", list.size());
+        if (c.lights > ML_SORT_SHARED_CAPACITY) EXPECT_GT(list.size(), std::size_t(ML_SORT_SHARED_CAPACITY));
+        EXPECT_TRUE(std::is_sorted(list.begin(), list.end()));
+        EXPECT_EQ(std::adjacent_find(list.begin(), list.end()), list.end()) << "duplicate light";
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Sort, LongLists,
+    ::testing::Values(LongListCase{AssignMode::Exact, 5000}, LongListCase{AssignMode::Exact, 1500},
+                      LongListCase{AssignMode::Capped, 4500}));
 
 }  // namespace
 }  // namespace ml::test

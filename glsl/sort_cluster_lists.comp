@@ -1,0 +1,70 @@
+#version 450 core
+// Sorts every cluster's light list by light index, one workgroup per cluster.
+// Why: the fill passes write lists through atomics, so their order changes from run to run,
+// and a float sum taken in a different order differs in its last bits. Sorted lists make the
+// shaded frame a pure function of the flags and the seed (byte-identical runs, issue 7).
+#include "include/bindings.h"
+#include "include/frame_uniforms.glsl"
+#include "include/cluster_grid.glsl"
+
+layout(local_size_x = ML_SORT_WORKGROUP) in;
+
+layout(std430, binding = ML_SSBO_CLUSTER_COUNTS) readonly buffer ClusterCounts { uint clusterCounts[]; };
+layout(std430, binding = ML_SSBO_CLUSTER_OFFSETS) readonly buffer ClusterOffsets { uint clusterOffsets[]; };
+layout(std430, binding = ML_SSBO_LIGHT_INDICES) coherent buffer LightIndices { uint lightIndices[]; };
+
+shared uint s_list[ML_SORT_SHARED_CAPACITY];
+
+// Nearly every list: rank sort. A light appears at most once per list, so an entry's place is
+// the number of entries smaller than it: n^2 / ML_SORT_WORKGROUP compares from shared memory
+// and one barrier, cheaper than a sorting network's log^2 n barriers at tens to hundreds of
+// entries.
+void rankSortShared(uint first, uint n) {
+    for (uint i = gl_LocalInvocationID.x; i < n; i += ML_SORT_WORKGROUP) s_list[i] = lightIndices[first + i];
+    barrier();
+    for (uint i = gl_LocalInvocationID.x; i < n; i += ML_SORT_WORKGROUP) {
+        uint x = s_list[i], rank = 0u;
+        for (uint m = 0u; m < n; ++m) rank += uint(s_list[m] < x);
+        lightIndices[first + rank] = x;
+    }
+}
+
+// A list too long for shared memory (a hot cluster): bitonic sort in place in the buffer, in
+// its "flip" form. Every compare-exchange puts the smaller value first, so a list of any
+// length behaves as if padded with +infinity to a power of two, and pairs whose partner lies
+// at or past n are skipped. Pair p of a step has its lower index a with bit j clear; the first
+// step of each stage k pairs a with its mirror in the block (a ^ (k - 1)), the later ones with
+// a + j.
+void bitonicSortBuffer(uint first, uint n) {
+    uint padded = 1u;
+    while (padded < n) padded <<= 1;
+    for (uint k = 2u; k <= padded; k <<= 1) {
+        for (uint j = k >> 1; j > 0u; j >>= 1) {
+            for (uint p = gl_LocalInvocationID.x; p < padded / 2u; p += ML_SORT_WORKGROUP) {
+                uint a = (p / j) * 2u * j + (p % j);
+                uint b = (j == (k >> 1)) ? (a ^ (k - 1u)) : (a + j);
+                if (b >= n) continue;
+                uint x = lightIndices[first + a], y = lightIndices[first + b];
+                if (x > y) {
+                    lightIndices[first + a] = y;
+                    lightIndices[first + b] = x;
+                }
+            }
+            memoryBarrierBuffer();
+            barrier();
+        }
+    }
+}
+
+void main() {
+    uint cluster = gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x;
+    if (cluster >= grid.dims.w) return;
+    // Capped lists live at cluster * cap and keep at most cap entries.
+    uint cap = grid.options.y;
+    uint n = clusterCounts[cluster];
+    uint first = cap > 0u ? cluster * cap : clusterOffsets[cluster];
+    if (cap > 0u) n = min(n, cap);
+    if (n < 2u) return;
+    if (n <= ML_SORT_SHARED_CAPACITY) rankSortShared(first, n);
+    else bitonicSortBuffer(first, n);
+}
