@@ -27,8 +27,9 @@ layout(std430, binding = ML_SSBO_CLUSTER_OFFSETS) readonly buffer ClusterOffsets
 layout(std430, binding = ML_SSBO_LIGHT_INDICES) writeonly buffer LightIndices { uint lightIndices[]; };
 layout(std430, binding = ML_SSBO_CLUSTER_ACTIVE) readonly buffer ClusterActive { uint clusterActive[]; };
 layout(std430, binding = ML_SSBO_FILL_CURSORS) buffer FillCursors { uint cursors[]; };
-// [0] dropped (capped only), [1] list entries, [2] candidates: totals written by the prefix sums
-layout(std430, binding = ML_SSBO_ASSIGN_STATS) buffer AssignStats { uint totals[4]; };
+// [0] dropped (capped only), [1] list entries, [2] candidates: totals written by the prefix sums;
+// [4] running candidate sum and [5] its overflow flag (ranges pass; the scan's total wraps at 2^32)
+layout(std430, binding = ML_SSBO_ASSIGN_STATS) buffer AssignStats { uint totals[8]; };
 layout(std430, binding = ML_SSBO_LIGHT_RANGES) buffer LightRanges { uvec4 lightRanges[]; };  // lo.xyz, tiles across
 layout(std430, binding = ML_SSBO_LIGHT_VIEW) buffer LightView { vec4 lightView[]; };        // centre, radius
 layout(std430, binding = ML_SSBO_CANDIDATE_OFFSETS) buffer CandidateOffsets { uint candidateOffsets[]; };
@@ -37,23 +38,47 @@ layout(std430, binding = ML_SSBO_DISPATCH) writeonly buffer DispatchArgs { uvec4
 uniform uint u_maxGroupsX;
 
 #if defined(ML_EXACT_RANGES)
+shared uint s_candidates;
+shared uint s_wrapped;
+
+// Adds to a 32-bit sum and flags a wrap: a million large lights can name more than 2^32
+// (light, cluster) candidates, which the 32-bit prefix sum would silently wrap.
+void addCandidates(uint count) {
+    uint before = atomicAdd(totals[4], count);
+    if (before > 0xFFFFFFFFu - count) atomicOr(totals[5], 1u);
+}
+
 void main() {
-    uint i = gl_GlobalInvocationID.x;
-    if (i >= lightCount()) return;
-    ClusterRange range;
-    uint candidates = 0u;
-    if (lightClusterRange(i, range)) {
-        uvec3 n = range.hi - range.lo + 1u;
-        candidates = n.x * n.y * n.z;
-        lightRanges[i] = uvec4(range.lo, (n.y << 16) | n.x);
-        lightView[i] = vec4(range.center, range.radius);
+    if (gl_LocalInvocationID.x == 0u) {
+        s_candidates = 0u;
+        s_wrapped = 0u;
     }
-    candidateOffsets[i] = candidates;
+    barrier();
+    uint i = gl_GlobalInvocationID.x;
+    uint candidates = 0u;
+    if (i < lightCount()) {
+        ClusterRange range;
+        if (lightClusterRange(i, range)) {
+            uvec3 n = range.hi - range.lo + 1u;
+            candidates = n.x * n.y * n.z;
+            lightRanges[i] = uvec4(range.lo, (n.y << 16) | n.x);
+            lightView[i] = vec4(range.center, range.radius);
+        }
+        candidateOffsets[i] = candidates;
+    }
+    // One global atomic per workgroup.
+    if (candidates > 0u && atomicAdd(s_candidates, candidates) > 0xFFFFFFFFu - candidates) s_wrapped = 1u;
+    barrier();
+    if (gl_LocalInvocationID.x == 0u) {
+        if (s_wrapped != 0u) atomicOr(totals[5], 1u);
+        else if (s_candidates > 0u) addCandidates(s_candidates);
+    }
 }
 #elif defined(ML_EXACT_DISPATCH)
 void main() {
     // At least one group (it finds nothing to do when there are no candidates); beyond the
     // device's limit in x, the rest goes to y.
+    if (totals[5] != 0u) totals[2] = 0u;  // wrapped: test nothing; the host reports it
     uint groups = max((totals[2] + ML_WORKGROUP - 1u) / ML_WORKGROUP, 1u);
     uint x = min(groups, u_maxGroupsX);
     dispatchArgs = uvec4(x, (groups + x - 1u) / x, 1u, 0u);

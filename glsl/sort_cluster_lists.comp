@@ -15,45 +15,59 @@ layout(std430, binding = ML_SSBO_LIGHT_INDICES) coherent buffer LightIndices { u
 
 shared uint s_list[ML_SORT_SHARED_CAPACITY];
 
-// Nearly every list: rank sort. A light appears at most once per list, so an entry's place is
-// the number of entries smaller than it: n^2 / ML_SORT_WORKGROUP compares from shared memory
-// and one barrier, cheaper than a sorting network's log^2 n barriers at tens to hundreds of
-// entries.
-void rankSortShared(uint first, uint n) {
-    for (uint i = gl_LocalInvocationID.x; i < n; i += ML_SORT_WORKGROUP) s_list[i] = lightIndices[first + i];
+// A short list (at most one entry per thread): rank sort. A light appears at most once per
+// list, so an entry's place is the number of entries smaller than it: one barrier, n compares
+// per thread.
+void rankSort(uint first, uint n) {
+    uint i = gl_LocalInvocationID.x;
+    if (i < n) s_list[i] = lightIndices[first + i];
     barrier();
-    for (uint i = gl_LocalInvocationID.x; i < n; i += ML_SORT_WORKGROUP) {
+    if (i < n) {
         uint x = s_list[i], rank = 0u;
         for (uint m = 0u; m < n; ++m) rank += uint(s_list[m] < x);
         lightIndices[first + rank] = x;
     }
 }
 
-// A list too long for shared memory (a hot cluster): bitonic sort in place in the buffer, in
-// its "flip" form. Every compare-exchange puts the smaller value first, so a list of any
-// length behaves as if padded with +infinity to a power of two, and pairs whose partner lies
-// at or past n are skipped. Pair p of a step has its lower index a with bit j clear; the first
-// step of each stage k pairs a with its mirror in the block (a ^ (k - 1)), the later ones with
-// a + j.
-void bitonicSortBuffer(uint first, uint n) {
-    uint padded = 1u;
-    while (padded < n) padded <<= 1;
-    for (uint k = 2u; k <= padded; k <<= 1) {
-        for (uint j = k >> 1; j > 0u; j >>= 1) {
-            for (uint p = gl_LocalInvocationID.x; p < padded / 2u; p += ML_SORT_WORKGROUP) {
-                uint a = (p / j) * 2u * j + (p % j);
-                uint b = (j == (k >> 1)) ? (a ^ (k - 1u)) : (a + j);
-                if (b >= n) continue;
-                uint x = lightIndices[first + a], y = lightIndices[first + b];
-                if (x > y) {
-                    lightIndices[first + a] = y;
-                    lightIndices[first + b] = x;
-                }
-            }
-            memoryBarrierBuffer();
-            barrier();
-        }
+// Longer lists: a bitonic sort in its "flip" form, O(n log^2 n), in shared memory up to
+// ML_SORT_SHARED_CAPACITY entries and in place in the buffer beyond (a hot cluster). Every
+// compare-exchange puts the smaller value first, so a list of any length behaves as if padded
+// with +infinity to a power of two, and pairs whose partner lies at or past n are skipped.
+// Pair p of a step has its lower index a with bit j clear; the first step of each stage k
+// pairs a with its mirror in the block (a ^ (k - 1)), the later ones with a + j.
+#define BITONIC_SORT(ELEMENT, SYNC)                                                         \
+    {                                                                                       \
+        uint padded = 1u;                                                                   \
+        while (padded < n) padded <<= 1;                                                    \
+        for (uint k = 2u; k <= padded; k <<= 1) {                                           \
+            for (uint j = k >> 1; j > 0u; j >>= 1) {                                        \
+                for (uint p = gl_LocalInvocationID.x; p < padded / 2u; p += ML_SORT_WORKGROUP) { \
+                    uint a = (p / j) * 2u * j + (p % j);                                    \
+                    uint b = (j == (k >> 1)) ? (a ^ (k - 1u)) : (a + j);                    \
+                    if (b >= n) continue;                                                   \
+                    uint x = ELEMENT(a), y = ELEMENT(b);                                    \
+                    if (x > y) {                                                            \
+                        ELEMENT(a) = y;                                                     \
+                        ELEMENT(b) = x;                                                     \
+                    }                                                                       \
+                }                                                                           \
+                SYNC;                                                                       \
+            }                                                                               \
+        }                                                                                   \
     }
+
+#define SHARED_ELEMENT(i) s_list[i]
+#define BUFFER_ELEMENT(i) lightIndices[first + (i)]
+
+void bitonicSortShared(uint first, uint n) {
+    for (uint i = gl_LocalInvocationID.x; i < n; i += ML_SORT_WORKGROUP) s_list[i] = lightIndices[first + i];
+    barrier();
+    BITONIC_SORT(SHARED_ELEMENT, barrier())
+    for (uint i = gl_LocalInvocationID.x; i < n; i += ML_SORT_WORKGROUP) lightIndices[first + i] = s_list[i];
+}
+
+void bitonicSortBuffer(uint first, uint n) {
+    BITONIC_SORT(BUFFER_ELEMENT, memoryBarrierBuffer(); barrier())
 }
 
 void main() {
@@ -65,6 +79,7 @@ void main() {
     uint first = cap > 0u ? cluster * cap : clusterOffsets[cluster];
     if (cap > 0u) n = min(n, cap);
     if (n < 2u) return;
-    if (n <= ML_SORT_SHARED_CAPACITY) rankSortShared(first, n);
+    if (n <= ML_SORT_WORKGROUP) rankSort(first, n);
+    else if (n <= ML_SORT_SHARED_CAPACITY) bitonicSortShared(first, n);
     else bitonicSortBuffer(first, n);
 }

@@ -12,7 +12,7 @@ vec4 resolvePixel(ivec2 p) {
     vec4 viewPos = u_invProj * vec4(ndc, depth * 2.0 - 1.0, 1.0);
     viewPos /= viewPos.w;
     SurfacePoint s;
-    s.position = (u_invView * viewPos).xyz;
+    s.position = u_cameraPos.xyz + mat3(u_invView) * viewPos.xyz;
     s.normal = normalize(texelFetch(u_gNormal, p, 0).xyz);  // 16-bit storage: restore unit length
     s.albedo = texelFetch(u_gAlbedo, p, 0).rgb;
     vec2 spec = texelFetch(u_gSpecular, p, 0).xy;

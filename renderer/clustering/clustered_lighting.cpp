@@ -39,7 +39,7 @@ ClusteredLighting::ClusteredLighting(const ClusteringSettings& settings)
                           {{"ML_WORKGROUP", std::to_string(settings.grid.workgroup)}})),
       sort_(gl::Program::compute("sort_cluster_lists.comp")),
       gridBuffer_("clusters.grid", sizeof(ClusterGridGpu)),
-      counters_("clusters.counters", 16),
+      counters_("clusters.counters", 32),
       dispatchArgs_("assign.dispatch-args", 16) {
     validateGridConfig(settings.grid);
     GLint64 maxBlock = 0;
@@ -176,6 +176,8 @@ void ClusteredLighting::buildExact(const FrameContext& ctx) {
     {
         // Each light's candidate block, then where its candidates start among all of them.
         auto pass = ctx.timer.pass("assign.ranges");
+        clearToZero(counters_, 32);
+        glMemoryBarrier(kComputeToCompute);
         dispatchAssignment(ranges_, lights);
         scan_.run(candidateOffsets_.buffer(), lights, counters_, 8);
         glMemoryBarrier(kComputeToCompute);
@@ -205,8 +207,12 @@ void ClusteredLighting::buildExact(const FrameContext& ctx) {
     {
         auto pass = ctx.timer.pass("assign.fill");
         // The list is sized by this frame's total, read back here (one small sync per frame).
-        std::uint32_t total = 0;
-        counters_.download(&total, 4, 4);
+        std::uint32_t totals[6] = {};
+        counters_.download(totals, sizeof(totals), 0);
+        if (totals[5] != 0)
+            throw std::runtime_error(std::to_string(lights) + " lights name more than 4,294,967,295 (light, cluster) candidate "
+                                     "pairs this frame; lower --light-radius, --lights, --tiles-x or --slices");
+        const std::uint32_t total = totals[1];
         listEntries_ = total;
         checkListFits(std::size_t(total) * 4, "the light lists");
         indices_.ensure(std::size_t(total) * 4);

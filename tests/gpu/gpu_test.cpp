@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <sys/wait.h>
 
+#include "renderer/clustering/clustered_lighting.h"
 #include "renderer/gl/debug_output.h"
 #include "scenes/scene_library.h"
 
@@ -56,6 +57,45 @@ TestScene testScene(const std::string& name, std::uint32_t count, std::uint32_t 
     gen.radius = defaultLightRadius(t.scene.bounds) * radiusScale;
     t.lights = generateLights(lightVolume(t.scene.bounds), gen);
     return t;
+}
+
+std::vector<MethodError> clusteredErrors(const Scene& scene, const std::vector<PointLight>& lights, FrameSettings s,
+                                         std::uint32_t frame) {
+    const ClusteringSettings clustering = s.method.clustering;
+    s.method = MethodSettings{};
+    FrameRenderer renderer(scene, lights, s);
+    renderer.render(frame);
+    const FloatImage referenceHdr = renderer.readHdr();
+    const RgbaImage referenceLdr = renderer.readLdr();
+    std::vector<MethodError> errors;
+    for (MethodKind kind : {MethodKind::ForwardPlus, MethodKind::Deferred, MethodKind::Visibility}) {
+        MethodSettings m;
+        m.kind = kind;
+        m.clustering = clustering;
+        renderer.setMethod(m);
+        renderer.render(frame);
+        const ClusterStatistics stats = renderer.method().clustering()->statistics();
+        MethodError e;
+        e.method = methodName(kind);
+        e.max8Bit = compareImages(renderer.readLdr(), referenceLdr).maxAbs * 255.0;
+        e.psnrDb = compareImages(renderer.readHdr(), referenceHdr).psnrDb;
+        e.droppedReferences = stats.droppedReferences;
+        e.listEntries = stats.listEntries;
+        e.emptyClusterShare = stats.emptyShare;
+        errors.push_back(e);
+    }
+    return errors;
+}
+
+void expectWithinContract(const std::vector<MethodError>& errors, const std::string& label) {
+    for (const MethodError& e : errors) {
+        std::printf("%-28s %-13s max8 %.3f  psnr %6.1f dB  entries %llu  empty %.1f %%  dropped %llu\n", label.c_str(),
+                    e.method.c_str(), e.max8Bit, e.psnrDb, static_cast<unsigned long long>(e.listEntries),
+                    100.0 * e.emptyClusterShare, static_cast<unsigned long long>(e.droppedReferences));
+        EXPECT_LE(e.max8Bit, 1.0 + 1e-6) << label << ": " << e.method;
+        EXPECT_GE(e.psnrDb, 50.0) << label << ": " << e.method;
+        EXPECT_EQ(e.droppedReferences, 0u) << label << ": " << e.method;
+    }
 }
 
 FrameSettings smallFrame(const Scene& scene, int width, int height) {

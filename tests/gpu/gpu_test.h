@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -39,6 +40,23 @@ TestScene testScene(const std::string& name, std::uint32_t count, std::uint32_t 
 
 // Frame settings for a scene at a small size, the scene's suggested camera, clip planes fitted.
 FrameSettings smallFrame(const Scene& scene, int width, int height);
+
+// One clustered method's difference from naive on the same frame.
+struct MethodError {
+    std::string method;
+    double max8Bit = 0.0;  // max abs error of the 8-bit output, in units of 1/255
+    double psnrDb = 0.0;   // on the float output
+    std::uint64_t droppedReferences = 0;
+    std::uint64_t listEntries = 0;
+    double emptyClusterShare = 0.0;
+};
+
+// Renders frame `frame` with naive, then with Forward+, clustered deferred and the visibility
+// buffer (the clustering of s.method), and returns each one's error against naive.
+std::vector<MethodError> clusteredErrors(const Scene& scene, const std::vector<PointLight>& lights, FrameSettings s,
+                                         std::uint32_t frame = 0);
+// Every method within the accuracy contract (design.md): 1/255 on 8 bits, 50 dB on floats.
+void expectWithinContract(const std::vector<MethodError>& errors, const std::string& label);
 
 // Runs the manylights executable with `args` (a shell-quoted string) in `workingDir` (if not
 // empty), behind `wrapper` if given (e.g. "xvfb-run -a", "env -u DISPLAY"); returns the exit

@@ -150,7 +150,9 @@ TEST_P(LongLists, AreCompleteAndSorted) {
     ASSERT_EQ(lists.size(), 2u);
     for (const auto& list : lists) {
         std::printf("list of %zu lights\n", list.size());
-        if (c.lights > ML_SORT_SHARED_CAPACITY) EXPECT_GT(list.size(), std::size_t(ML_SORT_SHARED_CAPACITY));
+        if (c.lights > ML_SORT_SHARED_CAPACITY) {
+            EXPECT_GT(list.size(), std::size_t(ML_SORT_SHARED_CAPACITY));
+        }
         EXPECT_TRUE(std::is_sorted(list.begin(), list.end()));
         EXPECT_EQ(std::adjacent_find(list.begin(), list.end()), list.end()) << "duplicate light";
     }
