@@ -141,11 +141,14 @@ TEST_F(StressScenario, SingleTriangleScene) {
 }
 
 // A triangle a thousand times the scene's size under the boxes, plus zero-area triangles (a
-// repeated vertex, collinear vertices) and a sliver: the rasterizer draws or drops them the same
-// way for every method.
+// repeated vertex, collinear vertices) and a sliver: the rasterizer clips, draws or drops them
+// the same way for every method. The clip planes stay fitted to the boxes, so the huge triangle
+// is clipped by them. (Fitting them to the huge triangle's bounds moves the near plane out and
+// costs the methods that rebuild position from depth up to 3/255: docs/stability.md.)
 TEST_F(StressScenario, HugeAndDegenerateTriangles) {
     TestScene t = testScene("boxes", 96, 4);
     Scene& scene = t.scene;
+    const FrameSettings s = stressFrame(scene);
     const float big = 1000.0f * glm::length(scene.bounds.size());
     const float floorY = scene.bounds.min.y - 0.01f;
     const auto base = static_cast<std::uint32_t>(scene.vertices.size());
@@ -162,9 +165,6 @@ TEST_F(StressScenario, HugeAndDegenerateTriangles) {
     for (std::uint32_t i : {0u, 1u, 2u, 3u, 3u, 4u, 3u, 4u, 5u, 3u, 5u, 6u}) scene.indices.push_back(base + i);
     scene.draws.push_back(DrawRange{firstIndex, 12, 0});
     computeBounds(scene);
-    FrameSettings s = stressFrame(scene);
-    s.camera = cameraFromPose(*scene.suggestedView);
-    fitClipPlanes(s.camera, scene.bounds);
     expectWithinContract(clusteredErrors(scene, t.lights, s), "huge and degenerate triangles");
 }
 
