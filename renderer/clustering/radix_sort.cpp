@@ -33,22 +33,18 @@ void RadixSort::sort(const gl::Buffer& keys, const gl::Buffer& values, std::uint
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_RADIX_VALUES_IN, valuesIn);
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_RADIX_KEYS_OUT, keysOut);
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_RADIX_VALUES_OUT, valuesOut);
-        histograms_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_RADIX_HISTOGRAMS);
-        histogram_.use();
-        histogram_.set("u_count", count);
-        histogram_.set("u_shift", shift);
-        glDispatchCompute(blocks, 1, 1);
+        auto runPhase = [&](const gl::Program& phase) {
+            histograms_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_RADIX_HISTOGRAMS);
+            phase.use();
+            phase.set("u_count", count);
+            phase.set("u_shift", shift);
+            glDispatchCompute(blocks, 1, 1);
+            glMemoryBarrier(kComputeToCompute);
+        };
+        runPhase(histogram_);
+        scan_.run(histograms_.buffer(), blocks * kRadix, total_, 0);  // where each (digit, block) goes
         glMemoryBarrier(kComputeToCompute);
-
-        scan_.run(histograms_.buffer(), blocks * kRadix, total_, 0);
-        glMemoryBarrier(kComputeToCompute);
-
-        histograms_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_RADIX_HISTOGRAMS);
-        scatter_.use();
-        scatter_.set("u_count", count);
-        scatter_.set("u_shift", shift);
-        glDispatchCompute(blocks, 1, 1);
-        glMemoryBarrier(kComputeToCompute);
+        runPhase(scatter_);
         std::swap(keysIn, keysOut);
         std::swap(valuesIn, valuesOut);
     }

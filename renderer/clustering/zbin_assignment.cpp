@@ -15,6 +15,14 @@ gl::Program zbinProgram(const char* label, const char* phase) {
     return gl::Program(label, {{GL_COMPUTE_SHADER, "zbin_assign.comp"}}, {{phase, "1"}});
 }
 
+// Runs a pass over groupsX x groupsY workgroups (none when there is nothing to do) and makes
+// its writes visible to the next.
+void runPass(const gl::Program& program, GLuint groupsX, GLuint groupsY = 1) {
+    program.use();
+    if (groupsX > 0 && groupsY > 0) glDispatchCompute(groupsX, groupsY, 1);
+    glMemoryBarrier(kComputeToCompute);
+}
+
 std::string mib(std::size_t bytes) { return std::to_string((bytes + (1u << 20) - 1) >> 20) + " MiB"; }
 
 }  // namespace
@@ -49,9 +57,7 @@ void ZBinAssignment::build(const FrameContext& ctx, const ClusterGrid& grid, std
         glMemoryBarrier(kComputeToCompute);
         keys_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_RADIX_KEYS_IN);
         sortedLights_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_ZBIN_SORTED_LIGHTS);
-        keysPass_.use();
-        if (lights_ > 0) glDispatchCompute(gl::groupsFor(lights_, ML_ZBIN_WORKGROUP), 1, 1);
-        glMemoryBarrier(kComputeToCompute);
+        runPass(keysPass_, gl::groupsFor(lights_, ML_ZBIN_WORKGROUP));
     }
     {
         auto pass = ctx.timer.pass("zbin.sort");
@@ -86,17 +92,13 @@ void ZBinAssignment::build(const FrameContext& ctx, const ClusterGrid& grid, std
         sortedLights_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_ZBIN_SORTED_LIGHTS);
         lightView_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_LIGHT_VIEW);
         sortedView_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_ZBIN_SORTED_VIEW);
-        binsPass_.use();
-        if (listed_ > 0) glDispatchCompute(gl::groupsFor(listed_, ML_ZBIN_WORKGROUP), 1, 1);
-        glMemoryBarrier(kComputeToCompute);
+        runPass(binsPass_, gl::groupsFor(listed_, ML_ZBIN_WORKGROUP));
     }
     {
         auto pass = ctx.timer.pass("zbin.tile-masks");
         masks_.ensure(maskBytes);
         masks_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_ZBIN_TILE_MASKS);
-        masksPass_.use();
-        if (words_ > 0) glDispatchCompute(gl::groupsFor(words_, ML_ZBIN_WORKGROUP), tiles, 1);
-        glMemoryBarrier(kComputeToCompute);
+        runPass(masksPass_, gl::groupsFor(words_, ML_ZBIN_WORKGROUP), tiles);
     }
 }
 

@@ -17,26 +17,12 @@
 namespace ml::test {
 namespace {
 
-constexpr double kMaxAbs8Bit = 1.0 / 255.0 + 1e-9;
-constexpr double kMinPsnrDb = 50.0;
-
 struct ZBinCase {
     const char* scene;
     std::uint32_t lights;
 };
 
-struct Variant {
-    MethodKind kind;
-    Resolve resolve;
-    const char* name;
-};
-
-const Variant kVariants[] = {{MethodKind::ForwardPlus, Resolve::Compute, "forward-plus"},
-                             {MethodKind::Deferred, Resolve::Compute, "deferred/compute"},
-                             {MethodKind::Deferred, Resolve::Fragment, "deferred/fragment"},
-                             {MethodKind::Visibility, Resolve::Compute, "visibility"}};
-
-MethodSettings zbinMethod(const Variant& v, const ClusterGridConfig& grid) {
+MethodSettings zbinMethod(const ClusteredVariant& v, const ClusterGridConfig& grid) {
     MethodSettings m;
     m.kind = v.kind;
     m.resolve = v.resolve;
@@ -59,7 +45,7 @@ TEST_P(ZBinAccuracy, MatchesNaive) {
     // Few tiles (many lights per word), the default grid, and fine tiles with linear slicing.
     const ClusterGridConfig grids[] = {{4, 3, Slicing::Fitted, 64}, {48, 32, Slicing::Fitted, 64}, {40, 16, Slicing::Linear, 64},
                                        {16, 12, Slicing::Log, 64}};
-    for (const Variant& v : kVariants) {
+    for (const ClusteredVariant& v : kClusteredVariants) {
         for (const ClusterGridConfig& grid : grids) {
             renderer.setMethod(zbinMethod(v, grid));
             renderer.render(frame);
@@ -97,7 +83,7 @@ TEST_F(ZBinStructure, SortAndBinsMatchTheCpu) {
     const TestScene t = testScene("atrium", 1000, 11);
     FrameSettings s = smallFrame(t.scene, 160, 90);
     FrameRenderer renderer(t.scene, t.lights, s);
-    renderer.setMethod(zbinMethod(kVariants[1], ClusterGridConfig{16, 8, Slicing::Fitted, 64}));
+    renderer.setMethod(zbinMethod(kClusteredVariants[1], ClusterGridConfig{16, 8, Slicing::Fitted, 64}));
     renderer.render(0);
     const ClusteredLighting& clustering = *renderer.method().clustering();
     const ZBinAssignment& zbin = *clustering.zbin();
@@ -182,7 +168,7 @@ TEST_F(ZBinOverflow, StaysExactWhereCappedListsDrop) {
     ASSERT_GT(capped.droppedReferences, 0u) << "the frame must overflow the cap";
     EXPECT_LT(cappedDiff.psnrDb, kMinPsnrDb);
 
-    for (const Variant& v : kVariants) {
+    for (const ClusteredVariant& v : kClusteredVariants) {
         renderer.setMethod(zbinMethod(v, m.clustering.grid));
         renderer.render(0);
         const ImageDifference hdr = compareImages(renderer.readHdr(), reference);
@@ -199,7 +185,7 @@ TEST_F(ZBinOverflow, StaysExactWhereCappedListsDrop) {
 TEST_F(ZBinStructure, LightCountViewShowsShadedLights) {
     const TestScene t = testScene("boxes", 64, 3);
     FrameRenderer renderer(t.scene, t.lights, smallFrame(t.scene, 160, 90));
-    MethodSettings m = zbinMethod(kVariants[0], ClusterGridConfig{16, 16, Slicing::Fitted, 64});
+    MethodSettings m = zbinMethod(kClusteredVariants[0], ClusterGridConfig{16, 16, Slicing::Fitted, 64});
     m.clustering.view = DebugView::LightCount;
     renderer.setMethod(m);
     renderer.render(0);
