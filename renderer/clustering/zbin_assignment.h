@@ -16,7 +16,7 @@
 // skipped and nothing is ever dropped.
 //
 // Memory: tiles x ceil(listed lights / 32) x 4 B of masks (48 x 27 tiles, 1024 lights: 162 KiB;
-// a million lights: 166 MiB, refused on llvmpipe's 128 MiB block limit with a message), 8 B per
+// a million lights: 162 MiB, refused on llvmpipe's 128 MiB block limit with a message), 8 B per
 // bin (32 slices x 8: 2 KiB), 48 B per light for keys, indices, spheres and the sort's scratch.
 #pragma once
 
