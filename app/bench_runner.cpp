@@ -280,6 +280,11 @@ void BenchRunner::measureInto(BenchRow& row, const BenchPoint& point) {
         row["active_clusters"] = s.activeOnly ? nlohmann::ordered_json(s.activeClusters) : nlohmann::ordered_json();
         row["list_bytes"] = s.listBytes;
         row["grid_bytes"] = s.gridBytes;
+        if (s.zbin) {
+            row["zbin_mask_bytes"] = s.zbinStats.maskBytes;
+            row["zbin_lights_walked"] = s.zbinStats.meanWalkedPerPixel;
+            row["zbin_lights_shaded"] = s.zbinStats.meanPassedPerPixel;
+        }
     }
     row["gbuffer_bytes"] = renderer_->method().extraTargetBytes();
     row["target_bytes"] = renderer_->targets().bytes();

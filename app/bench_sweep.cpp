@@ -183,7 +183,7 @@ const std::vector<AxisDef>& axisDefs() {
         {{"tiles_x", "--tiles-x", "tiles across the screen (tiles down follow, square)"}, ValueKind::Integer,
          Applies::Clustered,
          [](BenchPoint& p, const json& v) { p.frame.tilesX = static_cast<unsigned>(asInteger(v, 1, 1024)); }},
-        {{"assign", "--assign", "exact (count, scan, fill) or capped (fixed lists)"}, ValueKind::Text, Applies::Clustered,
+        {{"assign", "--assign", "exact (count, scan, fill), capped (fixed lists) or zbin (sorted lights, z-bins, tile masks)"}, ValueKind::Text, Applies::Clustered,
          [](BenchPoint& p, const json& v) {
              p.capped = parseAssignMode(asText(v)) == AssignMode::Capped;
              p.frame.assign = v.get<std::string>();

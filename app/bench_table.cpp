@@ -23,7 +23,8 @@ const std::vector<std::string> kTrailingColumns = {
     "max_abs_err", "rmse", "psnr_db", "bad_pixel_share", "ldr_max_abs_err", "ldr_psnr_db", "ldr_bad_pixel_share",
     "reference", "clusters", "empty_share", "mean_lights_per_cluster", "mean_lights_per_nonempty_cluster",
     "max_lights_per_cluster", "list_entries", "overflow_clusters", "dropped_lights", "active_clusters",
-    "list_bytes", "grid_bytes", "gbuffer_bytes", "target_bytes", "light_bytes", "renderer", "note",
+    "list_bytes", "grid_bytes", "zbin_mask_bytes", "zbin_lights_walked", "zbin_lights_shaded", "gbuffer_bytes",
+    "target_bytes", "light_bytes", "renderer", "note",
 };
 
 bool isFixed(const std::string& column) {

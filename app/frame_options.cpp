@@ -27,7 +27,7 @@ void addFrameOptions(CLI::App& cmd, FrameOptions& o) {
     grid->add_option("--slices", o.slices, "depth slices")->capture_default_str();
     grid->add_option("--slicing", o.slicing, "linear, log (near to far plane), or fitted (log over the visible depth range)")->capture_default_str();
     grid->add_option("--workgroup", o.workgroup, "compute workgroup size of the light assignment")->capture_default_str();
-    grid->add_option("--assign", o.assign, "exact (count, prefix sum, fill; no cap) or capped (fixed lists, the seeds' baseline)")->capture_default_str();
+    grid->add_option("--assign", o.assign, "exact (count, prefix sum, fill; no cap), capped (fixed lists, the seeds' baseline) or zbin (depth-sorted lights, z-bin ranges, tile bit masks)")->capture_default_str();
     grid->add_option("--max-per-cluster", o.maxPerCluster, "list size of --assign capped")->capture_default_str();
     grid->add_flag("--active-only", o.activeOnly, "assign lights only to clusters that hold a visible sample");
     grid->add_option("--resolve", o.resolve, "deferred lighting pass: compute or fragment")->capture_default_str();

@@ -1,5 +1,7 @@
 #include "app/report.h"
 
+#include "glsl/include/bindings.h"
+
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
@@ -27,6 +29,15 @@ void printSceneSummary(const PreparedFrame& frame) {
 void printClusterStatistics(const ClusterStatistics& s) {
     std::printf("clusters: %u x %u x %u = %u, slicing %s over z %.3f..%.3f\n", s.tilesX, s.tilesY, s.slices, s.clusters,
                 s.slicing.c_str(), s.zNear, s.zFar);
+    if (s.zbin) {
+        const ZBinStatistics& z = s.zbinStats;
+        std::printf("zbin: %u bins (%d per slice), %u tiles, %u lights listed (culled to the view), %u words per tile\n",
+                    z.bins, ML_ZBIN_PER_SLICE, z.tiles, z.listedLights, z.wordsPerTile);
+        std::printf("zbin lights per pixel: walked %.2f (bin range), shaded %.2f (tile bit set)\n", z.meanWalkedPerPixel,
+                    z.meanPassedPerPixel);
+        std::printf("memory: zbin tile masks %.3f MiB, zbin total %.3f MiB\n", z.maskBytes / 1048576.0, z.totalBytes / 1048576.0);
+        return;
+    }
     std::printf("empty clusters: %.1f %%\n", 100.0 * s.emptyShare);
     std::printf("lights per cluster: mean %.2f (non-empty: %.2f), max %u\n", s.meanLightsPerCluster,
                 s.meanLightsPerNonEmptyCluster, s.maxLightsPerCluster);

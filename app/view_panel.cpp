@@ -118,9 +118,10 @@ void gridSection(ViewSettings& s, PanelEdits& edits) {
         c.grid.workgroup = static_cast<std::uint32_t>(std::stoul(groups[group]));
         edits.method = true;
     }
-    int assign = c.assign == AssignMode::Exact ? 0 : 1;
-    if (comboOf("assignment", assign, {assignModeName(AssignMode::Exact), assignModeName(AssignMode::Capped)})) {
-        c.assign = assign == 0 ? AssignMode::Exact : AssignMode::Capped;
+    int assign = static_cast<int>(c.assign);
+    if (comboOf("assignment", assign, {assignModeName(AssignMode::Exact), assignModeName(AssignMode::Capped),
+                                       assignModeName(AssignMode::ZBin)})) {
+        c.assign = static_cast<AssignMode>(assign);
         edits.method = true;
     }
     if (c.assign == AssignMode::Capped) {
@@ -182,6 +183,12 @@ void statisticsSection(const ViewStatistics& st) {
         const ClusterStatistics& c = *st.clusters;
         ImGui::Text("clusters %u x %u x %u = %u (%s)", c.tilesX, c.tilesY, c.slices, c.clusters, c.slicing.c_str());
         ImGui::Text("sliced depth %.3f .. %.3f", c.zNear, c.zFar);
+        if (c.zbin) {
+            const ZBinStatistics& z = c.zbinStats;
+            ImGui::Text("zbin: %u bins, %u tiles x %u words, %u lights listed", z.bins, z.tiles, z.wordsPerTile, z.listedLights);
+            ImGui::Text("lights per pixel: walked %.1f, shaded %.1f", z.meanWalkedPerPixel, z.meanPassedPerPixel);
+            ImGui::Text("zbin memory: masks %s, total %s", mebibytes(z.maskBytes).c_str(), mebibytes(z.totalBytes).c_str());
+        } else {
         ImGui::Text("empty clusters %.1f %%", 100.0 * c.emptyShare);
         ImGui::Text("lights per cluster: mean %.1f (non-empty %.1f), max %u", c.meanLightsPerCluster,
                     c.meanLightsPerNonEmptyCluster, c.maxLightsPerCluster);
@@ -193,6 +200,7 @@ void statisticsSection(const ViewStatistics& st) {
         if (c.activeOnly) ImGui::Text("active clusters %u (%.1f %%)", c.activeClusters, 100.0 * c.activeClusters / std::max(1u, c.clusters));
         else ImGui::TextColored(kDim, "active clusters: tick \"active clusters only\"");
         ImGui::Text("cluster memory: lists %s, grid %s", mebibytes(c.listBytes).c_str(), mebibytes(c.gridBytes).c_str());
+        }
     } else {
         ImGui::TextColored(kDim, "no clusters: naive shades %zu lights per pixel", st.lights);
     }

@@ -27,7 +27,7 @@ vec3 lightCountColor(uint count) {
 }
 
 vec3 debugViewColor(uint view, SurfacePoint s, uint cluster, float viewDepth, vec3 shaded) {
-    if (view == ML_VIEW_LIGHT_COUNT) return lightCountColor(clusterCounts[cluster]);
+    if (view == ML_VIEW_LIGHT_COUNT) return lightCountColor(clusterLightCount(cluster, viewDepth));
     if (view == ML_VIEW_SLICES) {
         uint slice = cluster / (grid.dims.x * grid.dims.y);
         return indexColor(slice * 7919u + 1u);

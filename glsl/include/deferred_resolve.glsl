@@ -23,6 +23,6 @@ vec4 resolvePixel(ivec2 p) {
     uint cluster = clusterForFragment(vec2(p) + 0.5, viewDepth);
     uint view = grid.options.w;
     vec3 color = vec3(0.0);
-    if (view == ML_VIEW_SHADED || view == ML_VIEW_OVERFLOW) color = shadeAmbient(s) + shadeClusterLights(s, viewDir, cluster);
+    if (view == ML_VIEW_SHADED || view == ML_VIEW_OVERFLOW) color = shadeAmbient(s) + shadeClusterLights(s, viewDir, cluster, viewDepth);
     return vec4(debugViewColor(view, s, cluster, viewDepth, color), 1.0);
 }

@@ -1,10 +1,20 @@
 // What the light assignment built this frame, read back on request (--stats).
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <string>
 
 namespace ml {
+
+// --assign zbin (renderer/clustering/zbin_assignment.h).
+struct ZBinStatistics {
+    std::uint32_t bins = 0, tiles = 0, wordsPerTile = 0, listedLights = 0;
+    std::size_t maskBytes = 0;        // tiles x words x 4 B
+    std::size_t totalBytes = 0;       // masks, bins, per-light buffers and the sort's scratch
+    double meanWalkedPerPixel = 0.0;  // lights in the bin's index range, per visible pixel
+    double meanPassedPerPixel = 0.0;  // of those, lights whose tile bit is set (the ones shaded)
+};
 
 struct ClusterStatistics {
     std::uint32_t tilesX = 0, tilesY = 0, slices = 0, clusters = 0;
@@ -21,6 +31,8 @@ struct ClusterStatistics {
     bool activeOnly = false;
     std::size_t listBytes = 0;                // light index list memory in use
     std::size_t gridBytes = 0;                // counts, offsets, bounds and flags
+    bool zbin = false;                        // --assign zbin: the fields below, not the per-cluster ones
+    ZBinStatistics zbinStats;
 };
 
 }  // namespace ml

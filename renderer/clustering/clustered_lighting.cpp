@@ -42,6 +42,7 @@ ClusteredLighting::ClusteredLighting(const ClusteringSettings& settings)
       counters_("clusters.counters", 32),
       dispatchArgs_("assign.dispatch-args", 16) {
     validateGridConfig(settings.grid);
+    if (settings.assign == AssignMode::ZBin) zbin_ = std::make_unique<ZBinAssignment>();
     GLint64 maxBlock = 0;
     glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &maxBlock);
     maxStorageBlock_ = static_cast<std::size_t>(maxBlock);
@@ -97,6 +98,7 @@ void ClusteredLighting::bindForShading() const {
     counts_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_CLUSTER_COUNTS);
     offsets_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_CLUSTER_OFFSETS);
     indices_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_LIGHT_INDICES);
+    if (zbin_) zbin_->bindForShading();
 }
 
 void ClusteredLighting::build(const FrameContext& ctx) {
@@ -117,6 +119,13 @@ void ClusteredLighting::build(const FrameContext& ctx) {
         depthRange_.set("u_phase", 1u);
         glDispatchCompute(1, 1, 1);
         glMemoryBarrier(kComputeToCompute);
+    }
+    if (zbin_) {
+        // Z-binning needs only the slicing (for its bins) and the tiles; --active-only does not apply.
+        // The per-cluster counts stay zero, so dumps and read-backs see empty lists.
+        clearToZero(counts_.buffer(), std::size_t(clusters) * 4);
+        zbin_->build(ctx, grid_, maxStorageBlock_);
+        return;
     }
     {
         auto pass = ctx.timer.pass("cluster.bounds");
@@ -288,6 +297,15 @@ ClusterStatistics ClusteredLighting::statistics() const {
     s.slicing = slicingName(settings_.grid.slicing);
     s.zNear = g.slicing.x;
     s.zFar = g.slicing.y;
+    if (zbin_) {
+        // No per-cluster lists: what z-binning built instead.
+        gridBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_CLUSTER_GRID);
+        s.zbin = true;
+        s.zbinStats = zbin_->statistics();
+        s.listBytes = s.zbinStats.totalBytes;
+        s.gridBytes = sizeof(ClusterGridGpu);
+        return s;
+    }
     const std::vector<std::uint32_t> counts = downloadCounts();
     const bool capped = settings_.assign == AssignMode::Capped;
     std::uint64_t demand = 0, stored = 0;
@@ -356,9 +374,22 @@ nlohmann::json ClusteredLighting::dump(const FrameUniforms& uniforms) const {
 AssignMode parseAssignMode(const std::string& text) {
     if (text == "exact") return AssignMode::Exact;
     if (text == "capped") return AssignMode::Capped;
-    throw std::invalid_argument("--assign '" + text + "': expected exact or capped");
+    if (text == "zbin") return AssignMode::ZBin;
+    throw std::invalid_argument("--assign '" + text + "': expected exact, capped or zbin");
 }
 
-const char* assignModeName(AssignMode mode) { return mode == AssignMode::Exact ? "exact" : "capped"; }
+const char* assignModeName(AssignMode mode) {
+    switch (mode) {
+    case AssignMode::Exact: return "exact";
+    case AssignMode::Capped: return "capped";
+    case AssignMode::ZBin: return "zbin";
+    }
+    return "?";
+}
+
+shaders::Defines lightListDefines(const ClusteringSettings& settings) {
+    if (settings.assign == AssignMode::ZBin) return {{"ML_ZBIN", "1"}};
+    return {};
+}
 
 }  // namespace ml

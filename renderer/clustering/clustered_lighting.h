@@ -7,12 +7,16 @@
 //   exact:  [assign.ranges] ─> [assign.count] ─> [assign.scan] ─> [assign.fill]
 //           one invocation per (light, candidate cluster); one compact list, no cap
 //   capped: [assign.capped]    one invocation per light; fixed lists, overflow counted
-//   both:   [assign.sort]      each list in light-index order, so shading sums in a fixed order
+//   exact, capped: then [assign.sort]  each list in light-index order, so shading sums in a fixed order
+//   zbin:   [zbin.keys] ─> [zbin.sort] ─> [zbin.bins] ─> [zbin.tile-masks]   (zbin_assignment.h;
+//           no cluster bounds: bins and tile frusta replace the clusters)
 //
 // Memory per cluster: count, offset, fill cursor, active flag (4 B each) and an AABB (32 B):
 // 48 B, so 32 x 18 x 24 clusters take 648 KiB. Exact lists take 4 B per light reference;
 // capped lists take clusters x cap x 4 B whatever the frame needs (42x24x12 x 2048: 99 MiB).
 #pragma once
+
+#include <memory>
 
 #include <nlohmann/json.hpp>
 
@@ -20,6 +24,7 @@
 #include "renderer/clustering/cluster_statistics.h"
 #include "renderer/clustering/clustering_settings.h"
 #include "renderer/clustering/prefix_sum.h"
+#include "renderer/clustering/zbin_assignment.h"
 #include "renderer/gl/buffer.h"
 #include "renderer/gl/program.h"
 #include "renderer/gpu_types.h"
@@ -51,6 +56,8 @@ public:
     std::vector<ClusterAabbGpu> downloadAabbs() const;
     // Light indices of every cluster, in list order.
     std::vector<std::vector<std::uint32_t>> downloadLists() const;
+    // The z-binning of the last build (--assign zbin), else null.
+    const ZBinAssignment* zbin() const { return zbin_.get(); }
 
 private:
     void uploadGrid(const FrameContext& ctx);
@@ -82,6 +89,7 @@ private:
     gl::GrowableBuffer cursors_{"clusters.fill-cursors"};
     gl::GrowableBuffer activeFlags_{"clusters.active"};
     gl::GrowableBuffer indices_{"clusters.light-indices"};
+    std::unique_ptr<ZBinAssignment> zbin_;  // --assign zbin only
 };
 
 }  // namespace ml

@@ -6,12 +6,14 @@
 
 #include "renderer/clustering/cluster_grid.h"
 #include "renderer/debug_view.h"
+#include "renderer/gl/shader_sources.h"
 
 namespace ml {
 
 enum class AssignMode {
     Exact,   // count, prefix sum, fill: one compact list sized by what the frame needs
     Capped,  // the seeds' baseline: fixed lists of maxPerCluster entries; overflow counted
+    ZBin,    // z-binning (Drobot 2017): depth-sorted lights, index ranges per z-bin, bit masks per tile
 };
 AssignMode parseAssignMode(const std::string& text);  // throws std::invalid_argument
 const char* assignModeName(AssignMode mode);
@@ -23,5 +25,8 @@ struct ClusteringSettings {
     bool activeOnly = false;             // skip clusters that hold no visible sample
     DebugView view = DebugView::Shaded;
 };
+
+// Defines of the shading programs that read the lists (cluster_lists.glsl picks its light loop).
+shaders::Defines lightListDefines(const ClusteringSettings& settings);
 
 }  // namespace ml

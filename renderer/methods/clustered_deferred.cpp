@@ -6,16 +6,17 @@
 namespace ml {
 
 namespace {
-gl::Program lightingProgram(Resolve resolve) {
-    if (resolve == Resolve::Compute) return gl::Program::compute("deferred_lighting.comp");
-    return gl::Program("deferred.lighting", {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "deferred_lighting.frag"}});
+gl::Program lightingProgram(Resolve resolve, const ClusteringSettings& settings) {
+    if (resolve == Resolve::Compute) return gl::Program::compute("deferred_lighting.comp", lightListDefines(settings));
+    return gl::Program("deferred.lighting", {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "deferred_lighting.frag"}},
+                       lightListDefines(settings));
 }
 }  // namespace
 
 ClusteredDeferred::ClusteredDeferred(const ClusteringSettings& settings, Resolve resolve)
     : resolve_(resolve),
       gbufferProgram_("deferred.gbuffer", {{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "gbuffer.frag"}}),
-      lightingProgram_(lightingProgram(resolve)),
+      lightingProgram_(lightingProgram(resolve, settings)),
       clustering_(settings) {
     GLuint vao = 0;
     glCreateVertexArrays(1, &vao);

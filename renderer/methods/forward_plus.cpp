@@ -6,7 +6,8 @@ namespace ml {
 
 ForwardPlus::ForwardPlus(const ClusteringSettings& settings)
     : depthProgram_("forward-plus.depth", {{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "depth_only.frag"}}),
-      shadeProgram_("forward-plus.shade", {{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "forward_plus.frag"}}),
+      shadeProgram_("forward-plus.shade", {{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "forward_plus.frag"}},
+                   lightListDefines(settings)),
       clustering_(settings) {}
 
 void ForwardPlus::render(const FrameContext& ctx) {

@@ -8,7 +8,7 @@ namespace ml {
 VisibilityBuffer::VisibilityBuffer(const ClusteringSettings& settings)
     : rasterProgram_("visibility.raster", {{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "visibility.frag"}}),
       resolveProgram_(gl::Program::compute("visibility_resolve.comp")),
-      lightingProgram_(gl::Program::compute("deferred_lighting.comp")),
+      lightingProgram_(gl::Program::compute("deferred_lighting.comp", lightListDefines(settings))),
       clustering_(settings) {}
 
 void VisibilityBuffer::prepareTargets(const FrameTargets& frame) {

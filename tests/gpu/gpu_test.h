@@ -38,6 +38,22 @@ struct TestScene {
 };
 TestScene testScene(const std::string& name, std::uint32_t count, std::uint32_t seed, float radiusScale = 1.0f);
 
+// The accuracy contract of design.md against naive: max error on the 8-bit output, PSNR on the
+// float output.
+constexpr double kMaxAbs8Bit = 1.0 / 255.0 + 1e-9;
+constexpr double kMinPsnrDb = 50.0;
+
+// The clustered methods and deferred resolves the accuracy tests render.
+struct ClusteredVariant {
+    MethodKind kind;
+    Resolve resolve;
+    const char* name;
+};
+inline constexpr ClusteredVariant kClusteredVariants[] = {{MethodKind::ForwardPlus, Resolve::Compute, "forward-plus"},
+                                                          {MethodKind::Deferred, Resolve::Compute, "deferred/compute"},
+                                                          {MethodKind::Deferred, Resolve::Fragment, "deferred/fragment"},
+                                                          {MethodKind::Visibility, Resolve::Compute, "visibility"}};
+
 // Frame settings for a scene at a small size, the scene's suggested camera, clip planes fitted.
 FrameSettings smallFrame(const Scene& scene, int width, int height);
 
