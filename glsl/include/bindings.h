@@ -28,6 +28,8 @@
 #define ML_SSBO_LIGHT_VIEW 17      // exact assignment: each light's view-space centre and radius
 #define ML_SSBO_CANDIDATE_OFFSETS 18   // exact assignment: prefix sum of candidates per light
 #define ML_SSBO_DISPATCH 19        // exact assignment: indirect dispatch arguments of the test passes
+#define ML_SSBO_NORMAL_BIN_MASKS 20    // --normal-cones: per cluster, a bit per normal bin its visible samples fall in
+#define ML_SSBO_NORMAL_CONES 21        // --normal-cones: per (cluster, bin) list, the cone of its samples' normals
 
 // Texture units
 #define ML_TEX_BASE_COLOR 0
@@ -70,6 +72,19 @@
 #define ML_VIEW_ALBEDO 5
 #define ML_VIEW_NORMAL 6
 #define ML_VIEW_DEPTH 7
+
+// --cull: the light-vs-cluster test of the assignment (the ML_CULL define of its shaders).
+#define ML_CULL_AABB 0    // sphere against the cluster's view-space AABB
+#define ML_CULL_SPHERE 1  // sphere against the cluster's six frustum planes
+#define ML_CULL_CONE 2    // seed 001: the tile's cone against the sphere's, then spherical depth slices
+
+// --normal-cones (Olsson et al. 2012): view-space normal directions quantised on a cube, each
+// face cut into CELLS x CELLS cells; a cluster's lists are kept per (cluster, bin). 6 * 2 * 2
+// = 24 bins fit one uint mask per cluster.
+#define ML_NORMAL_BIN_CELLS 2
+#define ML_NORMAL_BINS 24
+// Sample normals are summed per list in fixed point, this many units per unit length.
+#define ML_NORMAL_SUM_SCALE 1024.0
 
 // Tonemap compute tile.
 #define ML_TONEMAP_TILE 8

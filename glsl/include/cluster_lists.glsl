@@ -3,6 +3,16 @@ layout(std430, binding = ML_SSBO_CLUSTER_COUNTS) readonly buffer ClusterCounts {
 layout(std430, binding = ML_SSBO_CLUSTER_OFFSETS) readonly buffer ClusterOffsets { uint clusterOffsets[]; };
 layout(std430, binding = ML_SSBO_LIGHT_INDICES) readonly buffer LightIndices { uint lightIndices[]; };
 
+// The list a shaded point reads: its cluster's, or with --normal-cones (ML_NORMAL_CONES, deferred
+// and visibility only) the one of its (cluster, view-space normal bin) key. Needs normal_bins.
+uint clusterListKey(uint cluster, vec3 worldNormal) {
+#if defined(ML_NORMAL_CONES)
+    return cluster * uint(ML_NORMAL_BINS) + normalBin(normalize(mat3(u_view) * worldNormal));
+#else
+    return cluster;
+#endif
+}
+
 // First list entry and entry count of a cluster. Capped lists (the seeds' baseline) live at
 // cluster * cap and hold at most cap entries; the rest were dropped and counted.
 uvec2 clusterListRange(uint cluster) {
@@ -13,7 +23,7 @@ uvec2 clusterListRange(uint cluster) {
 }
 
 vec3 shadeClusterLights(SurfacePoint s, vec3 viewDir, uint cluster) {
-    uvec2 range = clusterListRange(cluster);
+    uvec2 range = clusterListRange(clusterListKey(cluster, s.normal));
     vec3 color = vec3(0.0);
     for (uint k = 0u; k < range.y; ++k) {
         Light l = lights[lightIndices[range.x + k]];

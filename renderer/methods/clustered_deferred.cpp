@@ -6,16 +6,18 @@
 namespace ml {
 
 namespace {
-gl::Program lightingProgram(Resolve resolve) {
-    if (resolve == Resolve::Compute) return gl::Program::compute("deferred_lighting.comp");
-    return gl::Program("deferred.lighting", {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "deferred_lighting.frag"}});
+gl::Program lightingProgram(Resolve resolve, const ClusteringSettings& clustering) {
+    const shaders::Defines defines = deferredLightingDefines(clustering);
+    if (resolve == Resolve::Compute) return gl::Program::compute("deferred_lighting.comp", defines);
+    return gl::Program("deferred.lighting", {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "deferred_lighting.frag"}},
+                       defines);
 }
 }  // namespace
 
 ClusteredDeferred::ClusteredDeferred(const ClusteringSettings& settings, Resolve resolve)
     : resolve_(resolve),
       gbufferProgram_("deferred.gbuffer", {{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "gbuffer.frag"}}),
-      lightingProgram_(lightingProgram(resolve)),
+      lightingProgram_(lightingProgram(resolve, settings)),
       clustering_(settings) {
     GLuint vao = 0;
     glCreateVertexArrays(1, &vao);
@@ -40,7 +42,7 @@ void ClusteredDeferred::render(const FrameContext& ctx) {
         ctx.scene.draw(gbufferProgram_);
         glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
     }
-    clustering_.build(ctx);
+    clustering_.build(ctx, &gbuffer_.normal());
     {
         auto pass = ctx.timer.pass(resolve_ == Resolve::Compute ? "deferred.lighting-compute" : "deferred.lighting-fragment");
         bindDeferredLightingInputs(gbuffer_, ctx, clustering_);

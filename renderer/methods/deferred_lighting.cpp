@@ -4,6 +4,11 @@
 
 namespace ml {
 
+shaders::Defines deferredLightingDefines(const ClusteringSettings& clustering) {
+    if (clustering.normalCones) return {{"ML_NORMAL_CONES", "1"}};
+    return {};
+}
+
 void bindDeferredLightingInputs(const GBuffer& gbuffer, const FrameContext& ctx, const ClusteredLighting& clustering) {
     gbuffer.bindForReading();
     glBindTextureUnit(ML_TEX_DEPTH, ctx.targets.depth().id());
