@@ -2,8 +2,9 @@
 // --normal-cones: which normal bins (include/normal_bins.glsl) each cluster's visible samples
 // occupy, and per occupied (cluster, bin) list the cone of its samples' normals, in two phases
 // over the pixels (u_phase):
-//   0: set the cluster's bit of every bin whose (widened) cone holds the sample's normal, and
-//      add the normal to each such list's sum (fixed point);
+//   0: set the cluster's bit of the sample's bin (and of the bins the normal, nudged by 1e-4
+//      along each axis, falls in: the resolve's rounding may pick those), and add the normal to
+//      each such list's sum (fixed point);
 //   1: with the list's axis (its normalised sum), raise the list's 1 - cos(angle to the axis).
 // A wall's cluster gets a cone of about zero width around the wall's normal, so lights behind
 // the wall's plane drop out; a cluster holding a corner keeps a bin per wall. The cluster is
@@ -22,8 +23,6 @@ layout(std430, binding = ML_SSBO_NORMAL_BIN_MASKS) buffer NormalBinMasks { uint 
 layout(std430, binding = ML_SSBO_NORMAL_CONES) buffer NormalCones { ivec4 normalCones[]; };  // xyz: normal sum, w: 1 - min cos (float bits)
 uniform uint u_phase;
 
-shared vec4 s_bins[ML_NORMAL_BINS];  // axis, cosine of the (widened) half-angle
-
 void addToList(uint key, vec3 n) {
     if (u_phase == 0u) {
         ivec3 q = ivec3(round(n * ML_NORMAL_SUM_SCALE));
@@ -37,13 +36,6 @@ void addToList(uint key, vec3 n) {
 }
 
 void main() {
-    uint local = gl_LocalInvocationIndex;
-    for (uint b = local; b < uint(ML_NORMAL_BINS); b += uint(ML_SCREEN_TILE * ML_SCREEN_TILE)) {
-        vec4 cone = normalBinCone(b);
-        s_bins[b] = vec4(cone.xyz, cos(cone.w));
-    }
-    barrier();
-
     ivec2 p = ivec2(gl_GlobalInvocationID.xy);
     if (any(greaterThanEqual(p, ivec2(u_viewport.xy)))) return;
     float depth = texelFetch(u_depth, p, 0).r;
@@ -53,8 +45,11 @@ void main() {
     viewPos /= viewPos.w;
     vec3 n = normalize(mat3(u_view) * normalize(texelFetch(u_gNormal, p, 0).xyz));
     uint mask = 1u << normalBin(n);
-    for (uint b = 0u; b < uint(ML_NORMAL_BINS); ++b)
-        if (dot(n, s_bins[b].xyz) >= s_bins[b].w) mask |= 1u << b;
+    for (int axis = 0; axis < 3; ++axis) {
+        vec3 nudge = vec3(0.0);
+        nudge[axis] = 1e-4;
+        mask |= (1u << normalBin(normalize(n + nudge))) | (1u << normalBin(normalize(n - nudge)));
+    }
     float viewDepth = -viewPos.z;
     uint c0 = clusterForFragment(vec2(p) + 0.5, viewDepth * (1.0 - 1e-5));
     uint c1 = clusterForFragment(vec2(p) + 0.5, viewDepth * (1.0 + 1e-5));

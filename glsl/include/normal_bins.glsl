@@ -1,7 +1,7 @@
-// --normal-cones (Olsson et al. 2012, "Clustered deferred and forward shading", section 4.5):
+// --normal-cones (Olsson et al. 2012, "Clustered deferred and forward shading", normal cones):
 // view-space normal directions quantised on a cube. Each face (+x, -x, +y, -y, +z, -z) is cut
-// into ML_NORMAL_BIN_CELLS^2 cells; a bin is the cone from the centre of the sphere through its
-// cell, axis through the cell's centre, half-angle to the cell's widest corner.
+// into ML_NORMAL_BIN_CELLS^2 cells, a bin each. A bin is only a key: what the assignment tests
+// is each (cluster, bin) list's own cone, around the normals its samples actually have.
 
 // Bin of a unit view-space normal.
 uint normalBin(vec3 n) {
@@ -13,30 +13,6 @@ uint normalBin(vec3 n) {
     uvec2 cell = uvec2(clamp(floor((uv * 0.5 + 0.5) * cells), vec2(0.0), vec2(cells - 1.0)));
     uint face = axis * 2u + (major < 0.0 ? 1u : 0u);
     return (face * uint(ML_NORMAL_BIN_CELLS) + cell.y) * uint(ML_NORMAL_BIN_CELLS) + cell.x;
-}
-
-// A direction on the bin's cube face at (u, v) in [-1, 1]^2.
-vec3 normalBinDirection(uint face, vec2 uv) {
-    uint axis = face / 2u;
-    vec3 d;
-    d[axis] = (face & 1u) != 0u ? -1.0 : 1.0;
-    d[(axis + 1u) % 3u] = uv.x;
-    d[(axis + 2u) % 3u] = uv.y;
-    return normalize(d);
-}
-
-// xyz: the bin's axis; w: its half-angle in radians, widened by a milliradian so rounding in
-// the normal (16-bit G-buffer, the view rotation) can never leave the cone of its own bin.
-vec4 normalBinCone(uint bin) {
-    uint cellsPerFace = uint(ML_NORMAL_BIN_CELLS * ML_NORMAL_BIN_CELLS);
-    uint face = bin / cellsPerFace, cell = bin % cellsPerFace;
-    float step = 2.0 / float(ML_NORMAL_BIN_CELLS);
-    vec2 lo = vec2(float(cell % uint(ML_NORMAL_BIN_CELLS)), float(cell / uint(ML_NORMAL_BIN_CELLS))) * step - 1.0;
-    vec2 hi = lo + step;
-    vec3 axis = normalBinDirection(face, (lo + hi) * 0.5);
-    float cosHalf = min(min(dot(axis, normalBinDirection(face, lo)), dot(axis, normalBinDirection(face, hi))),
-                        min(dot(axis, normalBinDirection(face, vec2(lo.x, hi.y))), dot(axis, normalBinDirection(face, vec2(hi.x, lo.y)))));
-    return vec4(axis, acos(clamp(cosHalf, -1.0, 1.0)) + 1e-3);
 }
 
 // The axis of a list's normal cone from its fixed-point normal sum (the +z axis when the

@@ -13,9 +13,6 @@
 namespace ml::test {
 namespace {
 
-constexpr double kMaxAbs8Bit = 1.0 / 255.0 + 1e-9;
-constexpr double kMinPsnrDb = 50.0;
-
 struct SceneCase {
     const char* scene;
     std::uint32_t lights;
@@ -41,8 +38,7 @@ TEST_P(CullModes, EveryTestWithEveryMethodMatchesNaive) {
     FrameSettings s = smallFrame(t.scene, 160, 90);
     FrameRenderer renderer(t.scene, t.lights, s);
     renderer.render(frame);
-    const FloatImage referenceHdr = renderer.readHdr();
-    const RgbaImage referenceLdr = renderer.readLdr();
+    const ReferenceFrame reference = readReference(renderer);
 
     for (const MethodVariant& v : kClusteredMethods) {
         for (CullMode cull : {CullMode::Aabb, CullMode::Sphere, CullMode::Cone}) {
@@ -56,13 +52,7 @@ TEST_P(CullModes, EveryTestWithEveryMethodMatchesNaive) {
                 renderer.setMethod(m);
                 renderer.render(frame);
                 const std::string label = std::string(v.name) + " cull " + cullModeName(cull) + " " + assignModeName(assign);
-                const ImageDifference hdr = compareImages(renderer.readHdr(), referenceHdr);
-                const RgbaImage ldr = renderer.readLdr();
-                const ImageDifference ldrDiff = compareImages(ldr, referenceLdr);
-                std::printf("%-44s max8 %.4f  psnr %.1f dB\n", label.c_str(), ldrDiff.maxAbs * 255.0, hdr.psnrDb);
-                EXPECT_LE(ldrDiff.maxAbs, kMaxAbs8Bit)
-                    << label << ": images in " << writeFailureImages(std::string(c.scene) + "-" + label, ldr, referenceLdr);
-                EXPECT_GE(hdr.psnrDb, kMinPsnrDb) << label;
+                expectWithinContract(renderer, reference, label, std::string(c.scene) + "-" + label);
                 EXPECT_EQ(renderer.method().clustering()->statistics().droppedReferences, 0u) << label;
             }
         }

@@ -68,6 +68,19 @@ FrameSettings smallFrame(const Scene& scene, int width, int height) {
     return s;
 }
 
+ReferenceFrame readReference(const FrameRenderer& renderer) { return {renderer.readHdr(), renderer.readLdr()}; }
+
+ImageDifference expectWithinContract(const FrameRenderer& renderer, const ReferenceFrame& reference, const std::string& label,
+                                     const std::string& imageName) {
+    const ImageDifference hdr = compareImages(renderer.readHdr(), reference.hdr);
+    const RgbaImage ldr = renderer.readLdr();
+    const ImageDifference ldrDiff = compareImages(ldr, reference.ldr);
+    std::printf("%-50s max8 %.4f  psnr %.1f dB\n", label.c_str(), ldrDiff.maxAbs * 255.0, hdr.psnrDb);
+    EXPECT_LE(ldrDiff.maxAbs, kContractMaxAbs8Bit) << label << ": images in " << writeFailureImages(imageName, ldr, reference.ldr);
+    EXPECT_GE(hdr.psnrDb, kContractMinPsnrDb) << label;
+    return hdr;
+}
+
 int runManylights(const std::string& args, std::string& output, const std::string& workingDir, const std::string& wrapper) {
     const std::string cd = workingDir.empty() ? "" : "cd \"" + workingDir + "\" && ";
     const std::string prefix = wrapper.empty() ? "" : wrapper + " ";

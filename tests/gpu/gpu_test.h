@@ -40,6 +40,24 @@ TestScene testScene(const std::string& name, std::uint32_t count, std::uint32_t 
 // Frame settings for a scene at a small size, the scene's suggested camera, clip planes fitted.
 FrameSettings smallFrame(const Scene& scene, int width, int height);
 
+// The accuracy contract against naive (design.md): max 1/255 on the 8-bit output, PSNR >= 50 dB
+// on the float output.
+inline constexpr double kContractMaxAbs8Bit = 1.0 / 255.0 + 1e-9;
+inline constexpr double kContractMinPsnrDb = 50.0;
+
+// The reference frame a renderer's output is held to.
+struct ReferenceFrame {
+    FloatImage hdr;
+    RgbaImage ldr;
+};
+ReferenceFrame readReference(const FrameRenderer& renderer);
+
+// Compares the renderer's current frame with the reference, prints one line ("label max8 ...
+// psnr ..."), and fails the test (writing the images under `imageName`) when the frame breaks
+// the contract. Returns the float-output difference.
+ImageDifference expectWithinContract(const FrameRenderer& renderer, const ReferenceFrame& reference, const std::string& label,
+                                     const std::string& imageName);
+
 // Runs the manylights executable with `args` (a shell-quoted string) in `workingDir` (if not
 // empty), behind `wrapper` if given (e.g. "xvfb-run -a", "env -u DISPLAY"); returns the exit
 // status, output (stdout and stderr together) in `output`.

@@ -27,6 +27,14 @@ GridSetup makeGridSetup() {
     return s;
 }
 
+// A random cluster of the grid, its centre and its diagonal.
+struct PickedCluster {
+    ClusterFrustum volume;
+    glm::vec3 centre;
+    float size;
+};
+PickedCluster pickCluster(const GridSetup& s, std::mt19937& rng);
+
 // A point of the volume from (u, v, w) in [0, 1]^3: trilinear over the corners (the volume's
 // faces are planar, so this stays inside it).
 glm::vec3 pointIn(const ClusterFrustum& f, float u, float v, float w) {
@@ -35,15 +43,24 @@ glm::vec3 pointIn(const ClusterFrustum& f, float u, float v, float w) {
     return glm::mix(near, far, w);
 }
 
+PickedCluster pickCluster(const GridSetup& s, std::mt19937& rng) {
+    const std::uint32_t x = rng() % s.grid.tilesX, y = rng() % s.grid.tilesY, slice = rng() % s.grid.slices;
+    PickedCluster p;
+    p.volume = clusterFrustum(s.grid, s.slicing, 0.5f, 40.0f, s.projection, s.width, s.height, x, y, slice);
+    p.centre = pointIn(p.volume, 0.5f, 0.5f, 0.5f);
+    p.size = glm::length(p.volume.corners[7] - p.volume.corners[0]);
+    return p;
+}
+
 TEST(ClusterCulling, ExactDistanceMatchesBruteForce) {
     const GridSetup s = makeGridSetup();
     std::mt19937 rng(7);
     std::uniform_real_distribution<float> unit(0.0f, 1.0f);
     for (int trial = 0; trial < 200; ++trial) {
-        const std::uint32_t x = rng() % s.grid.tilesX, y = rng() % s.grid.tilesY, slice = rng() % s.grid.slices;
-        const ClusterFrustum f = clusterFrustum(s.grid, s.slicing, 0.5f, 40.0f, s.projection, s.width, s.height, x, y, slice);
-        const glm::vec3 centre = pointIn(f, 0.5f, 0.5f, 0.5f);
-        const float size = glm::length(f.corners[7] - f.corners[0]);
+        const PickedCluster picked = pickCluster(s, rng);
+        const ClusterFrustum& f = picked.volume;
+        const glm::vec3 centre = picked.centre;
+        const float size = picked.size;
         const glm::vec3 p = centre + size * 2.0f * glm::vec3(unit(rng) - 0.5f, unit(rng) - 0.5f, unit(rng) - 0.5f);
         const float exact = distanceToCluster(f, p);
         float brute = std::numeric_limits<float>::max();
@@ -62,10 +79,10 @@ TEST(ClusterCulling, NoTestRejectsASphereThatReachesTheCluster) {
     std::uniform_real_distribution<float> unit(0.0f, 1.0f);
     std::size_t reaching = 0, passed[3] = {0, 0, 0}, total = 0;
     for (int trial = 0; trial < 20000; ++trial) {
-        const std::uint32_t x = rng() % s.grid.tilesX, y = rng() % s.grid.tilesY, slice = rng() % s.grid.slices;
-        const ClusterFrustum f = clusterFrustum(s.grid, s.slicing, 0.5f, 40.0f, s.projection, s.width, s.height, x, y, slice);
-        const glm::vec3 centre = pointIn(f, 0.5f, 0.5f, 0.5f);
-        const float size = glm::length(f.corners[7] - f.corners[0]);
+        const PickedCluster picked = pickCluster(s, rng);
+        const ClusterFrustum& f = picked.volume;
+        const glm::vec3 centre = picked.centre;
+        const float size = picked.size;
         const glm::vec3 c = centre + size * 6.0f * glm::vec3(unit(rng) - 0.5f, unit(rng) - 0.5f, unit(rng) - 0.5f);
         const float r = size * (0.05f + 3.0f * unit(rng));
         const bool reaches = distanceToCluster(f, c) < r;
