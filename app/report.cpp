@@ -49,7 +49,7 @@ void printCullAccuracy(const ClusterStatistics& s, const CullAccuracy& a) {
     std::printf("cull %s: %llu references, of which %llu (%.1f %%) reach no point of their cluster (exact sphere-frustum distance",
                 s.cull.c_str(), static_cast<unsigned long long>(a.references), static_cast<unsigned long long>(a.falsePositives),
                 a.references ? 100.0 * a.falsePositives / a.references : 0.0);
-    if (a.clusterStride > 1) std::printf("; sampled: every %u-th cluster, %u of %u", a.clusterStride, a.clustersExamined, s.clusters);
+    if (a.clusterStride > 1) std::printf("; sampled: one cluster in %u, %u of %u", a.clusterStride, a.clustersExamined, s.clusters);
     std::printf(")\n");
 }
 

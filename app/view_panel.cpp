@@ -130,16 +130,17 @@ void gridSection(ViewSettings& s, PanelEdits& edits) {
         c.maxPerCluster = static_cast<std::uint32_t>(cap);
     }
     if (ImGui::Checkbox("active clusters only", &c.activeOnly)) edits.method = true;
+    // Normal bins need a normal before shading (deferred, visibility) and uncapped lists.
+    const bool gbufferLit = s.method.kind == MethodKind::Deferred || s.method.kind == MethodKind::Visibility;
+    ImGui::SameLine();
+    ImGui::BeginDisabled(!gbufferLit || c.assign == AssignMode::Capped);
+    if (ImGui::Checkbox("normal cones", &c.normalCones)) edits.method = true;
+    ImGui::EndDisabled();
     int cull = static_cast<int>(c.cull);
     if (comboOf("cull test", cull, {cullModeName(CullMode::Aabb), cullModeName(CullMode::Sphere), cullModeName(CullMode::Cone)})) {
         c.cull = static_cast<CullMode>(cull);
         edits.method = true;
     }
-    // Normal bins need a normal before shading (deferred, visibility) and uncapped lists.
-    const bool gbufferLit = s.method.kind == MethodKind::Deferred || s.method.kind == MethodKind::Visibility;
-    ImGui::BeginDisabled(!gbufferLit || c.assign == AssignMode::Capped);
-    if (ImGui::Checkbox("normal cones", &c.normalCones)) edits.method = true;
-    ImGui::EndDisabled();
     if (c.normalCones && !gbufferLit) ImGui::TextColored(kDim, "normal cones: off for %s (no normal before shading)", methodName(s.method.kind).c_str());
     ImGui::EndDisabled();
 }

@@ -33,12 +33,10 @@ class CullModes : public GpuTest, public ::testing::WithParamInterface<SceneCase
 
 TEST_P(CullModes, EveryTestWithEveryMethodMatchesNaive) {
     const SceneCase c = GetParam();
-    const TestScene t = testScene(c.scene, c.lights, 5, c.lights >= 1024 ? 0.5f : 1.0f);
-    const std::uint32_t frame = 45;
-    FrameSettings s = smallFrame(t.scene, 160, 90);
-    FrameRenderer renderer(t.scene, t.lights, s);
-    renderer.render(frame);
-    const ReferenceFrame reference = readReference(renderer);
+    NaiveReferenceScene run(c.scene, c.lights);
+    FrameRenderer& renderer = run.renderer;
+    const std::uint32_t frame = run.frame;
+    const ReferenceFrame& reference = run.reference;
 
     for (const MethodVariant& v : kClusteredMethods) {
         for (CullMode cull : {CullMode::Aabb, CullMode::Sphere, CullMode::Cone}) {

@@ -81,6 +81,14 @@ ImageDifference expectWithinContract(const FrameRenderer& renderer, const Refere
     return hdr;
 }
 
+NaiveReferenceScene::NaiveReferenceScene(const char* scene, std::uint32_t lights, std::uint32_t frameIndex)
+    : test(testScene(scene, lights, 5, lights >= 1024 ? 0.5f : 1.0f)),
+      renderer(test.scene, test.lights, smallFrame(test.scene, 160, 90)),
+      frame(frameIndex) {
+    renderer.render(frame);
+    reference = readReference(renderer);
+}
+
 int runManylights(const std::string& args, std::string& output, const std::string& workingDir, const std::string& wrapper) {
     const std::string cd = workingDir.empty() ? "" : "cd \"" + workingDir + "\" && ";
     const std::string prefix = wrapper.empty() ? "" : wrapper + " ";

@@ -58,6 +58,16 @@ ReferenceFrame readReference(const FrameRenderer& renderer);
 ImageDifference expectWithinContract(const FrameRenderer& renderer, const ReferenceFrame& reference, const std::string& label,
                                      const std::string& imageName);
 
+// A test scene (seed 5; radius halved from 1024 lights up) rendered by naive forward at 160x90
+// on one frame: the reference the methods rendered by `renderer` next are held to.
+struct NaiveReferenceScene {
+    NaiveReferenceScene(const char* scene, std::uint32_t lights, std::uint32_t frameIndex = 45);
+    TestScene test;
+    FrameRenderer renderer;
+    std::uint32_t frame;
+    ReferenceFrame reference;
+};
+
 // Runs the manylights executable with `args` (a shell-quoted string) in `workingDir` (if not
 // empty), behind `wrapper` if given (e.g. "xvfb-run -a", "env -u DISPLAY"); returns the exit
 // status, output (stdout and stderr together) in `output`.

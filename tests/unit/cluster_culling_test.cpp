@@ -32,6 +32,11 @@ struct PickedCluster {
     ClusterFrustum volume;
     glm::vec3 centre;
     float size;
+    // A random point in a cube `spread` diagonals wide around the centre.
+    glm::vec3 pointAround(float spread, std::mt19937& rng) const {
+        std::uniform_real_distribution<float> offset(-0.5f, 0.5f);
+        return centre + size * spread * glm::vec3(offset(rng), offset(rng), offset(rng));
+    }
 };
 PickedCluster pickCluster(const GridSetup& s, std::mt19937& rng);
 
@@ -55,13 +60,11 @@ PickedCluster pickCluster(const GridSetup& s, std::mt19937& rng) {
 TEST(ClusterCulling, ExactDistanceMatchesBruteForce) {
     const GridSetup s = makeGridSetup();
     std::mt19937 rng(7);
-    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
     for (int trial = 0; trial < 200; ++trial) {
         const PickedCluster picked = pickCluster(s, rng);
         const ClusterFrustum& f = picked.volume;
-        const glm::vec3 centre = picked.centre;
         const float size = picked.size;
-        const glm::vec3 p = centre + size * 2.0f * glm::vec3(unit(rng) - 0.5f, unit(rng) - 0.5f, unit(rng) - 0.5f);
+        const glm::vec3 p = picked.pointAround(2.0f, rng);
         const float exact = distanceToCluster(f, p);
         float brute = std::numeric_limits<float>::max();
         constexpr int n = 24;
@@ -81,10 +84,8 @@ TEST(ClusterCulling, NoTestRejectsASphereThatReachesTheCluster) {
     for (int trial = 0; trial < 20000; ++trial) {
         const PickedCluster picked = pickCluster(s, rng);
         const ClusterFrustum& f = picked.volume;
-        const glm::vec3 centre = picked.centre;
-        const float size = picked.size;
-        const glm::vec3 c = centre + size * 6.0f * glm::vec3(unit(rng) - 0.5f, unit(rng) - 0.5f, unit(rng) - 0.5f);
-        const float r = size * (0.05f + 3.0f * unit(rng));
+        const glm::vec3 c = picked.pointAround(6.0f, rng);
+        const float r = picked.size * (0.05f + 3.0f * unit(rng));
         const bool reaches = distanceToCluster(f, c) < r;
         reaching += reaches;
         ++total;
