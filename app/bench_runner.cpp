@@ -8,6 +8,7 @@
 
 #include "app/sample_spread.h"
 #include "renderer/clustering/clustered_lighting.h"
+#include "renderer/clustering/cull_accuracy.h"
 #include "renderer/gl/debug_output.h"
 #include "renderer/gl/gl_api.h"
 #include "renderer/image_compare.h"
@@ -91,6 +92,8 @@ BenchRow configColumns(const BenchPoint& p, int index, std::uint32_t frame, cons
     row["assign"] = clustered(o.assign);
     row["max_per_cluster"] = p.capped ? nlohmann::ordered_json(o.maxPerCluster) : nlohmann::ordered_json();
     row["active_only"] = clustered(o.activeOnly);
+    row["cull"] = clustered(o.cull);
+    row["normal_cones"] = p.gbufferLit && !p.capped ? nlohmann::ordered_json(o.normalCones) : nlohmann::ordered_json();
     row["gbuffer"] = p.deferred ? nlohmann::ordered_json(p.gbuffer) : nlohmann::ordered_json();
     row["resolve"] = p.deferred ? nlohmann::ordered_json(o.resolve) : nlohmann::ordered_json();
     row["workgroup"] = clustered(o.workgroup);
@@ -275,6 +278,11 @@ void BenchRunner::measureInto(BenchRow& row, const BenchPoint& point) {
         row["mean_lights_per_nonempty_cluster"] = s.meanLightsPerNonEmptyCluster;
         row["max_lights_per_cluster"] = s.maxLightsPerCluster;
         row["list_entries"] = s.listEntries;
+        // Sampled to 200,000 references: a CPU pass, outside the timed frames.
+        const CullAccuracy cull = measureCullAccuracy(*clustering, renderer_->lights().downloadAnimated(), renderer_->uniforms(), 200'000);
+        row["false_positive_share"] = cull.references ? double(cull.falsePositives) / double(cull.references) : 0.0;
+        row["normal_cone_pairs_removed"] = s.listsPerCluster > 1 ? nlohmann::ordered_json(s.normalConePairs - s.normalConePairsKept)
+                                                                 : nlohmann::ordered_json();
         row["overflow_clusters"] = s.overflowClusters;
         row["dropped_lights"] = s.droppedReferences;
         row["active_clusters"] = s.activeOnly ? nlohmann::ordered_json(s.activeClusters) : nlohmann::ordered_json();

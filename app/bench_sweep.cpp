@@ -86,7 +86,7 @@ RadiusSpec asRadius(const json& v) {
 // ---- scene, a light set and a naive reference; method-level axes innermost.
 
 enum class ValueKind { Text, Integer, Number, Boolean, Radius, NumberOrAuto };
-enum class Applies { Always, Clustered, Deferred, Capped };
+enum class Applies { Always, Clustered, Deferred, Capped, GBufferLit };
 
 struct AxisDef {
     SweepAxis info;
@@ -155,6 +155,7 @@ const std::vector<AxisDef>& axisDefs() {
              p.frame.method = v.get<std::string>();
              p.clustered = kind != MethodKind::Naive;
              p.deferred = kind == MethodKind::Deferred;
+             p.gbufferLit = kind == MethodKind::Deferred || kind == MethodKind::Visibility;
          }},
         {{"gbuffer", "--gbuffer", "G-buffer layout of deferred (standard: three RGBA16F targets)"}, ValueKind::Text,
          Applies::Deferred,
@@ -183,7 +184,7 @@ const std::vector<AxisDef>& axisDefs() {
         {{"tiles_x", "--tiles-x", "tiles across the screen (tiles down follow, square)"}, ValueKind::Integer,
          Applies::Clustered,
          [](BenchPoint& p, const json& v) { p.frame.tilesX = static_cast<unsigned>(asInteger(v, 1, 1024)); }},
-        {{"assign", "--assign", "exact (count, scan, fill), capped (fixed lists) or zbin (sorted lights, z-bins, tile masks)"}, ValueKind::Text, Applies::Clustered,
+        {{"assign", "--assign", "exact (count, scan, fill), capped (fixed lists) per-cluster (one invocation per cluster over all lights) or zbin (sorted lights, z-bins, tile masks)"}, ValueKind::Text, Applies::Clustered,
          [](BenchPoint& p, const json& v) {
              p.capped = parseAssignMode(asText(v)) == AssignMode::Capped;
              p.frame.assign = v.get<std::string>();
@@ -199,6 +200,13 @@ const std::vector<AxisDef>& axisDefs() {
          }},
         {{"active_only", "--active-only", "assign only to clusters holding a visible sample: on, off"},
          ValueKind::Boolean, Applies::Clustered, [](BenchPoint& p, const json& v) { p.frame.activeOnly = asBoolean(v); }},
+        {{"cull", "--cull", "light-vs-cluster test: aabb, sphere, cone"}, ValueKind::Text, Applies::Clustered,
+         [](BenchPoint& p, const json& v) {
+             (void)parseCullMode(asText(v));
+             p.frame.cull = v.get<std::string>();
+         }},
+        {{"normal_cones", "--normal-cones", "deferred and visibility, exact lists: lists per (cluster, normal bin): on, off"},
+         ValueKind::Boolean, Applies::GBufferLit, [](BenchPoint& p, const json& v) { p.frame.normalCones = asBoolean(v); }},
     };
     return defs;
 }
@@ -221,6 +229,7 @@ bool applies(const AxisDef& axis, const BenchPoint& p) {
     case Applies::Clustered: return p.clustered;
     case Applies::Deferred: return p.deferred;
     case Applies::Capped: return p.capped;
+    case Applies::GBufferLit: return p.gbufferLit && !p.capped;
     }
     return true;
 }
@@ -298,6 +307,8 @@ std::string describePoint(const BenchPoint& p) {
         if (p.capped) s += " cap " + std::to_string(o.maxPerCluster);
         s += ", wg " + std::to_string(o.workgroup);
         if (o.activeOnly) s += ", active only";
+        if (o.cull != FrameOptions{}.cull) s += ", cull " + o.cull;
+        if (o.normalCones) s += ", normal cones";
     }
     if (p.deferred) s += ", " + o.resolve + " resolve, " + p.gbuffer + " G-buffer";
     return s;
@@ -437,7 +448,7 @@ Sweep expandSweep(const json& doc, const json& overrides, const std::vector<std:
             BenchPoint p;
             p.experiment = name;
             p.frame.method = "deferred";
-            p.clustered = p.deferred = true;
+            p.clustered = p.deferred = p.gbufferLit = true;
             json key = json::object();
             for (std::size_t i = 0; i < axes.size(); ++i) {
                 const json& v = axes[i].second[digit[i]];
@@ -457,9 +468,11 @@ Sweep expandSweep(const json& doc, const json& overrides, const std::vector<std:
                 const FrameOptions d;
                 p.frame.tilesX = d.tilesX, p.frame.slices = d.slices, p.frame.slicing = d.slicing;
                 p.frame.workgroup = d.workgroup, p.frame.assign = d.assign, p.frame.activeOnly = d.activeOnly;
+                p.frame.cull = d.cull;
                 p.capped = false;
             }
             if (!p.capped) p.frame.maxPerCluster = FrameOptions{}.maxPerCluster;
+            if (!p.gbufferLit || p.capped) p.frame.normalCones = false;
             if (!p.deferred) p.frame.resolve = FrameOptions{}.resolve, p.gbuffer = BenchPoint{}.gbuffer;
             for (std::size_t i = 0; i < axes.size(); ++i)
                 if (applies(*axes[i].first, p)) key[axes[i].first->info.key] = axes[i].second[digit[i]];

@@ -63,6 +63,7 @@ struct BenchPoint {
     std::string gbuffer = "standard";
     bool clustered = false;   // forward-plus or deferred: the grid axes apply
     bool deferred = false;    // resolve and gbuffer apply
+    bool gbufferLit = false;  // deferred or visibility: normal_cones applies
     bool capped = false;      // max_per_cluster applies
 };
 

@@ -37,7 +37,11 @@ int runRender(const RenderOptions& o) {
     if (o.frame.time) printPassTimes(times, frame.settings.clock);
     const ClusteredLighting* clustering = renderer.method().clustering();
     if (o.stats) {
-        if (clustering) printClusterStatistics(clustering->statistics());
+        if (clustering) {
+            const ClusterStatistics stats = clustering->statistics();
+            printClusterStatistics(stats);
+            printCullAccuracy(stats, measureCullAccuracy(*clustering, renderer.lights().downloadAnimated(), renderer.uniforms()));
+        }
         else std::printf("stats: naive shading builds no light lists (every fragment loops over all %zu lights)\n",
                          frame.lights.size());
     }

@@ -42,11 +42,26 @@ void printClusterStatistics(const ClusterStatistics& s) {
     std::printf("lights per cluster: mean %.2f (non-empty: %.2f), max %u\n", s.meanLightsPerCluster,
                 s.meanLightsPerNonEmptyCluster, s.maxLightsPerCluster);
     std::printf("list entries: %llu\n", static_cast<unsigned long long>(s.listEntries));
+    if (s.listsPerCluster > 1) {
+        const std::uint64_t removed = s.normalConePairs - s.normalConePairsKept;
+        std::printf("normal cones: lists per (cluster, normal bin), %u bins; of %llu light-cluster pairs in clusters with a visible "
+                    "sample, %llu (%.1f %%) face away from every occupied bin and are removed; shares and means above are per list\n",
+                    s.listsPerCluster, static_cast<unsigned long long>(s.normalConePairs), static_cast<unsigned long long>(removed),
+                    s.normalConePairs ? 100.0 * removed / s.normalConePairs : 0.0);
+    }
     std::printf("overflow: %u clusters over the cap, %llu light references dropped\n", s.overflowClusters,
                 static_cast<unsigned long long>(s.droppedReferences));
     if (s.activeOnly) std::printf("active clusters: %u (%.1f %%)\n", s.activeClusters, 100.0 * s.activeClusters / std::max(1u, s.clusters));
     else std::printf("active clusters: not computed (use --active-only)\n");
     std::printf("memory: light lists %.2f MiB, grid %.2f MiB\n", s.listBytes / 1048576.0, s.gridBytes / 1048576.0);
+}
+
+void printCullAccuracy(const ClusterStatistics& s, const CullAccuracy& a) {
+    std::printf("cull %s: %llu references, of which %llu (%.1f %%) reach no point of their cluster (exact sphere-frustum distance",
+                s.cull.c_str(), static_cast<unsigned long long>(a.references), static_cast<unsigned long long>(a.falsePositives),
+                a.references ? 100.0 * a.falsePositives / a.references : 0.0);
+    if (a.clusterStride > 1) std::printf("; sampled: one cluster in %u, %u of %u", a.clusterStride, a.clustersExamined, s.clusters);
+    std::printf(")\n");
 }
 
 void writeJsonFile(const std::string& path, const nlohmann::json& doc) {

@@ -5,6 +5,7 @@
 
 #include "app/frame_options.h"
 #include "renderer/clustering/cluster_statistics.h"
+#include "renderer/clustering/cull_accuracy.h"
 #include "renderer/pass_timer.h"
 
 #include <nlohmann/json.hpp>
@@ -14,6 +15,8 @@ namespace ml::app {
 void printPassTimes(const std::vector<PassTime>& times, TimingClock clock);
 void printSceneSummary(const PreparedFrame& frame);
 void printClusterStatistics(const ClusterStatistics& stats);
+// "cull aabb: 548,302 references, of which 40.1 % reach no point of their cluster".
+void printCullAccuracy(const ClusterStatistics& stats, const CullAccuracy& accuracy);
 // Throws std::runtime_error naming the path.
 void writeJsonFile(const std::string& path, const nlohmann::json& doc);
 

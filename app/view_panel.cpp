@@ -120,7 +120,7 @@ void gridSection(ViewSettings& s, PanelEdits& edits) {
     }
     int assign = static_cast<int>(c.assign);
     if (comboOf("assignment", assign, {assignModeName(AssignMode::Exact), assignModeName(AssignMode::Capped),
-                                       assignModeName(AssignMode::ZBin)})) {
+                                       assignModeName(AssignMode::PerCluster), assignModeName(AssignMode::ZBin)})) {
         c.assign = static_cast<AssignMode>(assign);
         edits.method = true;
     }
@@ -130,6 +130,18 @@ void gridSection(ViewSettings& s, PanelEdits& edits) {
         c.maxPerCluster = static_cast<std::uint32_t>(cap);
     }
     if (ImGui::Checkbox("active clusters only", &c.activeOnly)) edits.method = true;
+    // Normal bins need a normal before shading (deferred, visibility) and uncapped lists.
+    const bool gbufferLit = s.method.kind == MethodKind::Deferred || s.method.kind == MethodKind::Visibility;
+    ImGui::SameLine();
+    ImGui::BeginDisabled(!gbufferLit || c.assign == AssignMode::Capped);
+    if (ImGui::Checkbox("normal cones", &c.normalCones)) edits.method = true;
+    ImGui::EndDisabled();
+    int cull = static_cast<int>(c.cull);
+    if (comboOf("cull test", cull, {cullModeName(CullMode::Aabb), cullModeName(CullMode::Sphere), cullModeName(CullMode::Cone)})) {
+        c.cull = static_cast<CullMode>(cull);
+        edits.method = true;
+    }
+    if (c.normalCones && !gbufferLit) ImGui::TextColored(kDim, "normal cones: off for %s (no normal before shading)", methodName(s.method.kind).c_str());
     ImGui::EndDisabled();
 }
 
@@ -192,7 +204,9 @@ void statisticsSection(const ViewStatistics& st) {
         ImGui::Text("empty clusters %.1f %%", 100.0 * c.emptyShare);
         ImGui::Text("lights per cluster: mean %.1f (non-empty %.1f), max %u", c.meanLightsPerCluster,
                     c.meanLightsPerNonEmptyCluster, c.maxLightsPerCluster);
-        ImGui::Text("list entries %llu", static_cast<unsigned long long>(c.listEntries));
+        ImGui::Text("list entries %llu (cull %s)", static_cast<unsigned long long>(c.listEntries), c.cull.c_str());
+        if (c.listsPerCluster > 1 && c.normalConePairs > 0)
+            ImGui::Text("normal cones: %.1f %% of light-cluster pairs removed", 100.0 * double(c.normalConePairs - c.normalConePairsKept) / double(c.normalConePairs));
         if (c.overflowClusters > 0)
             ImGui::TextColored(kWarning, "overflow: %u clusters over the cap,\n%llu light references dropped",
                                c.overflowClusters, static_cast<unsigned long long>(c.droppedReferences));
@@ -227,6 +241,8 @@ void keysSection() {
 MethodSettings effectiveMethod(const MethodSettings& chosen) {
     MethodSettings m = chosen;
     if (m.kind == MethodKind::Naive) m.clustering.view = DebugView::Shaded;
+    if ((m.kind != MethodKind::Deferred && m.kind != MethodKind::Visibility) || m.clustering.assign == AssignMode::Capped)
+        m.clustering.normalCones = false;
     return m;
 }
 

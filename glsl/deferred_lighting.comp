@@ -6,6 +6,7 @@
 #include "include/lights.glsl"
 #include "include/shading.glsl"
 #include "include/cluster_grid.glsl"
+#include "include/normal_bins.glsl"
 #include "include/cluster_lists.glsl"
 #include "include/debug_views.glsl"
 #include "include/deferred_resolve.glsl"

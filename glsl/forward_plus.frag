@@ -7,6 +7,7 @@
 #include "include/shading.glsl"
 #include "include/material.glsl"
 #include "include/cluster_grid.glsl"
+#include "include/normal_bins.glsl"
 #include "include/cluster_lists.glsl"
 #include "include/debug_views.glsl"
 

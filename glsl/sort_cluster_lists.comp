@@ -1,5 +1,5 @@
 #version 450 core
-// Sorts every cluster's light list by light index, one workgroup per cluster.
+// Sorts every light list by light index, one workgroup per list.
 // Why: the fill passes write lists through atomics, so their order changes from run to run,
 // and a float sum taken in a different order differs in its last bits. Sorted lists make the
 // shaded frame a pure function of the flags and the seed (byte-identical runs, issue 7).
@@ -12,6 +12,9 @@ layout(local_size_x = ML_SORT_WORKGROUP) in;
 layout(std430, binding = ML_SSBO_CLUSTER_COUNTS) readonly buffer ClusterCounts { uint clusterCounts[]; };
 layout(std430, binding = ML_SSBO_CLUSTER_OFFSETS) readonly buffer ClusterOffsets { uint clusterOffsets[]; };
 layout(std430, binding = ML_SSBO_LIGHT_INDICES) coherent buffer LightIndices { uint lightIndices[]; };
+
+// Lists to sort: one per cluster, or one per (cluster, normal bin) with --normal-cones.
+uniform uint u_listCount;
 
 shared uint s_list[ML_SORT_SHARED_CAPACITY];
 
@@ -71,12 +74,12 @@ void bitonicSortBuffer(uint first, uint n) {
 }
 
 void main() {
-    uint cluster = gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x;
-    if (cluster >= grid.dims.w) return;
+    uint list = gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x;
+    if (list >= u_listCount) return;
     // Capped lists live at cluster * cap and keep at most cap entries.
     uint cap = grid.options.y;
-    uint n = clusterCounts[cluster];
-    uint first = cap > 0u ? cluster * cap : clusterOffsets[cluster];
+    uint n = clusterCounts[list];
+    uint first = cap > 0u ? list * cap : clusterOffsets[list];
     if (cap > 0u) n = min(n, cap);
     if (n < 2u) return;
     if (n <= ML_SORT_WORKGROUP) rankSort(first, n);

@@ -41,6 +41,10 @@
 #define ML_SSBO_ZBIN_SORTED_LIGHTS 28  // light index at each sorted position
 #define ML_SSBO_ZBIN_SORTED_VIEW 29    // view-space centre and radius at each sorted position
 #define ML_SSBO_ZBIN_STATS 30          // --stats: lights walked and passing, per workgroup
+// --normal-cones (exact lists only, so never in the same frame as z-binning's passes). 30 is
+// shared with ML_SSBO_ZBIN_STATS: every pass binds what it reads before it runs.
+#define ML_SSBO_NORMAL_BIN_MASKS 31    // --normal-cones: per cluster, a bit per normal bin its visible samples fall in
+#define ML_SSBO_NORMAL_CONES 30        // --normal-cones: per (cluster, bin) list, the cone of its samples' normals
 
 // Texture units
 #define ML_TEX_BASE_COLOR 0
@@ -95,6 +99,19 @@
 #define ML_VIEW_ALBEDO 5
 #define ML_VIEW_NORMAL 6
 #define ML_VIEW_DEPTH 7
+
+// --cull: the light-vs-cluster test of the assignment (the ML_CULL define of its shaders).
+#define ML_CULL_AABB 0    // sphere against the cluster's view-space AABB
+#define ML_CULL_SPHERE 1  // sphere against the cluster's six frustum planes
+#define ML_CULL_CONE 2    // seed 001: the tile's cone against the sphere's, then spherical depth slices
+
+// --normal-cones (Olsson et al. 2012): view-space normal directions quantised on a cube, each
+// face cut into CELLS x CELLS cells; a cluster's lists are kept per (cluster, bin). 6 * 2 * 2
+// = 24 bins fit one uint mask per cluster.
+#define ML_NORMAL_BIN_CELLS 2
+#define ML_NORMAL_BINS 24
+// Sample normals are summed per list in fixed point, this many units per unit length.
+#define ML_NORMAL_SUM_SCALE 1024.0
 
 // Tonemap compute tile.
 #define ML_TONEMAP_TILE 8

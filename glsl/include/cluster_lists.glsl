@@ -5,6 +5,16 @@ layout(std430, binding = ML_SSBO_CLUSTER_COUNTS) readonly buffer ClusterCounts {
 layout(std430, binding = ML_SSBO_CLUSTER_OFFSETS) readonly buffer ClusterOffsets { uint clusterOffsets[]; };
 layout(std430, binding = ML_SSBO_LIGHT_INDICES) readonly buffer LightIndices { uint lightIndices[]; };
 
+// The list a shaded point reads: its cluster's, or with --normal-cones (ML_NORMAL_CONES, deferred
+// and visibility only) the one of its (cluster, view-space normal bin) key. Needs normal_bins.
+uint clusterListKey(uint cluster, vec3 worldNormal) {
+#if defined(ML_NORMAL_CONES)
+    return cluster * uint(ML_NORMAL_BINS) + normalBin(normalize(mat3(u_view) * worldNormal));
+#else
+    return cluster;
+#endif
+}
+
 #ifdef ML_ZBIN
 #include "include/zbin.glsl"
 
@@ -30,7 +40,7 @@ vec3 shadeClusterLights(SurfacePoint s, vec3 viewDir, uint cluster, float viewDe
 }
 
 // Lights a pixel shades (--view light-count): the set bits within its bin's range.
-uint clusterLightCount(uint cluster, float viewDepth) {
+uint clusterLightCount(uint cluster, vec3 worldNormal, float viewDepth) {
     uvec2 range = zbinRanges[zbinForDepth(viewDepth)];
     uint n = 0u;
     if (range.x <= range.y)
@@ -39,6 +49,7 @@ uint clusterLightCount(uint cluster, float viewDepth) {
 }
 
 #else
+
 // First list entry and entry count of a cluster. Capped lists (the seeds' baseline) live at
 // cluster * cap and hold at most cap entries; the rest were dropped and counted.
 uvec2 clusterListRange(uint cluster) {
@@ -48,9 +59,9 @@ uvec2 clusterListRange(uint cluster) {
     return uvec2(clusterOffsets[cluster], count);
 }
 
-// viewDepth is unused here: the cluster already says which lists apply.
+// viewDepth is unused here: the cluster (and normal bin) already say which list applies.
 vec3 shadeClusterLights(SurfacePoint s, vec3 viewDir, uint cluster, float viewDepth) {
-    uvec2 range = clusterListRange(cluster);
+    uvec2 range = clusterListRange(clusterListKey(cluster, s.normal));
     vec3 color = vec3(0.0);
     for (uint k = 0u; k < range.y; ++k) {
         Light l = lights[lightIndices[range.x + k]];
@@ -59,5 +70,5 @@ vec3 shadeClusterLights(SurfacePoint s, vec3 viewDir, uint cluster, float viewDe
     return color;
 }
 
-uint clusterLightCount(uint cluster, float viewDepth) { return clusterCounts[cluster]; }
+uint clusterLightCount(uint cluster, vec3 worldNormal, float viewDepth) { return clusterCounts[clusterListKey(cluster, worldNormal)]; }
 #endif

@@ -19,6 +19,7 @@ struct ZBinStatistics {
 struct ClusterStatistics {
     std::uint32_t tilesX = 0, tilesY = 0, slices = 0, clusters = 0;
     std::string slicing;
+    std::string cull;                         // the light-vs-cluster test (--cull)
     float zNear = 0.0f, zFar = 0.0f;          // the depth range sliced
     double emptyShare = 0.0;                  // clusters with no light
     double meanLightsPerCluster = 0.0;        // over all clusters
@@ -29,6 +30,9 @@ struct ClusterStatistics {
     std::uint64_t droppedReferences = 0;      // capped lists: light references lost at the cap
     std::uint32_t activeClusters = 0;         // with --active-only: clusters holding a visible sample
     bool activeOnly = false;
+    std::uint32_t listsPerCluster = 1;        // --normal-cones: one list per normal bin
+    std::uint64_t normalConePairs = 0;        // --normal-cones: light-cluster pairs passing the cull test in clusters with samples
+    std::uint64_t normalConePairsKept = 0;    //   of those, pairs listed in at least one occupied normal bin
     std::size_t listBytes = 0;                // light index list memory in use
     std::size_t gridBytes = 0;                // counts, offsets, bounds and flags
     bool zbin = false;                        // --assign zbin: the fields below, not the per-cluster ones

@@ -6,10 +6,11 @@
 namespace ml {
 
 namespace {
-gl::Program lightingProgram(Resolve resolve, const ClusteringSettings& settings) {
-    if (resolve == Resolve::Compute) return gl::Program::compute("deferred_lighting.comp", lightListDefines(settings));
+gl::Program lightingProgram(Resolve resolve, const ClusteringSettings& clustering) {
+    const shaders::Defines defines = deferredLightingDefines(clustering);
+    if (resolve == Resolve::Compute) return gl::Program::compute("deferred_lighting.comp", defines);
     return gl::Program("deferred.lighting", {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "deferred_lighting.frag"}},
-                       lightListDefines(settings));
+                       defines);
 }
 }  // namespace
 
@@ -41,7 +42,7 @@ void ClusteredDeferred::render(const FrameContext& ctx) {
         ctx.scene.draw(gbufferProgram_);
         glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
     }
-    clustering_.build(ctx);
+    clustering_.build(ctx, &gbuffer_.normal());
     {
         auto pass = ctx.timer.pass(resolve_ == Resolve::Compute ? "deferred.lighting-compute" : "deferred.lighting-fragment");
         bindDeferredLightingInputs(gbuffer_, ctx, clustering_);

@@ -4,6 +4,12 @@
 
 namespace ml {
 
+shaders::Defines deferredLightingDefines(const ClusteringSettings& clustering) {
+    shaders::Defines defines = lightListDefines(clustering);
+    if (clustering.normalCones) defines.push_back({"ML_NORMAL_CONES", "1"});
+    return defines;
+}
+
 void bindDeferredLightingInputs(const GBuffer& gbuffer, const FrameContext& ctx, const ClusteredLighting& clustering) {
     gbuffer.bindForReading();
     glBindTextureUnit(ML_TEX_DEPTH, ctx.targets.depth().id());

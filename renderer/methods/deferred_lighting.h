@@ -8,6 +8,9 @@
 
 namespace ml {
 
+// Defines of the lighting programs: ML_NORMAL_CONES with --normal-cones.
+shaders::Defines deferredLightingDefines(const ClusteringSettings& clustering);
+
 // Binds the G-buffer, the depth, the lights and the cluster lists the lighting shaders read.
 void bindDeferredLightingInputs(const GBuffer& gbuffer, const FrameContext& ctx, const ClusteredLighting& clustering);
 

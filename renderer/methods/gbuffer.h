@@ -14,6 +14,7 @@ public:
     const gl::Framebuffer& prepare(const FrameTargets& frame);
     void bindForReading() const;  // at ML_TEX_GBUFFER0..2
     void bindForWriting() const;  // as images at ML_IMG_GBUFFER0..2 (compute writes)
+    const gl::Texture2D& normal() const { return normal_; }  // world-space normals (--normal-cones reads them)
     std::size_t bytes() const { return static_cast<std::size_t>(width_) * height_ * 24; }
 
 private:

@@ -8,7 +8,7 @@ namespace ml {
 VisibilityBuffer::VisibilityBuffer(const ClusteringSettings& settings)
     : rasterProgram_("visibility.raster", {{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "visibility.frag"}}),
       resolveProgram_(gl::Program::compute("visibility_resolve.comp")),
-      lightingProgram_(gl::Program::compute("deferred_lighting.comp", lightListDefines(settings))),
+      lightingProgram_(gl::Program::compute("deferred_lighting.comp", deferredLightingDefines(settings))),
       clustering_(settings) {}
 
 void VisibilityBuffer::prepareTargets(const FrameTargets& frame) {
@@ -54,7 +54,7 @@ void VisibilityBuffer::render(const FrameContext& ctx) {
         }
         glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     }
-    clustering_.build(ctx);
+    clustering_.build(ctx, &gbuffer_.normal());
     {
         auto pass = ctx.timer.pass("visibility.lighting");
         bindDeferredLightingInputs(gbuffer_, ctx, clustering_);

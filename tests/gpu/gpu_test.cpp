@@ -108,6 +108,27 @@ FrameSettings smallFrame(const Scene& scene, int width, int height) {
     return s;
 }
 
+ReferenceFrame readReference(const FrameRenderer& renderer) { return {renderer.readHdr(), renderer.readLdr()}; }
+
+ImageDifference expectWithinContract(const FrameRenderer& renderer, const ReferenceFrame& reference, const std::string& label,
+                                     const std::string& imageName) {
+    const ImageDifference hdr = compareImages(renderer.readHdr(), reference.hdr);
+    const RgbaImage ldr = renderer.readLdr();
+    const ImageDifference ldrDiff = compareImages(ldr, reference.ldr);
+    std::printf("%-50s max8 %.4f  psnr %.1f dB\n", label.c_str(), ldrDiff.maxAbs * 255.0, hdr.psnrDb);
+    EXPECT_LE(ldrDiff.maxAbs, kContractMaxAbs8Bit) << label << ": images in " << writeFailureImages(imageName, ldr, reference.ldr);
+    EXPECT_GE(hdr.psnrDb, kContractMinPsnrDb) << label;
+    return hdr;
+}
+
+NaiveReferenceScene::NaiveReferenceScene(const char* scene, std::uint32_t lights, std::uint32_t frameIndex)
+    : test(testScene(scene, lights, 5, lights >= 1024 ? 0.5f : 1.0f)),
+      renderer(test.scene, test.lights, smallFrame(test.scene, 160, 90)),
+      frame(frameIndex) {
+    renderer.render(frame);
+    reference = readReference(renderer);
+}
+
 int runManylights(const std::string& args, std::string& output, const std::string& workingDir, const std::string& wrapper) {
     const std::string cd = workingDir.empty() ? "" : "cd \"" + workingDir + "\" && ";
     const std::string prefix = wrapper.empty() ? "" : wrapper + " ";

@@ -57,6 +57,34 @@ inline constexpr ClusteredVariant kClusteredVariants[] = {{MethodKind::ForwardPl
 // Frame settings for a scene at a small size, the scene's suggested camera, clip planes fitted.
 FrameSettings smallFrame(const Scene& scene, int width, int height);
 
+// The accuracy contract against naive (design.md): max 1/255 on the 8-bit output, PSNR >= 50 dB
+// on the float output.
+inline constexpr double kContractMaxAbs8Bit = 1.0 / 255.0 + 1e-9;
+inline constexpr double kContractMinPsnrDb = 50.0;
+
+// The reference frame a renderer's output is held to.
+struct ReferenceFrame {
+    FloatImage hdr;
+    RgbaImage ldr;
+};
+ReferenceFrame readReference(const FrameRenderer& renderer);
+
+// Compares the renderer's current frame with the reference, prints one line ("label max8 ...
+// psnr ..."), and fails the test (writing the images under `imageName`) when the frame breaks
+// the contract. Returns the float-output difference.
+ImageDifference expectWithinContract(const FrameRenderer& renderer, const ReferenceFrame& reference, const std::string& label,
+                                     const std::string& imageName);
+
+// A test scene (seed 5; radius halved from 1024 lights up) rendered by naive forward at 160x90
+// on one frame: the reference the methods rendered by `renderer` next are held to.
+struct NaiveReferenceScene {
+    NaiveReferenceScene(const char* scene, std::uint32_t lights, std::uint32_t frameIndex = 45);
+    TestScene test;
+    FrameRenderer renderer;
+    std::uint32_t frame;
+    ReferenceFrame reference;
+};
+
 // One clustered method's difference from naive on the same frame.
 struct MethodError {
     std::string method;
