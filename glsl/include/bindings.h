@@ -72,10 +72,10 @@
 #define ML_CLUSTER_WORKGROUP 64
 // Default light-assignment workgroup size (--workgroup overrides it).
 #define ML_ASSIGN_WORKGROUP 64
-// Light-list sort: threads per cluster, and the longest list sorted in shared memory (16 KiB);
-// longer lists sort in place in the buffer.
+// Light-list sort (GPU variant): threads per list, and the longest list rank-sorted in shared
+// memory (4 KiB, small enough for full occupancy); longer lists sort in place in the buffer.
 #define ML_SORT_WORKGROUP 64
-#define ML_SORT_SHARED_CAPACITY 4096
+#define ML_SORT_SHARED_CAPACITY 1024
 // Radix sort: 8-bit digits (256 buckets, one per thread), each workgroup sorts a block of
 // ML_RADIX_WORKGROUP x ML_RADIX_ROUNDS keys.
 #define ML_RADIX_WORKGROUP 256

@@ -1,5 +1,6 @@
 #include "renderer/clustering/clustered_lighting.h"
 
+
 #include <algorithm>
 #include <stdexcept>
 
