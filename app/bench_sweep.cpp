@@ -200,6 +200,11 @@ const std::vector<AxisDef>& axisDefs() {
          }},
         {{"active_only", "--active-only", "assign only to clusters holding a visible sample: on, off"},
          ValueKind::Boolean, Applies::Clustered, [](BenchPoint& p, const json& v) { p.frame.activeOnly = asBoolean(v); }},
+        {{"draw", "--draw", "scene submission: direct or indirect (multi-draw indirect)"}, ValueKind::Text, Applies::Always,
+         [](BenchPoint& p, const json& v) {
+             (void)parseDrawSubmission(asText(v));
+             p.frame.draw = v.get<std::string>();
+         }},
         {{"cull", "--cull", "light-vs-cluster test: aabb, sphere, cone"}, ValueKind::Text, Applies::Clustered,
          [](BenchPoint& p, const json& v) {
              (void)parseCullMode(asText(v));

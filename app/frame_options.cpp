@@ -46,6 +46,7 @@ void addFrameOptions(CLI::App& cmd, FrameOptions& o) {
     cmd.add_option("--far", o.farPlane, "far clip plane (default: fits the scene's bounds)");
     cmd.add_option("--frames", o.frames, "advance the light animation this many frames (1/60 s each) first")->capture_default_str();
     cmd.add_option("--exposure", o.exposure, "exposure before the tonemap")->capture_default_str();
+    cmd.add_option("--draw", o.draw, "scene submission: direct (a draw call per draw range) or indirect (multi-draw indirect, a call per texture)")->capture_default_str();
     cmd.add_option("--drift-speed", o.driftSpeed, "mean upward drift of the lights, units per second (0: still)")->capture_default_str();
     cmd.add_option("--backend", o.backend, "offscreen GL: auto (EGL, then OSMesa), egl, osmesa")->capture_default_str();
     cmd.add_flag("--gl-debug", o.glDebug, "debug context; print every KHR_debug message");
@@ -129,6 +130,7 @@ PreparedFrame prepareFrame(const FrameOptions& o, const Scene* loaded) {
                                     ", far " + std::to_string(camera.farPlane) + ")");
     f.settings.camera = camera;
     f.settings.exposure = o.exposure;
+    f.settings.draw = parseDrawSubmission(o.draw);
     f.settings.timing = o.time;
     const Bounds volume = lightVolume(f.scene.bounds);
     f.settings.animation = verticalDrift(volume, o.driftSpeed);

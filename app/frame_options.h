@@ -43,6 +43,7 @@ struct FrameOptions {
     std::optional<float> farPlane;
     long long frames = 0;
     float exposure = 1.0f;
+    std::string draw = "direct";
     float driftSpeed = 0.5f;
     std::string backend = "auto";
     bool glDebug = false;

@@ -37,6 +37,9 @@ int runRender(const RenderOptions& o) {
     if (o.frame.time) printPassTimes(times, frame.settings.clock);
     const ClusteredLighting* clustering = renderer.method().clustering();
     if (o.stats) {
+        std::printf("scene submission: %s, %zu draw calls per textured raster pass (%zu draw ranges)\n",
+                    drawSubmissionName(renderer.scene().submission()), renderer.scene().drawCallsPerPass(),
+                    renderer.scene().drawRangeCount());
         if (clustering) {
             const ClusterStatistics stats = clustering->statistics();
             printClusterStatistics(stats);

@@ -95,6 +95,9 @@ void lightsSection(ViewSettings& s, const ViewStatistics& stats, PanelEdits& edi
     ImGui::SetNextItemWidth(kItemWidth - ImGui::GetItemRectSize().x - ImGui::GetStyle().ItemSpacing.x);
     ImGui::SliderFloat("speed", &s.animationSpeed, 0.0f, 4.0f, "%.2fx");
     ImGui::SliderFloat("exposure", &s.exposure, 0.05f, 20.0f, "%.2f", ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
+    int draw = static_cast<int>(s.draw);
+    if (comboOf("scene draws", draw, {drawSubmissionName(DrawSubmission::Direct), drawSubmissionName(DrawSubmission::Indirect)}))
+        s.draw = static_cast<DrawSubmission>(draw);
 }
 
 void gridSection(ViewSettings& s, PanelEdits& edits) {

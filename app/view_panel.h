@@ -22,6 +22,7 @@ struct ViewSettings {
     bool animate = true;
     float animationSpeed = 1.0f;  // times real time
     float exposure = 1.0f;
+    DrawSubmission draw = DrawSubmission::Direct;
     bool vsync = true;
     CameraMode cameraMode = CameraMode::Fly;
 };

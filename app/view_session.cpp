@@ -81,6 +81,7 @@ ViewSession::ViewSession(const ViewOptions& options, PreparedFrame frame, std::o
     settings_.lightCount = static_cast<int>(std::min<std::size_t>(frame_.lights.size(), kMaxViewLights));
     settings_.lightRadius = options.frame.lightRadius.value_or(defaultLightRadius(frame_.scene.bounds));
     settings_.exposure = options.frame.exposure;
+    settings_.draw = parseDrawSubmission(options.frame.draw);
     settings_.vsync = !options.noVsync;
     showPanel_ = !options.hidePanel;
 
@@ -182,6 +183,7 @@ void ViewSession::applyEdits(const PanelEdits& edits) {
     }
     if (edits.screenshot) screenshotRequested_ = true;
     renderer_->setExposure(settings_.exposure);
+    renderer_->setDrawSubmission(settings_.draw);
 }
 
 void ViewSession::refreshStatistics(bool now, bool rendered) {

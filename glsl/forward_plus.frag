@@ -6,6 +6,8 @@
 #include "include/lights.glsl"
 #include "include/shading.glsl"
 #include "include/material.glsl"
+
+layout(location = 3) flat in uint v_materialIndex;  // scene.vert's per-draw attribute
 #include "include/cluster_grid.glsl"
 #include "include/normal_bins.glsl"
 #include "include/cluster_lists.glsl"
@@ -17,7 +19,7 @@ layout(location = 2) in vec2 v_uv;
 layout(location = 0) out vec4 o_color;
 
 void main() {
-    SurfacePoint s = surfaceFromMaterial(v_worldPos, v_worldNormal, v_uv);
+    SurfacePoint s = surfaceFromMaterial(v_materialIndex, v_worldPos, v_worldNormal, v_uv);
     vec3 viewDir = normalize(u_cameraPos.xyz - s.position);
     float viewDepth = -(u_view * vec4(v_worldPos, 1.0)).z;
     uint cluster = clusterForFragment(gl_FragCoord.xy, viewDepth);

@@ -6,6 +6,8 @@
 #include "include/shading.glsl"
 #include "include/material.glsl"
 
+layout(location = 3) flat in uint v_materialIndex;  // scene.vert's per-draw attribute
+
 layout(location = 0) in vec3 v_worldPos;
 layout(location = 1) in vec3 v_worldNormal;
 layout(location = 2) in vec2 v_uv;
@@ -14,7 +16,7 @@ layout(location = 1) out vec4 o_albedo;
 layout(location = 2) out vec4 o_specular;
 
 void main() {
-    SurfacePoint s = surfaceFromMaterial(v_worldPos, v_worldNormal, v_uv);
+    SurfacePoint s = surfaceFromMaterial(v_materialIndex, v_worldPos, v_worldNormal, v_uv);
     o_normal = vec4(s.normal, 0.0);
     o_albedo = vec4(s.albedo, 1.0);
     o_specular = vec4(s.specularStrength, s.shininess, 0.0, 0.0);

@@ -6,13 +6,15 @@
 #include "include/shading.glsl"
 #include "include/material.glsl"
 
+layout(location = 3) flat in uint v_materialIndex;  // scene.vert's per-draw attribute
+
 layout(location = 0) in vec3 v_worldPos;
 layout(location = 1) in vec3 v_worldNormal;
 layout(location = 2) in vec2 v_uv;
 layout(location = 0) out vec4 o_color;
 
 void main() {
-    SurfacePoint s = surfaceFromMaterial(v_worldPos, v_worldNormal, v_uv);
+    SurfacePoint s = surfaceFromMaterial(v_materialIndex, v_worldPos, v_worldNormal, v_uv);
     vec3 viewDir = normalize(u_cameraPos.xyz - s.position);
     vec3 color = shadeAmbient(s);
     uint n = lightCount();

@@ -8,10 +8,15 @@
 layout(location = 0) in vec3 a_position;
 layout(location = 1) in vec3 a_normal;
 layout(location = 2) in vec2 a_uv;
+// Per draw range (instance divisor 1, baseInstance = range): material, first triangle. Direct and
+// multi-draw-indirect submission both feed it (renderer/scene_gpu.h).
+layout(location = 3) in uvec2 a_drawParams;
 
 layout(location = 0) out vec3 v_worldPos;
 layout(location = 1) out vec3 v_worldNormal;
 layout(location = 2) out vec2 v_uv;
+layout(location = 3) flat out uint v_materialIndex;
+layout(location = 4) flat out uint v_firstTriangle;
 
 invariant gl_Position;
 
@@ -19,6 +24,8 @@ void main() {
     v_worldPos = a_position;
     v_worldNormal = a_normal;
     v_uv = a_uv;
+    v_materialIndex = a_drawParams.x;
+    v_firstTriangle = a_drawParams.y;
     // Camera-relative: a_position - eye is exact for nearby geometry even far from the origin,
     // where viewProj * a_position would cancel large terms and shift depth (issue 7, 1e5 units).
     gl_Position = u_proj * vec4(mat3(u_view) * (a_position - u_cameraPos.xyz), 1.0);

@@ -55,6 +55,7 @@ std::vector<PassTime> FrameRenderer::renderAt(float time) {
         auto pass = timer_.pass("lights.animate");
         animate_.run(lights_, time, settings_.animation);
     }
+    scene_.setSubmission(settings_.draw);
     method_->render(FrameContext{scene_, lights_, frameUniformBuffer_, uniforms_, targets_, timer_});
     {
         auto pass = timer_.pass("tonemap");

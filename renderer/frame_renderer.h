@@ -28,6 +28,7 @@ struct FrameSettings {
     MethodSettings method;
     float exposure = 1.0f;
     float ambient = 0.03f;
+    DrawSubmission draw = DrawSubmission::Direct;  // --draw: how raster passes submit the scene
     LightAnimation animation;
     bool timing = false;
     TimingClock clock = TimingClock::GpuQueries;
@@ -53,6 +54,7 @@ public:
     // Replaces the light set (count or radius changed); the GPU buffers are re-created.
     void setLights(const std::vector<PointLight>& lights);
     void setExposure(float exposure) { settings_.exposure = exposure; }
+    void setDrawSubmission(DrawSubmission draw) { settings_.draw = draw; }
     const ShadingMethod& method() const { return *method_; }
     const FrameSettings& settings() const { return settings_; }
     const LightBuffers& lights() const { return lights_; }

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <map>
+#include <stdexcept>
 
 #include "glsl/include/bindings.h"
 #include "renderer/gpu_types.h"
@@ -56,28 +58,97 @@ SceneGpu::SceneGpu(const Scene& scene) : draws_(scene.draws), indexCount_(scene.
         std::fill_n(triangleMaterials.begin() + d.firstIndex / 3, d.indexCount / 3, material);
     }
     triangleMaterials_ = gl::Buffer::fromSpan<std::uint32_t>("scene.triangle-materials", triangleMaterials, 0);
+
+    // Draw ranges in base-colour-texture order, for both submissions: where surfaces tie in
+    // depth the first drawn wins, so direct and indirect must draw in the same order to give
+    // the same image. Range i is drawn with baseInstance i, so the per-draw attribute (divisor
+    // 1) reads element i.
+    const auto textureOf = [&](const DrawRange& d) {
+        return d.material < materialTexture_.size() ? materialTexture_[d.material] : -1;
+    };
+    std::stable_sort(draws_.begin(), draws_.end(), [&](const DrawRange& a, const DrawRange& b) { return textureOf(a) < textureOf(b); });
+    std::vector<glm::uvec2> params;
+    std::map<int, std::vector<std::uint32_t>> byTexture;
+    for (std::uint32_t i = 0; i < draws_.size(); ++i) {
+        const DrawRange& d = draws_[i];
+        const std::uint32_t material = d.material < materialTexture_.size() ? d.material : 0u;
+        params.emplace_back(material, d.firstIndex / 3);
+        byTexture[textureOf(d)].push_back(i);
+    }
+    if (params.empty()) params.emplace_back(0u, 0u);
+    drawParams_ = gl::Buffer::fromSpan<glm::uvec2>("scene.draw-params", params, 0);
+    glVertexArrayVertexBuffer(vao, 1, drawParams_.id(), 0, sizeof(glm::uvec2));
+    glVertexArrayBindingDivisor(vao, 1, 1);
+    glEnableVertexArrayAttrib(vao, 3);
+    glVertexArrayAttribIFormat(vao, 3, 2, GL_UNSIGNED_INT, 0);
+    glVertexArrayAttribBinding(vao, 3, 1);
+
+    struct DrawElementsIndirectCommand {
+        std::uint32_t count, instanceCount, firstIndex, baseVertex, baseInstance;
+    };
+    static_assert(sizeof(DrawElementsIndirectCommand) == 20, "GL's indirect command layout");
+    std::vector<DrawElementsIndirectCommand> commands;
+    for (const auto& [texture, ranges] : byTexture) {
+        groups_.push_back({texture, static_cast<std::uint32_t>(commands.size()), static_cast<std::uint32_t>(ranges.size())});
+        for (std::uint32_t i : ranges) commands.push_back({draws_[i].indexCount, 1, draws_[i].firstIndex, 0, i});
+    }
+    if (commands.empty()) commands.push_back({0, 0, 0, 0, 0});
+    commands_ = gl::Buffer::fromSpan<DrawElementsIndirectCommand>("scene.draw-commands", commands, 0);
 }
 
-void SceneGpu::draw(const gl::Program& program) const {
+DrawSubmission parseDrawSubmission(const std::string& text) {
+    if (text == "direct") return DrawSubmission::Direct;
+    if (text == "indirect") return DrawSubmission::Indirect;
+    throw std::invalid_argument("--draw '" + text + "': expected direct or indirect");
+}
+
+const char* drawSubmissionName(DrawSubmission submission) {
+    return submission == DrawSubmission::Indirect ? "indirect" : "direct";
+}
+
+void SceneGpu::bindGroupTexture(int texture) const {
+    glBindTextureUnit(ML_TEX_BASE_COLOR, texture >= 0 ? textures_[static_cast<std::size_t>(texture)].id() : white_.id());
+}
+
+std::size_t SceneGpu::drawCallsPerPass() const {
+    return submission_ == DrawSubmission::Indirect ? groups_.size() : draws_.size();
+}
+
+void SceneGpu::draw() const {
     glBindVertexArray(vao_.id());
     materials_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_MATERIALS);
-    const GLint materialLocation = glGetUniformLocation(program.id(), "u_materialIndex");
-    for (const DrawRange& d : draws_) {
-        const int texture = d.material < materialTexture_.size() ? materialTexture_[d.material] : -1;
-        glBindTextureUnit(ML_TEX_BASE_COLOR, texture >= 0 ? textures_[static_cast<std::size_t>(texture)].id() : white_.id());
-        glProgramUniform1ui(program.id(), materialLocation, d.material < materialTexture_.size() ? d.material : 0u);
-        glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(d.indexCount), GL_UNSIGNED_INT,
-                       reinterpret_cast<const void*>(static_cast<std::uintptr_t>(d.firstIndex) * sizeof(std::uint32_t)));
+    if (submission_ == DrawSubmission::Indirect) {
+        glBindBuffer(GL_DRAW_INDIRECT_BUFFER, commands_.id());
+        for (const TextureGroup& g : groups_) {
+            bindGroupTexture(g.texture);
+            glMultiDrawElementsIndirect(GL_TRIANGLES, GL_UNSIGNED_INT,
+                                        reinterpret_cast<const void*>(std::uintptr_t(g.firstCommand) * 20),
+                                        static_cast<GLsizei>(g.commandCount), 0);
+        }
+        glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
+        return;
+    }
+    for (std::uint32_t i = 0; i < draws_.size(); ++i) {
+        const DrawRange& d = draws_[i];
+        bindGroupTexture(d.material < materialTexture_.size() ? materialTexture_[d.material] : -1);
+        glDrawElementsInstancedBaseInstance(GL_TRIANGLES, static_cast<GLsizei>(d.indexCount), GL_UNSIGNED_INT,
+                                            reinterpret_cast<const void*>(std::uintptr_t(d.firstIndex) * sizeof(std::uint32_t)), 1, i);
     }
 }
 
-void SceneGpu::drawTriangleIds(const gl::Program& program) const {
+void SceneGpu::drawTriangleIds() const {
     glBindVertexArray(vao_.id());
-    const GLint firstTriangle = glGetUniformLocation(program.id(), "u_firstTriangle");
-    for (const DrawRange& d : draws_) {
-        glProgramUniform1ui(program.id(), firstTriangle, d.firstIndex / 3);
-        glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(d.indexCount), GL_UNSIGNED_INT,
-                       reinterpret_cast<const void*>(static_cast<std::uintptr_t>(d.firstIndex) * sizeof(std::uint32_t)));
+    if (submission_ == DrawSubmission::Indirect) {
+        // No textures here, so every range goes in one call.
+        glBindBuffer(GL_DRAW_INDIRECT_BUFFER, commands_.id());
+        glMultiDrawElementsIndirect(GL_TRIANGLES, GL_UNSIGNED_INT, nullptr, static_cast<GLsizei>(draws_.size()), 0);
+        glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
+        return;
+    }
+    for (std::uint32_t i = 0; i < draws_.size(); ++i) {
+        const DrawRange& d = draws_[i];
+        glDrawElementsInstancedBaseInstance(GL_TRIANGLES, static_cast<GLsizei>(d.indexCount), GL_UNSIGNED_INT,
+                                            reinterpret_cast<const void*>(std::uintptr_t(d.firstIndex) * sizeof(std::uint32_t)), 1, i);
     }
 }
 

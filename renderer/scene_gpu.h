@@ -1,6 +1,7 @@
 // A scene's geometry, materials and textures on the GPU, uploaded once.
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "renderer/gl/buffer.h"
@@ -10,17 +11,34 @@
 
 namespace ml {
 
+// How raster passes submit the scene (--draw): one glDrawElements call per draw range, or
+// multi-draw indirect, GL's counterpart of seed 001's render bundles: the draw ranges live in a
+// GPU command buffer and one glMultiDrawElementsIndirect call per base-colour texture draws
+// them all, so the CPU cost per pass follows the number of textures, not of meshes. (GL 4.5 core
+// has no bindless textures, so a texture change still needs its own call.)
+enum class DrawSubmission { Direct, Indirect };
+DrawSubmission parseDrawSubmission(const std::string& text);  // throws std::invalid_argument
+const char* drawSubmissionName(DrawSubmission submission);
+
 class SceneGpu {
 public:
     explicit SceneGpu(const Scene& scene);
 
-    // Draws every draw range with `program` (which reads u_materialIndex and the base-colour texture).
-    void draw(const gl::Program& program) const;
+    // Every raster pass draws through scene.vert, whose per-draw attribute (location 3, one
+    // value per draw range through the instance divisor and baseInstance) carries the range's
+    // material and first triangle; so direct and indirect submission run the same shaders.
+    void setSubmission(DrawSubmission submission) { submission_ = submission; }
+    DrawSubmission submission() const { return submission_; }
+    // Draws every draw range with the current program, binding each range's base-colour texture.
+    void draw() const;
     // Draws positions only, for depth-only passes (no material state changes).
     void drawDepthOnly() const;
-    // Draws every range with `program`, setting u_firstTriangle to the range's first triangle,
-    // so gl_PrimitiveID + u_firstTriangle is the triangle's index in the scene (visibility buffer).
-    void drawTriangleIds(const gl::Program& program) const;
+    // Draws every range without textures: the visibility buffer's raster pass, which writes
+    // v_firstTriangle + gl_PrimitiveID, the triangle's index in the scene.
+    void drawTriangleIds() const;
+    // Draw calls one textured raster pass issues with the current submission.
+    std::size_t drawCallsPerPass() const;
+    std::size_t drawRangeCount() const { return draws_.size(); }
 
     // For compute passes that rebuild surfaces from triangle ids: vertices, indices, the
     // material of every triangle, and the materials, at their ML_SSBO_* points.
@@ -40,9 +58,21 @@ private:
     gl::Handle<gl::VertexArrayDeleter> vao_;
     std::vector<gl::Texture2D> textures_;
     gl::Texture2D white_;
+    // Indirect submission: one command per draw range, grouped by base-colour texture.
+    struct TextureGroup {
+        int texture = -1;  // -1: untextured (the white texture)
+        std::uint32_t firstCommand = 0;
+        std::uint32_t commandCount = 0;
+    };
+    void bindGroupTexture(int texture) const;
+
     std::vector<DrawRange> draws_;
     std::vector<int> materialTexture_;
+    std::vector<TextureGroup> groups_;
+    gl::Buffer drawParams_;  // per draw range: material, first triangle (8 B)
+    gl::Buffer commands_;    // DrawElementsIndirectCommand per draw range, in group order (20 B)
     std::size_t indexCount_ = 0;
+    DrawSubmission submission_ = DrawSubmission::Direct;
 };
 
 }  // namespace ml

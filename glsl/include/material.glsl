@@ -5,10 +5,9 @@ struct Material {
 };
 layout(std430, binding = ML_SSBO_MATERIALS) readonly buffer MaterialBuffer { Material materials[]; };
 layout(binding = ML_TEX_BASE_COLOR) uniform sampler2D u_baseColorTexture;  // sRGB texture: sampled as linear
-uniform uint u_materialIndex;
 
-SurfacePoint surfaceFromMaterial(vec3 worldPos, vec3 worldNormal, vec2 uv) {
-    Material m = materials[u_materialIndex];
+SurfacePoint surfaceFromMaterial(uint materialIndex, vec3 worldPos, vec3 worldNormal, vec2 uv) {
+    Material m = materials[materialIndex];
     SurfacePoint s;
     s.position = worldPos;
     s.normal = normalize(worldNormal);

@@ -39,7 +39,7 @@ void ClusteredDeferred::render(const FrameContext& ctx) {
         glDepthFunc(GL_LESS);
         glDepthMask(GL_TRUE);
         gbufferProgram_.use();
-        ctx.scene.draw(gbufferProgram_);
+        ctx.scene.draw();
         glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
     }
     clustering_.build(ctx, &gbuffer_.normal());

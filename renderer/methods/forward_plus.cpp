@@ -44,7 +44,7 @@ void ForwardPlus::render(const FrameContext& ctx) {
         shadeProgram_.use();
         ctx.lights.animated().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_LIGHTS);
         clustering_.bindForShading();
-        ctx.scene.draw(shadeProgram_);
+        ctx.scene.draw();
         glDisable(GL_STENCIL_TEST);
         glDepthFunc(GL_LESS);
         glDepthMask(GL_TRUE);

@@ -20,7 +20,7 @@ void NaiveForward::render(const FrameContext& ctx) {
     glDepthMask(GL_TRUE);
     program_.use();
     ctx.lights.animated().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_LIGHTS);
-    ctx.scene.draw(program_);
+    ctx.scene.draw();
 }
 
 }  // namespace ml

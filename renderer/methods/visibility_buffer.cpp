@@ -35,7 +35,7 @@ void VisibilityBuffer::render(const FrameContext& ctx) {
         glDepthFunc(GL_LESS);
         glDepthMask(GL_TRUE);
         rasterProgram_.use();
-        ctx.scene.drawTriangleIds(rasterProgram_);
+        ctx.scene.drawTriangleIds();
         glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
     }
     {
