@@ -28,6 +28,8 @@ struct FrameOptions {
     unsigned maxPerCluster = 2048;
     bool activeOnly = false;
     std::string resolve = "compute";
+    std::string gbuffer = "standard";
+    std::string prepass = "on";
     std::string view = "shaded";
     long long lights = 1024;
     std::optional<float> lightRadius;
@@ -41,6 +43,10 @@ struct FrameOptions {
     std::optional<float> farPlane;
     long long frames = 0;
     float exposure = 1.0f;
+    std::string specular = "on";
+    bool bloom = false;
+    float bloomThreshold = BloomSettings{}.threshold;
+    float bloomStrength = BloomSettings{}.strength;
     float driftSpeed = 0.5f;
     std::string backend = "auto";
     bool glDebug = false;

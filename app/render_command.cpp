@@ -37,6 +37,7 @@ int runRender(const RenderOptions& o) {
     if (o.frame.time) printPassTimes(times, frame.settings.clock);
     const ClusteredLighting* clustering = renderer.method().clustering();
     if (o.stats) {
+        printShadingOptions(frame.settings);
         if (clustering) printClusterStatistics(clustering->statistics());
         else std::printf("stats: naive shading builds no light lists (every fragment loops over all %zu lights)\n",
                          frame.lights.size());

@@ -38,6 +38,24 @@ void printClusterStatistics(const ClusterStatistics& s) {
     std::printf("memory: light lists %.2f MiB, grid %.2f MiB\n", s.listBytes / 1048576.0, s.gridBytes / 1048576.0);
 }
 
+void printShadingOptions(const FrameSettings& s) {
+    std::printf("specular: %s\n", s.specular ? "on (Blinn-Phong)" : "off (Lambert only)");
+    const MethodKind kind = s.method.kind;
+    if (kind == MethodKind::Deferred || kind == MethodKind::Visibility) {
+        const std::size_t perPixel = gbufferBytesPerPixel(s.method.gbuffer);
+        std::printf("G-buffer: %s, %zu B per pixel, %.2f MiB at %dx%d (depth: the frame's depth buffer)\n",
+                    gbufferFormatName(s.method.gbuffer), perPixel,
+                    static_cast<double>(perPixel) * s.width * s.height / 1048576.0, s.width, s.height);
+    } else {
+        std::printf("G-buffer: none (%s shades while rastering; --gbuffer is ignored)\n", methodName(kind).c_str());
+    }
+    if (kind == MethodKind::ForwardPlus)
+        std::printf("depth pre-pass: %s\n", s.method.prepass ? "on (shade with EQUAL, each pixel once)"
+                                                                : "off (one LESS pass; hidden fragments are shaded too)");
+    if (s.bloom.enabled) std::printf("bloom: threshold %.3g, strength %.3g\n", s.bloom.threshold, s.bloom.strength);
+    else std::printf("bloom: off\n");
+}
+
 void writeJsonFile(const std::string& path, const nlohmann::json& doc) {
     std::ofstream out(path);
     if (!out) throw std::runtime_error(path + ": cannot write");

@@ -14,6 +14,8 @@ namespace ml::app {
 void printPassTimes(const std::vector<PassTime>& times, TimingClock clock);
 void printSceneSummary(const PreparedFrame& frame);
 void printClusterStatistics(const ClusterStatistics& stats);
+// The shading options of the frame (--specular, --gbuffer, --prepass, --bloom) and what they cost in memory.
+void printShadingOptions(const FrameSettings& settings);
 // Throws std::runtime_error naming the path.
 void writeJsonFile(const std::string& path, const nlohmann::json& doc);
 

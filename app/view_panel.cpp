@@ -72,6 +72,17 @@ void methodSection(ViewSettings& s, PanelEdits& edits) {
     }
     ImGui::EndDisabled();
 
+    ImGui::BeginDisabled(s.method.kind != MethodKind::Deferred && s.method.kind != MethodKind::Visibility);
+    int gbuffer = static_cast<int>(s.method.gbuffer);
+    if (comboOf("G-buffer", gbuffer, gbufferFormatNames())) {
+        s.method.gbuffer = static_cast<GBufferFormat>(gbuffer);
+        edits.method = true;
+    }
+    ImGui::EndDisabled();
+    ImGui::BeginDisabled(s.method.kind != MethodKind::ForwardPlus);
+    if (ImGui::Checkbox("depth pre-pass (Forward+)", &s.method.prepass)) edits.method = true;
+    ImGui::EndDisabled();
+
     ImGui::BeginDisabled(s.method.kind == MethodKind::Naive);
     int view = static_cast<int>(s.method.clustering.view);
     if (comboOf("debug view", view, debugViewNames())) {
@@ -95,6 +106,12 @@ void lightsSection(ViewSettings& s, const ViewStatistics& stats, PanelEdits& edi
     ImGui::SetNextItemWidth(kItemWidth - ImGui::GetItemRectSize().x - ImGui::GetStyle().ItemSpacing.x);
     ImGui::SliderFloat("speed", &s.animationSpeed, 0.0f, 4.0f, "%.2fx");
     ImGui::SliderFloat("exposure", &s.exposure, 0.05f, 20.0f, "%.2f", ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
+    ImGui::Checkbox("specular (Blinn-Phong)", &s.specular);
+    ImGui::Checkbox("bloom", &s.bloom.enabled);
+    ImGui::BeginDisabled(!s.bloom.enabled);
+    ImGui::SliderFloat("bloom threshold", &s.bloom.threshold, 0.0f, 20.0f, "%.2f", ImGuiSliderFlags_AlwaysClamp);
+    ImGui::SliderFloat("bloom strength", &s.bloom.strength, 0.0f, 4.0f, "%.2f", ImGuiSliderFlags_AlwaysClamp);
+    ImGui::EndDisabled();
 }
 
 void gridSection(ViewSettings& s, PanelEdits& edits) {
@@ -195,6 +212,13 @@ void statisticsSection(const ViewStatistics& st) {
         ImGui::Text("cluster memory: lists %s, grid %s", mebibytes(c.listBytes).c_str(), mebibytes(c.gridBytes).c_str());
     } else {
         ImGui::TextColored(kDim, "no clusters: naive shades %zu lights per pixel", st.lights);
+    }
+    if (st.gbuffer) {
+        const std::size_t perPixel = gbufferBytesPerPixel(*st.gbuffer);
+        ImGui::Text("G-buffer %s: %zu B/pixel, %s", gbufferFormatName(*st.gbuffer), perPixel,
+                    mebibytes(perPixel * static_cast<std::size_t>(st.width) * st.height).c_str());
+    } else {
+        ImGui::TextColored(kDim, "G-buffer: none (this method shades while rastering)");
     }
     ImGui::Text("renderer memory %s", mebibytes(st.rendererBytes).c_str());
     if (st.gpuUsedBytes) ImGui::Text("GPU memory in use %s", mebibytes(*st.gpuUsedBytes).c_str());

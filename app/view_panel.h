@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "renderer/bloom_pass.h"
 #include "renderer/camera_controller.h"
 #include "renderer/clustering/cluster_statistics.h"
 #include "renderer/methods/shading_method.h"
@@ -22,6 +23,8 @@ struct ViewSettings {
     bool animate = true;
     float animationSpeed = 1.0f;  // times real time
     float exposure = 1.0f;
+    bool specular = true;
+    BloomSettings bloom;
     bool vsync = true;
     CameraMode cameraMode = CameraMode::Fly;
 };
@@ -37,6 +40,7 @@ struct ViewStatistics {
     TimingClock clock = TimingClock::GpuQueries;
     std::optional<ClusterStatistics> clusters;  // clustered methods; refreshed a few times a second
     std::size_t rendererBytes = 0;           // the renderer's buffers and targets
+    std::optional<GBufferFormat> gbuffer;    // the layout, where the method has a G-buffer
     std::optional<std::size_t> gpuUsedBytes; // the whole GPU, where GL_NVX_gpu_memory_info says
     std::string glRenderer, glVersion;
     int width = 0, height = 0;

@@ -7,6 +7,7 @@
 #include "include/cluster_grid.glsl"
 #include "include/cluster_lists.glsl"
 #include "include/debug_views.glsl"
+#include "include/gbuffer_layout.glsl"
 #include "include/deferred_resolve.glsl"
 
 layout(location = 0) out vec4 o_color;

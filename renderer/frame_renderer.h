@@ -6,6 +6,7 @@
 #include <memory>
 #include <vector>
 
+#include "renderer/bloom_pass.h"
 #include "renderer/camera.h"
 #include "renderer/frame_targets.h"
 #include "renderer/gl/buffer.h"
@@ -28,6 +29,8 @@ struct FrameSettings {
     MethodSettings method;
     float exposure = 1.0f;
     float ambient = 0.03f;
+    bool specular = true;  // the Blinn-Phong term (--specular), a frame uniform: no recompile
+    BloomSettings bloom;
     LightAnimation animation;
     bool timing = false;
     TimingClock clock = TimingClock::GpuQueries;
@@ -53,6 +56,9 @@ public:
     // Replaces the light set (count or radius changed); the GPU buffers are re-created.
     void setLights(const std::vector<PointLight>& lights);
     void setExposure(float exposure) { settings_.exposure = exposure; }
+    void setSpecular(bool on) { settings_.specular = on; }
+    void setBloom(const BloomSettings& bloom) { settings_.bloom = bloom; }
+    const BloomPass& bloom() const { return bloom_; }
     const ShadingMethod& method() const { return *method_; }
     const FrameSettings& settings() const { return settings_; }
     const LightBuffers& lights() const { return lights_; }
@@ -70,6 +76,7 @@ private:
     gl::Buffer frameUniformBuffer_;
     FrameUniforms uniforms_{};
     AnimateLightsPass animate_;
+    BloomPass bloom_;
     TonemapPass tonemap_;
     std::unique_ptr<ShadingMethod> method_;
     PassTimer timer_;

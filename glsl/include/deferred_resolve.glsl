@@ -1,9 +1,32 @@
 // Clustered deferred lighting of one pixel from the G-buffer, shared by the full-screen
-// fragment resolve and the compute resolve. Position is rebuilt from depth.
+// fragment resolve and the compute resolve. Position is rebuilt from depth; the rest is
+// decoded from the --gbuffer layout (gbuffer_layout.glsl).
 layout(binding = ML_TEX_DEPTH) uniform sampler2D u_depth;
-layout(binding = ML_TEX_GBUFFER0) uniform sampler2D u_gNormal;
-layout(binding = ML_TEX_GBUFFER1) uniform sampler2D u_gAlbedo;
-layout(binding = ML_TEX_GBUFFER2) uniform sampler2D u_gSpecular;
+#if ML_GBUFFER_FLOAT_TARGETS == 0
+layout(binding = ML_TEX_GBUFFER0) uniform usampler2D u_gPacked;
+#else
+layout(binding = ML_TEX_GBUFFER0) uniform sampler2D u_gTarget0;
+layout(binding = ML_TEX_GBUFFER1) uniform sampler2D u_gTarget1;
+#if ML_GBUFFER_FLOAT_TARGETS == 3
+layout(binding = ML_TEX_GBUFFER2) uniform sampler2D u_gTarget2;
+#endif
+#endif
+
+GBufferTexel fetchGBuffer(ivec2 p) {
+    GBufferTexel t;
+    t.target[0] = t.target[1] = t.target[2] = vec4(0.0);
+    t.bits = uvec4(0u);
+#if ML_GBUFFER_FLOAT_TARGETS == 0
+    t.bits = texelFetch(u_gPacked, p, 0);
+#else
+    t.target[0] = texelFetch(u_gTarget0, p, 0);
+    t.target[1] = texelFetch(u_gTarget1, p, 0);
+#if ML_GBUFFER_FLOAT_TARGETS == 3
+    t.target[2] = texelFetch(u_gTarget2, p, 0);
+#endif
+#endif
+    return t;
+}
 
 vec4 resolvePixel(ivec2 p) {
     float depth = texelFetch(u_depth, p, 0).r;
@@ -13,11 +36,7 @@ vec4 resolvePixel(ivec2 p) {
     viewPos /= viewPos.w;
     SurfacePoint s;
     s.position = (u_invView * viewPos).xyz;
-    s.normal = normalize(texelFetch(u_gNormal, p, 0).xyz);  // 16-bit storage: restore unit length
-    s.albedo = texelFetch(u_gAlbedo, p, 0).rgb;
-    vec2 spec = texelFetch(u_gSpecular, p, 0).xy;
-    s.specularStrength = spec.x;
-    s.shininess = spec.y;
+    decodeGBuffer(fetchGBuffer(p), s);
     vec3 viewDir = normalize(u_cameraPos.xyz - s.position);
     float viewDepth = -viewPos.z;
     uint cluster = clusterForFragment(vec2(p) + 0.5, viewDepth);

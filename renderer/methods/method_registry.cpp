@@ -47,9 +47,9 @@ std::string methodName(MethodKind kind) {
 std::unique_ptr<ShadingMethod> createMethod(const MethodSettings& settings) {
     switch (settings.kind) {
     case MethodKind::Naive: return std::make_unique<NaiveForward>();
-    case MethodKind::ForwardPlus: return std::make_unique<ForwardPlus>(settings.clustering);
-    case MethodKind::Deferred: return std::make_unique<ClusteredDeferred>(settings.clustering, settings.resolve);
-    case MethodKind::Visibility: return std::make_unique<VisibilityBuffer>(settings.clustering);
+    case MethodKind::ForwardPlus: return std::make_unique<ForwardPlus>(settings.clustering, settings.prepass);
+    case MethodKind::Deferred: return std::make_unique<ClusteredDeferred>(settings.clustering, settings.resolve, settings.gbuffer);
+    case MethodKind::Visibility: return std::make_unique<VisibilityBuffer>(settings.clustering, settings.gbuffer);
     }
     throw std::invalid_argument("unhandled method");
 }

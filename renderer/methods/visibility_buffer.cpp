@@ -5,10 +5,11 @@
 
 namespace ml {
 
-VisibilityBuffer::VisibilityBuffer(const ClusteringSettings& settings)
-    : rasterProgram_("visibility.raster", {{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "visibility.frag"}}),
-      resolveProgram_(gl::Program::compute("visibility_resolve.comp")),
-      lightingProgram_(gl::Program::compute("deferred_lighting.comp")),
+VisibilityBuffer::VisibilityBuffer(const ClusteringSettings& settings, GBufferFormat gbuffer)
+    : gbuffer_(gbuffer),
+      rasterProgram_("visibility.raster", {{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "visibility.frag"}}),
+      resolveProgram_(gl::Program::compute("visibility_resolve.comp", gbuffer_.defines())),
+      lightingProgram_(gl::Program::compute("deferred_lighting.comp", gbuffer_.defines())),
       clustering_(settings) {}
 
 void VisibilityBuffer::prepareTargets(const FrameTargets& frame) {

@@ -58,6 +58,27 @@ TestScene testScene(const std::string& name, std::uint32_t count, std::uint32_t 
     return t;
 }
 
+Scene quadScene(const std::vector<TestQuad>& quads) {
+    Scene scene;
+    scene.name = "quads";
+    for (const TestQuad& q : quads) {
+        const glm::vec3 n = glm::normalize(glm::cross(q.u, q.v));
+        const auto first = static_cast<std::uint32_t>(scene.vertices.size());
+        const glm::vec3 corners[4] = {q.center - q.u - q.v, q.center + q.u - q.v, q.center + q.u + q.v, q.center - q.u + q.v};
+        const glm::vec2 uvs[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+        for (int i = 0; i < 4; ++i) scene.vertices.push_back(Vertex{corners[i], n, uvs[i]});
+        const auto firstIndex = static_cast<std::uint32_t>(scene.indices.size());
+        for (std::uint32_t i : {0u, 1u, 2u, 0u, 2u, 3u}) scene.indices.push_back(first + i);
+        Material m;
+        m.name = "quad" + std::to_string(scene.materials.size());
+        m.baseColorFactor = glm::vec4(q.color, 1.0f);
+        scene.draws.push_back(DrawRange{firstIndex, 6, static_cast<std::uint32_t>(scene.materials.size())});
+        scene.materials.push_back(m);
+    }
+    computeBounds(scene);
+    return scene;
+}
+
 FrameSettings smallFrame(const Scene& scene, int width, int height) {
     FrameSettings s;
     s.width = width;
@@ -66,6 +87,18 @@ FrameSettings smallFrame(const Scene& scene, int width, int height) {
     fitClipPlanes(s.camera, scene.bounds);
     s.animation = verticalDrift(lightVolume(scene.bounds), 0.5f);
     return s;
+}
+
+ImageDifference expectWithinContract(const std::string& label, const FrameRenderer& renderer, const FloatImage& referenceHdr,
+                                     const RgbaImage& referenceLdr) {
+    const ImageDifference hdr = compareImages(renderer.readHdr(), referenceHdr);
+    const RgbaImage ldr = renderer.readLdr();
+    const ImageDifference ldrDiff = compareImages(ldr, referenceLdr);
+    std::printf("%-44s max8 %.4f  psnr %.1f dB  bad %.4f\n", label.c_str(), ldrDiff.maxAbs * 255.0, hdr.psnrDb,
+                ldrDiff.badPixelShare);
+    EXPECT_LE(ldrDiff.maxAbs, 1.0 / 255.0 + 1e-9) << label << ": images in " << writeFailureImages(label, ldr, referenceLdr);
+    EXPECT_GE(hdr.psnrDb, 50.0) << label;
+    return hdr;
 }
 
 int runManylights(const std::string& args, std::string& output, const std::string& workingDir, const std::string& wrapper) {

@@ -37,8 +37,22 @@ struct TestScene {
 };
 TestScene testScene(const std::string& name, std::uint32_t count, std::uint32_t seed, float radiusScale = 1.0f);
 
+// A scene built in a test from quads: each a centre, two half-extent axes (the normal is
+// u x v) and a base colour; one material per quad, drawn in the order given.
+struct TestQuad {
+    glm::vec3 center, u, v;
+    glm::vec3 color{0.8f};
+};
+Scene quadScene(const std::vector<TestQuad>& quads);
+
 // Frame settings for a scene at a small size, the scene's suggested camera, clip planes fitted.
 FrameSettings smallFrame(const Scene& scene, int width, int height);
+
+// The accuracy contract against the reference frame (design.md): max error <= 1/255 on the
+// 8-bit output and PSNR >= 50 dB on the float output. Expects both, prints the numbers under
+// `label`, writes the images on failure; returns the float difference.
+ImageDifference expectWithinContract(const std::string& label, const FrameRenderer& renderer, const FloatImage& referenceHdr,
+                                     const RgbaImage& referenceLdr);
 
 // Runs the manylights executable with `args` (a shell-quoted string) in `workingDir` (if not
 // empty), behind `wrapper` if given (e.g. "xvfb-run -a", "env -u DISPLAY"); returns the exit
