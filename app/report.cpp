@@ -52,7 +52,11 @@ void printShadingOptions(const FrameSettings& s) {
     if (kind == MethodKind::ForwardPlus)
         std::printf("depth pre-pass: %s\n", s.method.prepass ? "on (shade with EQUAL, each pixel once)"
                                                                 : "off (one LESS pass; hidden fragments are shaded too)");
-    if (s.bloom.enabled) std::printf("bloom: threshold %.3g, strength %.3g\n", s.bloom.threshold, s.bloom.strength);
+    // Two half-resolution RGBA32F images (renderer/bloom_pass.h).
+    const double bloomBytes = 2.0 * ((s.width + 1) / 2) * ((s.height + 1) / 2) * 16;
+    if (s.bloom.enabled)
+        std::printf("bloom: threshold %.3g, strength %.3g, %.2f MiB at half resolution\n", s.bloom.threshold,
+                    s.bloom.strength, bloomBytes / 1048576.0);
     else std::printf("bloom: off\n");
 }
 

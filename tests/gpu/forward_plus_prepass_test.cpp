@@ -22,14 +22,11 @@ TEST_P(PrepassOff, MatchesNaiveOnEverySlicing) {
     const TestScene t = testScene(GetParam(), 1024, 5, 0.5f);
     FrameSettings s = smallFrame(t.scene, 160, 90);
     FrameRenderer renderer(t.scene, t.lights, s);
-    renderer.render(45);
-    const FloatImage naiveHdr = renderer.readHdr();
-    const RgbaImage naiveLdr = renderer.readLdr();
+    const ReferenceFrame naive = renderReference(renderer, 45);
     for (Slicing slicing : {Slicing::Linear, Slicing::Log, Slicing::Fitted}) {
         renderer.setMethod(forwardPlus(false, slicing));
         renderer.render(45);
-        expectWithinContract(std::string(GetParam()) + " forward-plus no pre-pass " + slicingName(slicing), renderer, naiveHdr,
-                             naiveLdr);
+        expectWithinContract(std::string(GetParam()) + " forward-plus no pre-pass " + slicingName(slicing), renderer, naive);
         EXPECT_EQ(renderer.method().clustering()->statistics().droppedReferences, 0u);
         // Fitted needs the pre-pass depth: without it the grid is log-sliced over the camera's range.
         if (slicing == Slicing::Fitted) {
@@ -48,12 +45,8 @@ class ForwardPlusPrepass : public GpuTest {};
 TEST_F(ForwardPlusPrepass, CoplanarTiesResolveAsInNaiveWithAndWithoutThePrepass) {
     const Scene scene = quadScene({{{0.0f, 0.0f, 0.0f}, {2.0f, 0.0f, 0.0f}, {0.0f, 2.0f, 0.0f}, {1.0f, 0.0f, 0.0f}},
                                    {{0.5f, 0.5f, 0.0f}, {2.0f, 0.0f, 0.0f}, {0.0f, 2.0f, 0.0f}, {0.0f, 0.0f, 1.0f}}});
-    FrameSettings s;
-    s.width = 160;
-    s.height = 90;
+    FrameSettings s = smallFrame(scene, CameraPose{{0.7f, 0.4f, 4.0f}, {0.0f, 0.0f, 0.0f}, 60.0f}, 160, 90);
     s.ambient = 1.0f;
-    s.camera = cameraFromPose(CameraPose{{0.7f, 0.4f, 4.0f}, {0.0f, 0.0f, 0.0f}, 60.0f});
-    fitClipPlanes(s.camera, scene.bounds);
     FrameRenderer renderer(scene, {}, s);
     renderer.render(0);
     const RgbaImage naive = renderer.readLdr();

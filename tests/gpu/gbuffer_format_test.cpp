@@ -22,9 +22,7 @@ TEST_P(PackedGBuffer, MatchesStandardAndNaive) {
     const TestScene t = testScene(GetParam(), 1024, 5, 0.5f);
     FrameSettings s = smallFrame(t.scene, 160, 90);
     FrameRenderer renderer(t.scene, t.lights, s);
-    renderer.render(45);
-    const FloatImage naiveHdr = renderer.readHdr();
-    const RgbaImage naiveLdr = renderer.readLdr();
+    const ReferenceFrame naive = renderReference(renderer, 45);
     const std::string scene = GetParam();
     struct Case {
         MethodKind kind;
@@ -42,7 +40,7 @@ TEST_P(PackedGBuffer, MatchesStandardAndNaive) {
         const ImageDifference againstStandard = compareImages(renderer.readHdr(), standard);
         std::printf("%s packed vs standard, %s: psnr %.1f dB\n", scene.c_str(), c.name, againstStandard.psnrDb);
         EXPECT_GE(againstStandard.psnrDb, 50.0) << c.name;
-        expectWithinContract(scene + " packed " + c.name + " vs naive", renderer, naiveHdr, naiveLdr);
+        expectWithinContract(scene + " packed " + c.name + " vs naive", renderer, naive);
     }
 }
 
@@ -61,33 +59,25 @@ TEST_F(GBufferLayouts, TwoComponentLosesTheSignOfZWherePackedDoesNot) {
     std::vector<PointLight> lights;
     for (int i = 0; i < 16; ++i)
         lights.push_back(PointLight{{-1.5f + 0.2f * i, -1.0f + 0.13f * i, -0.7f - 0.05f * i}, 3.0f, {1.0f, 0.9f, 0.8f}});
-    FrameSettings s;
-    s.width = 160;
-    s.height = 90;
-    s.camera = cameraFromPose(CameraPose{{0.5f, 0.3f, -5.0f}, {0.0f, 0.0f, 0.0f}, 50.0f});
-    fitClipPlanes(s.camera, scene.bounds);
-    s.animation = verticalDrift(lightVolume(scene.bounds), 0.0f);
-    FrameRenderer renderer(scene, lights, s);
-    renderer.render(0);
-    const FloatImage naiveHdr = renderer.readHdr();
-    const RgbaImage naiveLdr = renderer.readLdr();
+    FrameRenderer renderer(scene, lights, smallFrame(scene, CameraPose{{0.5f, 0.3f, -5.0f}, {0.0f, 0.0f, 0.0f}, 50.0f}, 160, 90));
+    const ReferenceFrame naive = renderReference(renderer, 0);
 
     for (MethodKind kind : {MethodKind::Deferred, MethodKind::Visibility}) {
         const std::string name = methodName(kind);
         renderer.setMethod(withGBuffer(kind, GBufferFormat::Packed));
         renderer.render(0);
-        expectWithinContract("-z wall, packed " + name, renderer, naiveHdr, naiveLdr);
+        expectWithinContract("-z wall, packed " + name, renderer, naive);
 
         renderer.setMethod(withGBuffer(kind, GBufferFormat::TwoComponent));
         renderer.render(0);
         const FloatImage twoComponent = renderer.readHdr();
-        const ImageDifference d = compareImages(twoComponent, naiveHdr);
+        const ImageDifference d = compareImages(twoComponent, naive.hdr);
         std::printf("-z wall, two-component %s: max %.3f, psnr %.1f dB, bad %.3f\n", name.c_str(), d.maxAbs, d.psnrDb,
                     d.badPixelShare);
         EXPECT_LT(d.psnrDb, 30.0) << name << ": the lost sign of z should show";
         EXPECT_GT(d.badPixelShare, 0.2) << name << ": the whole wall should be wrong";
         // The wall's centre pixel: lit in naive, ambient only (0.03 x albedo) in two-component.
-        const float* lit = naiveHdr.at(80, 45);
+        const float* lit = naive.hdr.at(80, 45);
         const float* dark = twoComponent.at(80, 45);
         EXPECT_GT(lit[0], 0.2f) << name;
         EXPECT_NEAR(dark[0], 0.03f * 0.8f, 1e-3f) << name;
@@ -101,19 +91,11 @@ TEST_F(GBufferLayouts, TwoComponentIsExactWhereZIsNotNegative) {
     std::vector<PointLight> lights;
     for (int i = 0; i < 16; ++i)
         lights.push_back(PointLight{{-1.5f + 0.2f * i, -1.0f + 0.13f * i, 0.7f + 0.05f * i}, 3.0f, {1.0f, 0.9f, 0.8f}});
-    FrameSettings s;
-    s.width = 160;
-    s.height = 90;
-    s.camera = cameraFromPose(CameraPose{{0.5f, 0.3f, 5.0f}, {0.0f, 0.0f, 0.0f}, 50.0f});
-    fitClipPlanes(s.camera, scene.bounds);
-    s.animation = verticalDrift(lightVolume(scene.bounds), 0.0f);
-    FrameRenderer renderer(scene, lights, s);
-    renderer.render(0);
-    const FloatImage naiveHdr = renderer.readHdr();
-    const RgbaImage naiveLdr = renderer.readLdr();
+    FrameRenderer renderer(scene, lights, smallFrame(scene, CameraPose{{0.5f, 0.3f, 5.0f}, {0.0f, 0.0f, 0.0f}, 50.0f}, 160, 90));
+    const ReferenceFrame naive = renderReference(renderer, 0);
     renderer.setMethod(withGBuffer(MethodKind::Deferred, GBufferFormat::TwoComponent));
     renderer.render(0);
-    expectWithinContract("+z wall, two-component deferred", renderer, naiveHdr, naiveLdr);
+    expectWithinContract("+z wall, two-component deferred", renderer, naive);
 }
 
 TEST_F(GBufferLayouts, BytesOfEveryLayoutFollowTheFormat) {

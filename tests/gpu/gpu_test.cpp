@@ -80,25 +80,35 @@ Scene quadScene(const std::vector<TestQuad>& quads) {
 }
 
 FrameSettings smallFrame(const Scene& scene, int width, int height) {
-    FrameSettings s;
-    s.width = width;
-    s.height = height;
-    s.camera = cameraFromPose(scene.suggestedView.value_or(framingView(scene.bounds)));
-    fitClipPlanes(s.camera, scene.bounds);
+    FrameSettings s = smallFrame(scene, scene.suggestedView.value_or(framingView(scene.bounds)), width, height);
     s.animation = verticalDrift(lightVolume(scene.bounds), 0.5f);
     return s;
 }
 
-ImageDifference expectWithinContract(const std::string& label, const FrameRenderer& renderer, const FloatImage& referenceHdr,
-                                     const RgbaImage& referenceLdr) {
-    const ImageDifference hdr = compareImages(renderer.readHdr(), referenceHdr);
+ReferenceFrame renderReference(FrameRenderer& renderer, std::uint32_t frame) {
+    renderer.render(frame);
+    return ReferenceFrame{renderer.readHdr(), renderer.readLdr()};
+}
+
+ImageDifference expectWithinContract(const std::string& label, const FrameRenderer& renderer, const ReferenceFrame& reference) {
+    const ImageDifference hdr = compareImages(renderer.readHdr(), reference.hdr);
     const RgbaImage ldr = renderer.readLdr();
-    const ImageDifference ldrDiff = compareImages(ldr, referenceLdr);
+    const ImageDifference ldrDiff = compareImages(ldr, reference.ldr);
     std::printf("%-44s max8 %.4f  psnr %.1f dB  bad %.4f\n", label.c_str(), ldrDiff.maxAbs * 255.0, hdr.psnrDb,
                 ldrDiff.badPixelShare);
-    EXPECT_LE(ldrDiff.maxAbs, 1.0 / 255.0 + 1e-9) << label << ": images in " << writeFailureImages(label, ldr, referenceLdr);
+    EXPECT_LE(ldrDiff.maxAbs, 1.0 / 255.0 + 1e-9) << label << ": images in " << writeFailureImages(label, ldr, reference.ldr);
     EXPECT_GE(hdr.psnrDb, 50.0) << label;
     return hdr;
+}
+
+FrameSettings smallFrame(const Scene& scene, const CameraPose& pose, int width, int height) {
+    FrameSettings s;
+    s.width = width;
+    s.height = height;
+    s.camera = cameraFromPose(pose);
+    fitClipPlanes(s.camera, scene.bounds);
+    s.animation = verticalDrift(lightVolume(scene.bounds), 0.0f);
+    return s;
 }
 
 int runManylights(const std::string& args, std::string& output, const std::string& workingDir, const std::string& wrapper) {

@@ -47,12 +47,21 @@ Scene quadScene(const std::vector<TestQuad>& quads);
 
 // Frame settings for a scene at a small size, the scene's suggested camera, clip planes fitted.
 FrameSettings smallFrame(const Scene& scene, int width, int height);
+// The same from `pose`, the lights still (a scene built in a test has no suggested view).
+FrameSettings smallFrame(const Scene& scene, const CameraPose& pose, int width, int height);
+
+// A frame kept to compare others with: float and 8-bit output.
+struct ReferenceFrame {
+    FloatImage hdr;
+    RgbaImage ldr;
+};
+// Renders animation frame `frame` with the renderer's current method (naive, as built) and keeps it.
+ReferenceFrame renderReference(FrameRenderer& renderer, std::uint32_t frame);
 
 // The accuracy contract against the reference frame (design.md): max error <= 1/255 on the
 // 8-bit output and PSNR >= 50 dB on the float output. Expects both, prints the numbers under
 // `label`, writes the images on failure; returns the float difference.
-ImageDifference expectWithinContract(const std::string& label, const FrameRenderer& renderer, const FloatImage& referenceHdr,
-                                     const RgbaImage& referenceLdr);
+ImageDifference expectWithinContract(const std::string& label, const FrameRenderer& renderer, const ReferenceFrame& reference);
 
 // Runs the manylights executable with `args` (a shell-quoted string) in `workingDir` (if not
 // empty), behind `wrapper` if given (e.g. "xvfb-run -a", "env -u DISPLAY"); returns the exit
