@@ -72,17 +72,6 @@ void methodSection(ViewSettings& s, PanelEdits& edits) {
     }
     ImGui::EndDisabled();
 
-    ImGui::BeginDisabled(s.method.kind != MethodKind::Deferred && s.method.kind != MethodKind::Visibility);
-    int gbuffer = static_cast<int>(s.method.gbuffer);
-    if (comboOf("G-buffer", gbuffer, gbufferFormatNames())) {
-        s.method.gbuffer = static_cast<GBufferFormat>(gbuffer);
-        edits.method = true;
-    }
-    ImGui::EndDisabled();
-    ImGui::BeginDisabled(s.method.kind != MethodKind::ForwardPlus);
-    if (ImGui::Checkbox("depth pre-pass (Forward+)", &s.method.prepass)) edits.method = true;
-    ImGui::EndDisabled();
-
     ImGui::BeginDisabled(s.method.kind == MethodKind::Naive);
     int view = static_cast<int>(s.method.clustering.view);
     if (comboOf("debug view", view, debugViewNames())) {
@@ -106,6 +95,20 @@ void lightsSection(ViewSettings& s, const ViewStatistics& stats, PanelEdits& edi
     ImGui::SetNextItemWidth(kItemWidth - ImGui::GetItemRectSize().x - ImGui::GetStyle().ItemSpacing.x);
     ImGui::SliderFloat("speed", &s.animationSpeed, 0.0f, 4.0f, "%.2fx");
     ImGui::SliderFloat("exposure", &s.exposure, 0.05f, 20.0f, "%.2f", ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
+}
+
+// The shading options (issue 5): closed at start, so the panel keeps its height.
+void shadingSection(ViewSettings& s, PanelEdits& edits) {
+    ImGui::BeginDisabled(s.method.kind != MethodKind::Deferred && s.method.kind != MethodKind::Visibility);
+    int gbuffer = static_cast<int>(s.method.gbuffer);
+    if (comboOf("G-buffer", gbuffer, gbufferFormatNames())) {
+        s.method.gbuffer = static_cast<GBufferFormat>(gbuffer);
+        edits.method = true;
+    }
+    ImGui::EndDisabled();
+    ImGui::BeginDisabled(s.method.kind != MethodKind::ForwardPlus);
+    if (ImGui::Checkbox("depth pre-pass (Forward+)", &s.method.prepass)) edits.method = true;
+    ImGui::EndDisabled();
     ImGui::Checkbox("specular (Blinn-Phong)", &s.specular);
     ImGui::Checkbox("bloom", &s.bloom.enabled);
     ImGui::BeginDisabled(!s.bloom.enabled);
@@ -263,6 +266,7 @@ PanelEdits drawViewPanel(ViewSettings& settings, const ViewStatistics& stats) {
         if (ImGui::CollapsingHeader("Method", ImGuiTreeNodeFlags_DefaultOpen)) methodSection(settings, edits);
         if (ImGui::CollapsingHeader("Lights", ImGuiTreeNodeFlags_DefaultOpen)) lightsSection(settings, stats, edits);
         if (ImGui::CollapsingHeader("Cluster grid", ImGuiTreeNodeFlags_DefaultOpen)) gridSection(settings, edits);
+        if (ImGui::CollapsingHeader("Shading")) shadingSection(settings, edits);
         if (ImGui::CollapsingHeader("Camera and window", ImGuiTreeNodeFlags_DefaultOpen)) cameraSection(settings, stats, edits);
         if (ImGui::CollapsingHeader("Keys")) keysSection();
         ImGui::PopItemWidth();
