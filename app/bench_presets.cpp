@@ -99,7 +99,26 @@ constexpr const char* kOptions = R"json({
   ]
 })json";
 
-constexpr Preset kPresets[] = {{"quick", kQuick}, {"seeds", kSeeds}, {"scale", kScale}, {"options", kOptions}};
+
+// culling: the light-vs-cluster tests, per-cluster assignment and normal cones (issue 5) on
+// the atrium at 1024 lights and 640x360, every point against naive (the table in the README).
+constexpr const char* kCulling = R"json({
+  "name": "culling",
+  "description": "The light-vs-cluster tests (aabb, sphere, cone), per-cluster against per-light assignment, and normal cones against active clusters only, on the atrium at 1024 lights and 640x360; naive is the reference of every point.",
+  "run": {"warmup": 1, "timed_frames": 3, "frame": 60, "naive_budget": 1e9},
+  "defaults": {"scene": "atrium", "size": "640x360", "lights": 1024},
+  "experiments": [
+    {"name": "cull", "description": "the three cull tests: references, false positives, assignment time",
+     "method": "deferred", "cull": ["aabb", "sphere", "cone"]},
+    {"name": "assign", "description": "one invocation per cluster over all lights (seed 003)",
+     "method": "deferred", "assign": "per-cluster"},
+    {"name": "normal_cones", "description": "lists per (cluster, normal bin) against active clusters only",
+     "method": ["deferred", "visibility"], "active_only": true, "normal_cones": [false, true]}
+  ]
+})json";
+
+constexpr Preset kPresets[] = {{"quick", kQuick},     {"seeds", kSeeds},     {"scale", kScale},
+                               {"culling", kCulling}, {"options", kOptions}};
 
 }  // namespace
 

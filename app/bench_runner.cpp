@@ -8,6 +8,7 @@
 
 #include "app/sample_spread.h"
 #include "renderer/clustering/clustered_lighting.h"
+#include "renderer/clustering/cull_accuracy.h"
 #include "renderer/gl/debug_output.h"
 #include "renderer/gl/gl_api.h"
 #include "renderer/image_compare.h"
@@ -97,6 +98,8 @@ BenchRow configColumns(const BenchPoint& p, int index, std::uint32_t frame, cons
     row["assign"] = clustered(o.assign);
     row["max_per_cluster"] = p.capped ? nlohmann::ordered_json(o.maxPerCluster) : nlohmann::ordered_json();
     row["active_only"] = clustered(o.activeOnly);
+    row["cull"] = clustered(o.cull);
+    row["normal_cones"] = p.gbuffered && !p.capped ? nlohmann::ordered_json(o.normalCones) : nlohmann::ordered_json();
     row["gbuffer"] = p.gbuffered ? nlohmann::ordered_json(o.gbuffer) : nlohmann::ordered_json();
     row["prepass"] = p.forwardPlus ? nlohmann::ordered_json(o.prepass) : nlohmann::ordered_json();
     row["resolve"] = p.deferred ? nlohmann::ordered_json(o.resolve) : nlohmann::ordered_json();
@@ -282,11 +285,21 @@ void BenchRunner::measureInto(BenchRow& row, const BenchPoint& point) {
         row["mean_lights_per_nonempty_cluster"] = s.meanLightsPerNonEmptyCluster;
         row["max_lights_per_cluster"] = s.maxLightsPerCluster;
         row["list_entries"] = s.listEntries;
+        // Sampled to 200,000 references: a CPU pass, outside the timed frames.
+        const CullAccuracy cull = measureCullAccuracy(*clustering, renderer_->lights().downloadAnimated(), renderer_->uniforms(), 200'000);
+        row["false_positive_share"] = cull.references ? double(cull.falsePositives) / double(cull.references) : 0.0;
+        row["normal_cone_pairs_removed"] = s.listsPerCluster > 1 ? nlohmann::ordered_json(s.normalConePairs - s.normalConePairsKept)
+                                                                 : nlohmann::ordered_json();
         row["overflow_clusters"] = s.overflowClusters;
         row["dropped_lights"] = s.droppedReferences;
         row["active_clusters"] = s.activeOnly ? nlohmann::ordered_json(s.activeClusters) : nlohmann::ordered_json();
         row["list_bytes"] = s.listBytes;
         row["grid_bytes"] = s.gridBytes;
+        if (s.zbin) {
+            row["zbin_mask_bytes"] = s.zbinStats.maskBytes;
+            row["zbin_lights_walked"] = s.zbinStats.meanWalkedPerPixel;
+            row["zbin_lights_shaded"] = s.zbinStats.meanPassedPerPixel;
+        }
     }
     row["gbuffer_bytes"] = renderer_->method().extraTargetBytes();
     row["target_bytes"] = renderer_->targets().bytes();

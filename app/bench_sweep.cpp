@@ -86,7 +86,7 @@ RadiusSpec asRadius(const json& v) {
 // ---- scene, a light set and a naive reference; method-level axes innermost.
 
 enum class ValueKind { Text, Integer, Number, Boolean, Radius, NumberOrAuto };
-enum class Applies { Always, Clustered, Deferred, GBuffered, ForwardPlus, Capped };
+enum class Applies { Always, Clustered, Deferred, GBuffered, ForwardPlus, Capped, ExactGBuffered };
 
 struct AxisDef {
     SweepAxis info;
@@ -185,7 +185,7 @@ const std::vector<AxisDef>& axisDefs() {
         {{"tiles_x", "--tiles-x", "tiles across the screen (tiles down follow, square)"}, ValueKind::Integer,
          Applies::Clustered,
          [](BenchPoint& p, const json& v) { p.frame.tilesX = static_cast<unsigned>(asInteger(v, 1, 1024)); }},
-        {{"assign", "--assign", "exact (count, scan, fill) or capped (fixed lists)"}, ValueKind::Text, Applies::Clustered,
+        {{"assign", "--assign", "exact (count, scan, fill), capped (fixed lists) per-cluster (one invocation per cluster over all lights) or zbin (sorted lights, z-bins, tile masks)"}, ValueKind::Text, Applies::Clustered,
          [](BenchPoint& p, const json& v) {
              p.capped = parseAssignMode(asText(v)) == AssignMode::Capped;
              p.frame.assign = v.get<std::string>();
@@ -201,6 +201,13 @@ const std::vector<AxisDef>& axisDefs() {
          }},
         {{"active_only", "--active-only", "assign only to clusters holding a visible sample: on, off"},
          ValueKind::Boolean, Applies::Clustered, [](BenchPoint& p, const json& v) { p.frame.activeOnly = asBoolean(v); }},
+        {{"cull", "--cull", "light-vs-cluster test: aabb, sphere, cone"}, ValueKind::Text, Applies::Clustered,
+         [](BenchPoint& p, const json& v) {
+             (void)parseCullMode(asText(v));
+             p.frame.cull = v.get<std::string>();
+         }},
+        {{"normal_cones", "--normal-cones", "deferred and visibility, exact lists: lists per (cluster, normal bin): on, off"},
+         ValueKind::Boolean, Applies::ExactGBuffered, [](BenchPoint& p, const json& v) { p.frame.normalCones = asBoolean(v); }},
     };
     return defs;
 }
@@ -225,6 +232,7 @@ bool applies(const AxisDef& axis, const BenchPoint& p) {
     case Applies::GBuffered: return p.gbuffered;
     case Applies::ForwardPlus: return p.forwardPlus;
     case Applies::Capped: return p.capped;
+    case Applies::ExactGBuffered: return p.gbuffered && !p.capped;  // normal_cones: exact lists of a G-buffer
     }
     return true;
 }
@@ -302,6 +310,8 @@ std::string describePoint(const BenchPoint& p) {
         if (p.capped) s += " cap " + std::to_string(o.maxPerCluster);
         s += ", wg " + std::to_string(o.workgroup);
         if (o.activeOnly) s += ", active only";
+        if (o.cull != FrameOptions{}.cull) s += ", cull " + o.cull;
+        if (o.normalCones) s += ", normal cones";
     }
     if (p.deferred) s += ", " + o.resolve + " resolve";
     if (p.gbuffered) s += ", " + o.gbuffer + " G-buffer";
@@ -460,9 +470,11 @@ Sweep expandSweep(const json& doc, const json& overrides, const std::vector<std:
                 const FrameOptions d;
                 p.frame.tilesX = d.tilesX, p.frame.slices = d.slices, p.frame.slicing = d.slicing;
                 p.frame.workgroup = d.workgroup, p.frame.assign = d.assign, p.frame.activeOnly = d.activeOnly;
+                p.frame.cull = d.cull;
                 p.capped = false;
             }
             if (!p.capped) p.frame.maxPerCluster = FrameOptions{}.maxPerCluster;
+            if (!p.gbuffered || p.capped) p.frame.normalCones = false;
             if (!p.deferred) p.frame.resolve = FrameOptions{}.resolve;
             if (!p.gbuffered) p.frame.gbuffer = FrameOptions{}.gbuffer;
             if (!p.forwardPlus) p.frame.prepass = FrameOptions{}.prepass;

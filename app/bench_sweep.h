@@ -59,7 +59,7 @@ struct BenchPoint {
     RadiusSpec radius;        // resolved against the scene when the point runs
     bool clustered = false;   // forward-plus or deferred: the grid axes apply
     bool deferred = false;    // resolve applies
-    bool gbuffered = false;   // deferred or visibility: gbuffer applies
+    bool gbuffered = false;   // deferred or visibility: gbuffer and normal_cones apply
     bool forwardPlus = false; // prepass applies
     bool capped = false;      // max_per_cluster applies
 };

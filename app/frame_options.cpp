@@ -34,9 +34,11 @@ void addFrameOptions(CLI::App& cmd, FrameOptions& o) {
     grid->add_option("--slices", o.slices, "depth slices")->capture_default_str();
     grid->add_option("--slicing", o.slicing, "linear, log (near to far plane), or fitted (log over the visible depth range)")->capture_default_str();
     grid->add_option("--workgroup", o.workgroup, "compute workgroup size of the light assignment")->capture_default_str();
-    grid->add_option("--assign", o.assign, "exact (count, prefix sum, fill; no cap) or capped (fixed lists, the seeds' baseline)")->capture_default_str();
+    grid->add_option("--assign", o.assign, "exact (count, prefix sum, fill; no cap), capped (fixed lists, the seeds' baseline) per-cluster (one invocation per cluster over all lights; exact) or zbin (depth-sorted lights, z-bin ranges, tile bit masks)")->capture_default_str();
     grid->add_option("--max-per-cluster", o.maxPerCluster, "list size of --assign capped")->capture_default_str();
     grid->add_flag("--active-only", o.activeOnly, "assign lights only to clusters that hold a visible sample");
+    grid->add_option("--cull", o.cull, "light-vs-cluster test: aabb (sphere vs the cluster's AABB), sphere (vs its frustum planes), cone (seed 001's spherical-sliced cone)")->capture_default_str();
+    grid->add_flag("--normal-cones", o.normalCones, "deferred and visibility: lists per (cluster, view-space normal bin), skipping lights behind every surface of a cluster (Olsson et al. 2012)");
     grid->add_option("--resolve", o.resolve, "deferred lighting pass: compute or fragment")->capture_default_str();
     grid->add_option("--gbuffer", o.gbuffer, "G-buffer of deferred and visibility: standard (3 x RGBA16F, 24 B/px), packed "
                      "(1 x RGBA32UI, 16 B/px), two-component (normal z rebuilt, loses its sign: the documented failure case); "
@@ -101,6 +103,13 @@ PreparedFrame prepareFrame(const FrameOptions& o, const Scene* loaded) {
         throw std::invalid_argument("--max-per-cluster " + std::to_string(o.maxPerCluster) + ": must be between 1 and 16777216");
     clustering.maxPerCluster = o.maxPerCluster;
     clustering.activeOnly = o.activeOnly;
+    clustering.cull = parseCullMode(o.cull);
+    clustering.normalCones = o.normalCones;
+    if (o.normalCones && f.settings.method.kind != MethodKind::Deferred && f.settings.method.kind != MethodKind::Visibility)
+        throw std::invalid_argument("--normal-cones: needs --method deferred or visibility (" + o.method +
+                                    " knows no surface normal before it shades)");
+    if (o.normalCones && clustering.assign == AssignMode::Capped)
+        throw std::invalid_argument("--normal-cones: needs exact lists (--assign exact or per-cluster), not --assign capped");
     clustering.view = parseDebugView(o.view);
     if (f.settings.method.kind == MethodKind::Naive && clustering.view != DebugView::Shaded)
         throw std::invalid_argument("--view " + o.view + ": needs a clustered method (--method forward-plus or deferred)");

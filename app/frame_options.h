@@ -27,6 +27,8 @@ struct FrameOptions {
     std::string assign = "exact";
     unsigned maxPerCluster = 2048;
     bool activeOnly = false;
+    std::string cull = "aabb";
+    bool normalCones = false;
     std::string resolve = "compute";
     std::string gbuffer = "standard";
     std::string prepass = "on";

@@ -38,7 +38,11 @@ int runRender(const RenderOptions& o) {
     const ClusteredLighting* clustering = renderer.method().clustering();
     if (o.stats) {
         printShadingOptions(frame.settings);
-        if (clustering) printClusterStatistics(clustering->statistics());
+        if (clustering) {
+            const ClusterStatistics stats = clustering->statistics();
+            printClusterStatistics(stats);
+            printCullAccuracy(stats, measureCullAccuracy(*clustering, renderer.lights().downloadAnimated(), renderer.uniforms()));
+        }
         else std::printf("stats: naive shading builds no light lists (every fragment loops over all %zu lights)\n",
                          frame.lights.size());
     }

@@ -1,5 +1,7 @@
 #include "app/report.h"
 
+#include "glsl/include/bindings.h"
+
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
@@ -27,10 +29,26 @@ void printSceneSummary(const PreparedFrame& frame) {
 void printClusterStatistics(const ClusterStatistics& s) {
     std::printf("clusters: %u x %u x %u = %u, slicing %s over z %.3f..%.3f\n", s.tilesX, s.tilesY, s.slices, s.clusters,
                 s.slicing.c_str(), s.zNear, s.zFar);
+    if (s.zbin) {
+        const ZBinStatistics& z = s.zbinStats;
+        std::printf("zbin: %u bins (%d per slice), %u tiles, %u lights listed (culled to the view), %u words per tile\n",
+                    z.bins, ML_ZBIN_PER_SLICE, z.tiles, z.listedLights, z.wordsPerTile);
+        std::printf("zbin lights per pixel: walked %.2f (bin range), shaded %.2f (tile bit set)\n", z.meanWalkedPerPixel,
+                    z.meanPassedPerPixel);
+        std::printf("memory: zbin tile masks %.3f MiB, zbin total %.3f MiB\n", z.maskBytes / 1048576.0, z.totalBytes / 1048576.0);
+        return;
+    }
     std::printf("empty clusters: %.1f %%\n", 100.0 * s.emptyShare);
     std::printf("lights per cluster: mean %.2f (non-empty: %.2f), max %u\n", s.meanLightsPerCluster,
                 s.meanLightsPerNonEmptyCluster, s.maxLightsPerCluster);
     std::printf("list entries: %llu\n", static_cast<unsigned long long>(s.listEntries));
+    if (s.listsPerCluster > 1) {
+        const std::uint64_t removed = s.normalConePairs - s.normalConePairsKept;
+        std::printf("normal cones: lists per (cluster, normal bin), %u bins; of %llu light-cluster pairs in clusters with a visible "
+                    "sample, %llu (%.1f %%) face away from every occupied bin and are removed; shares and means above are per list\n",
+                    s.listsPerCluster, static_cast<unsigned long long>(s.normalConePairs), static_cast<unsigned long long>(removed),
+                    s.normalConePairs ? 100.0 * removed / s.normalConePairs : 0.0);
+    }
     std::printf("overflow: %u clusters over the cap, %llu light references dropped\n", s.overflowClusters,
                 static_cast<unsigned long long>(s.droppedReferences));
     if (s.activeOnly) std::printf("active clusters: %u (%.1f %%)\n", s.activeClusters, 100.0 * s.activeClusters / std::max(1u, s.clusters));
@@ -58,6 +76,14 @@ void printShadingOptions(const FrameSettings& s) {
         std::printf("bloom: threshold %.3g, strength %.3g, %.2f MiB at half resolution\n", s.bloom.threshold,
                     s.bloom.strength, bloomBytes / 1048576.0);
     else std::printf("bloom: off\n");
+}
+
+void printCullAccuracy(const ClusterStatistics& s, const CullAccuracy& a) {
+    std::printf("cull %s: %llu references, of which %llu (%.1f %%) reach no point of their cluster (exact sphere-frustum distance",
+                s.cull.c_str(), static_cast<unsigned long long>(a.references), static_cast<unsigned long long>(a.falsePositives),
+                a.references ? 100.0 * a.falsePositives / a.references : 0.0);
+    if (a.clusterStride > 1) std::printf("; sampled: one cluster in %u, %u of %u", a.clusterStride, a.clustersExamined, s.clusters);
+    std::printf(")\n");
 }
 
 void writeJsonFile(const std::string& path, const nlohmann::json& doc) {

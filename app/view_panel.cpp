@@ -138,9 +138,10 @@ void gridSection(ViewSettings& s, PanelEdits& edits) {
         c.grid.workgroup = static_cast<std::uint32_t>(std::stoul(groups[group]));
         edits.method = true;
     }
-    int assign = c.assign == AssignMode::Exact ? 0 : 1;
-    if (comboOf("assignment", assign, {assignModeName(AssignMode::Exact), assignModeName(AssignMode::Capped)})) {
-        c.assign = assign == 0 ? AssignMode::Exact : AssignMode::Capped;
+    int assign = static_cast<int>(c.assign);
+    if (comboOf("assignment", assign, {assignModeName(AssignMode::Exact), assignModeName(AssignMode::Capped),
+                                       assignModeName(AssignMode::PerCluster), assignModeName(AssignMode::ZBin)})) {
+        c.assign = static_cast<AssignMode>(assign);
         edits.method = true;
     }
     if (c.assign == AssignMode::Capped) {
@@ -149,6 +150,18 @@ void gridSection(ViewSettings& s, PanelEdits& edits) {
         c.maxPerCluster = static_cast<std::uint32_t>(cap);
     }
     if (ImGui::Checkbox("active clusters only", &c.activeOnly)) edits.method = true;
+    // Normal bins need a normal before shading (deferred, visibility) and uncapped lists.
+    const bool gbufferLit = s.method.kind == MethodKind::Deferred || s.method.kind == MethodKind::Visibility;
+    ImGui::SameLine();
+    ImGui::BeginDisabled(!gbufferLit || c.assign == AssignMode::Capped);
+    if (ImGui::Checkbox("normal cones", &c.normalCones)) edits.method = true;
+    ImGui::EndDisabled();
+    int cull = static_cast<int>(c.cull);
+    if (comboOf("cull test", cull, {cullModeName(CullMode::Aabb), cullModeName(CullMode::Sphere), cullModeName(CullMode::Cone)})) {
+        c.cull = static_cast<CullMode>(cull);
+        edits.method = true;
+    }
+    if (c.normalCones && !gbufferLit) ImGui::TextColored(kDim, "normal cones: off for %s (no normal before shading)", methodName(s.method.kind).c_str());
     ImGui::EndDisabled();
 }
 
@@ -202,10 +215,18 @@ void statisticsSection(const ViewStatistics& st) {
         const ClusterStatistics& c = *st.clusters;
         ImGui::Text("clusters %u x %u x %u = %u (%s)", c.tilesX, c.tilesY, c.slices, c.clusters, c.slicing.c_str());
         ImGui::Text("sliced depth %.3f .. %.3f", c.zNear, c.zFar);
+        if (c.zbin) {
+            const ZBinStatistics& z = c.zbinStats;
+            ImGui::Text("zbin: %u bins, %u tiles x %u words, %u lights listed", z.bins, z.tiles, z.wordsPerTile, z.listedLights);
+            ImGui::Text("lights per pixel: walked %.1f, shaded %.1f", z.meanWalkedPerPixel, z.meanPassedPerPixel);
+            ImGui::Text("zbin memory: masks %s, total %s", mebibytes(z.maskBytes).c_str(), mebibytes(z.totalBytes).c_str());
+        } else {
         ImGui::Text("empty clusters %.1f %%", 100.0 * c.emptyShare);
         ImGui::Text("lights per cluster: mean %.1f (non-empty %.1f), max %u", c.meanLightsPerCluster,
                     c.meanLightsPerNonEmptyCluster, c.maxLightsPerCluster);
-        ImGui::Text("list entries %llu", static_cast<unsigned long long>(c.listEntries));
+        ImGui::Text("list entries %llu (cull %s)", static_cast<unsigned long long>(c.listEntries), c.cull.c_str());
+        if (c.listsPerCluster > 1 && c.normalConePairs > 0)
+            ImGui::Text("normal cones: %.1f %% of light-cluster pairs removed", 100.0 * double(c.normalConePairs - c.normalConePairsKept) / double(c.normalConePairs));
         if (c.overflowClusters > 0)
             ImGui::TextColored(kWarning, "overflow: %u clusters over the cap,\n%llu light references dropped",
                                c.overflowClusters, static_cast<unsigned long long>(c.droppedReferences));
@@ -213,6 +234,7 @@ void statisticsSection(const ViewStatistics& st) {
         if (c.activeOnly) ImGui::Text("active clusters %u (%.1f %%)", c.activeClusters, 100.0 * c.activeClusters / std::max(1u, c.clusters));
         else ImGui::TextColored(kDim, "active clusters: tick \"active clusters only\"");
         ImGui::Text("cluster memory: lists %s, grid %s", mebibytes(c.listBytes).c_str(), mebibytes(c.gridBytes).c_str());
+        }
     } else {
         ImGui::TextColored(kDim, "no clusters: naive shades %zu lights per pixel", st.lights);
     }
@@ -246,6 +268,8 @@ void keysSection() {
 MethodSettings effectiveMethod(const MethodSettings& chosen) {
     MethodSettings m = chosen;
     if (m.kind == MethodKind::Naive) m.clustering.view = DebugView::Shaded;
+    if ((m.kind != MethodKind::Deferred && m.kind != MethodKind::Visibility) || m.clustering.assign == AssignMode::Capped)
+        m.clustering.normalCones = false;
     return m;
 }
 
@@ -256,6 +280,9 @@ PanelEdits drawViewPanel(ViewSettings& settings, const ViewStatistics& stats) {
     const ImGuiWindowFlags flags = ImGuiWindowFlags_AlwaysAutoResize;
     ImGui::SetNextWindowPos(ImVec2(10.0f, 10.0f), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowBgAlpha(0.85f);
+    // Rows 1 px closer than ImGui's default, so the panel with every section's controls still
+    // ends above 580 px at the 640 px default window height.
+    ImGui::PushStyleVar(ImGuiStyleVar_ItemSpacing, ImVec2(ImGui::GetStyle().ItemSpacing.x, ImGui::GetStyle().ItemSpacing.y - 1.0f));
     if (ImGui::Begin("manylights", nullptr, flags)) {
         ImGui::PushItemWidth(kItemWidth);
         if (!stats.error.empty()) {
@@ -272,6 +299,7 @@ PanelEdits drawViewPanel(ViewSettings& settings, const ViewStatistics& stats) {
         ImGui::PopItemWidth();
     }
     ImGui::End();
+    ImGui::PopStyleVar();
 
     ImGui::SetNextWindowPos(ImVec2(ImGui::GetIO().DisplaySize.x - 10.0f, 10.0f), ImGuiCond_FirstUseEver, ImVec2(1.0f, 0.0f));
     ImGui::SetNextWindowBgAlpha(0.85f);

@@ -1,65 +1,190 @@
 #version 450 core
-// Exact light assignment, fully parallel. Serial per-light loops over clusters leave the GPU
-// idle when lights are few or large and scale with the grid; here every (light, candidate
-// cluster) pair gets its own invocation:
+// Exact light assignment. Per light (--assign exact, the default), fully parallel: serial
+// per-light loops over clusters leave the GPU idle when lights are few or large and scale with
+// the grid, so every (light, candidate cluster) pair gets its own invocation:
 //   ML_EXACT_RANGES  (per light)      the light's block of candidate clusters and their number
 //   [prefix sum of candidates per light, on the host side of the pipeline]
 //   ML_EXACT_DISPATCH (one invocation) indirect dispatch arguments for the candidate passes
-//   ML_EXACT_COUNT   (per candidate)  sphere against the cluster's AABB; count per cluster
+//   ML_EXACT_COUNT   (per candidate)  the --cull test (include/light_cluster_test.glsl); count per list
 //   [prefix sum of counts: list offsets]
-//   ML_EXACT_FILL    (per candidate)  the same test; write the light into the cluster's list
+//   ML_EXACT_FILL    (per candidate)  the same test; write the light into the list
 // A candidate finds its light by binary search over the candidate offsets.
+// Per cluster (--assign per-cluster, seed 003): after ML_EXACT_RANGES, one invocation per
+// cluster loops over every light (a workgroup stages them through shared memory), keeping those
+// whose block holds the cluster and that pass the same test:
+//   ML_PER_CLUSTER_COUNT, [prefix sum], ML_PER_CLUSTER_FILL (lists come out in light order)
+// Both give the same lists, as sets. With --normal-cones (ML_NORMAL_CONES) a list belongs to a
+// (cluster, normal bin) key: a light that passes the cull test goes into each bin the
+// cluster's visible samples occupy whose samples' normal cone it may light (include/normal_bins.glsl).
 #include "include/bindings.h"
 #include "include/frame_uniforms.glsl"
 #include "include/lights.glsl"
 #include "include/cluster_grid.glsl"
 #include "include/light_cluster_range.glsl"
+#include "include/light_cluster_test.glsl"
+#include "include/normal_bins.glsl"
 
 #ifndef ML_WORKGROUP
 #define ML_WORKGROUP ML_ASSIGN_WORKGROUP
 #endif
 layout(local_size_x = ML_WORKGROUP) in;
 
-struct ClusterAabb { vec4 minPoint; vec4 maxPoint; };
-layout(std430, binding = ML_SSBO_CLUSTER_AABBS) readonly buffer ClusterAabbs { ClusterAabb aabbs[]; };
 layout(std430, binding = ML_SSBO_CLUSTER_COUNTS) buffer ClusterCounts { uint clusterCounts[]; };
 layout(std430, binding = ML_SSBO_CLUSTER_OFFSETS) readonly buffer ClusterOffsets { uint clusterOffsets[]; };
 layout(std430, binding = ML_SSBO_LIGHT_INDICES) writeonly buffer LightIndices { uint lightIndices[]; };
 layout(std430, binding = ML_SSBO_CLUSTER_ACTIVE) readonly buffer ClusterActive { uint clusterActive[]; };
 layout(std430, binding = ML_SSBO_FILL_CURSORS) buffer FillCursors { uint cursors[]; };
-// [0] dropped (capped only), [1] list entries, [2] candidates: totals written by the prefix sums
-layout(std430, binding = ML_SSBO_ASSIGN_STATS) buffer AssignStats { uint totals[4]; };
+// [0] dropped (capped only), [1] list entries, [2] candidates: totals written by the prefix sums;
+// --normal-cones: [3] pairs that pass the cull test in clusters holding a visible sample, [4] of
+// those, pairs kept in at least one normal bin
+// [5] running candidate sum and [6] its overflow flag (ranges pass; the scan's total wraps at 2^32)
+layout(std430, binding = ML_SSBO_ASSIGN_STATS) buffer AssignStats { uint totals[8]; };
 layout(std430, binding = ML_SSBO_LIGHT_RANGES) buffer LightRanges { uvec4 lightRanges[]; };  // lo.xyz, tiles across
 layout(std430, binding = ML_SSBO_LIGHT_VIEW) buffer LightView { vec4 lightView[]; };        // centre, radius
 layout(std430, binding = ML_SSBO_CANDIDATE_OFFSETS) buffer CandidateOffsets { uint candidateOffsets[]; };
 layout(std430, binding = ML_SSBO_DISPATCH) writeonly buffer DispatchArgs { uvec4 dispatchArgs; };
+layout(std430, binding = ML_SSBO_NORMAL_BIN_MASKS) readonly buffer NormalBinMasks { uint normalBinMasks[]; };
+layout(std430, binding = ML_SSBO_NORMAL_CONES) readonly buffer NormalCones { ivec4 normalCones[]; };
 
 uniform uint u_maxGroupsX;
 
 #if defined(ML_EXACT_RANGES)
+shared uint s_candidates;
+shared uint s_wrapped;
+
+// Adds to a 32-bit sum and flags a wrap: a million large lights can name more than 2^32
+// (light, cluster) candidates, which the 32-bit prefix sum would silently wrap.
+void addCandidates(uint count) {
+    uint before = atomicAdd(totals[5], count);
+    if (before > 0xFFFFFFFFu - count) atomicOr(totals[6], 1u);
+}
+
 void main() {
-    uint i = gl_GlobalInvocationID.x;
-    if (i >= lightCount()) return;
-    ClusterRange range;
-    uint candidates = 0u;
-    if (lightClusterRange(i, range)) {
-        uvec3 n = range.hi - range.lo + 1u;
-        candidates = n.x * n.y * n.z;
-        lightRanges[i] = uvec4(range.lo, (n.y << 16) | n.x);
-        lightView[i] = vec4(range.center, range.radius);
+    if (gl_LocalInvocationID.x == 0u) {
+        s_candidates = 0u;
+        s_wrapped = 0u;
     }
-    candidateOffsets[i] = candidates;
+    barrier();
+    uint i = gl_GlobalInvocationID.x;
+    uint candidates = 0u;
+    if (i < lightCount()) {
+        ClusterRange range;
+        if (lightClusterRange(i, range)) {
+            uvec3 n = range.hi - range.lo + 1u;
+            candidates = n.x * n.y * n.z;
+            lightRanges[i] = uvec4(range.lo, (n.y << 16) | n.x);
+            lightView[i] = vec4(range.center, range.radius);
+        }
+        candidateOffsets[i] = candidates;
+    }
+    // One global atomic per workgroup.
+    if (candidates > 0u && atomicAdd(s_candidates, candidates) > 0xFFFFFFFFu - candidates) s_wrapped = 1u;
+    barrier();
+    if (gl_LocalInvocationID.x == 0u) {
+        if (s_wrapped != 0u) atomicOr(totals[6], 1u);
+        else if (s_candidates > 0u) addCandidates(s_candidates);
+    }
 }
 #elif defined(ML_EXACT_DISPATCH)
 void main() {
     // At least one group (it finds nothing to do when there are no candidates); beyond the
     // device's limit in x, the rest goes to y.
+    if (totals[6] != 0u) totals[2] = 0u;  // wrapped: test nothing; the host reports it
     uint groups = max((totals[2] + ML_WORKGROUP - 1u) / ML_WORKGROUP, 1u);
     uint x = min(groups, u_maxGroupsX);
     dispatchArgs = uvec4(x, (groups + x - 1u) / x, 1u, 0u);
 }
 #else
-void main() {
+#if defined(ML_EXACT_COUNT) || defined(ML_PER_CLUSTER_COUNT)
+#define ML_COUNTING 1
+#endif
+
+#if defined(ML_NORMAL_CONES)
+// Pairs kept and removed by the normal cones, summed per workgroup before one global atomic.
+shared uint s_pairsTested, s_pairsKept;
+#endif
+
+// One list entry: counted, or written at the list's next slot.
+void addToList(uint key, uint light) {
+#if defined(ML_COUNTING)
+    atomicAdd(clusterCounts[key], 1u);
+#else
+    uint slot = atomicAdd(cursors[key], 1u);
+    lightIndices[clusterOffsets[key] + slot] = light;
+#endif
+}
+
+// A (light, cluster) pair that passed the cull test: into the cluster's list, or with normal
+// cones into the list of every occupied normal bin the light may face.
+void addPair(uint cluster, uint light, vec4 v) {
+#if defined(ML_NORMAL_CONES)
+    uint mask = normalBinMasks[cluster];
+    bool kept = false;
+    while (mask != 0u) {
+        uint bin = uint(findLSB(mask));
+        mask &= mask - 1u;
+        uint key = cluster * ML_NORMAL_BINS + bin;
+        if (!lightMayFaceNormalCone(normalConeOfList(normalCones[key]), aabbs[cluster].minPoint.xyz, aabbs[cluster].maxPoint.xyz, v.xyz))
+            continue;
+        addToList(key, light);
+        kept = true;
+    }
+#if defined(ML_COUNTING)
+    if (normalBinMasks[cluster] != 0u) {
+        atomicAdd(s_pairsTested, 1u);
+        if (kept) atomicAdd(s_pairsKept, 1u);
+    }
+#endif
+#else
+    addToList(cluster, light);
+#endif
+}
+
+// Clusters the assignment skips: --active-only clusters without a visible sample; with normal
+// cones, clusters whose samples occupy no bin (the same ones).
+bool clusterSkipped(uint cluster) {
+#if defined(ML_NORMAL_CONES)
+    return normalBinMasks[cluster] == 0u;
+#else
+    return grid.options.z != 0u && clusterActive[cluster] == 0u;
+#endif
+}
+
+#if defined(ML_PER_CLUSTER_COUNT) || defined(ML_PER_CLUSTER_FILL)
+shared vec4 s_view[ML_WORKGROUP];   // centre, radius
+shared uvec4 s_block[ML_WORKGROUP]; // first tile x, y, slice; w: tiles across | tiles down << 16 (0: reaches none)
+shared uint s_slices[ML_WORKGROUP];
+
+void assignPairs() {
+    uint cluster = gl_GlobalInvocationID.x;
+    bool valid = cluster < grid.dims.w && !clusterSkipped(cluster);
+    uvec3 c = uvec3(cluster % grid.dims.x, (cluster / grid.dims.x) % grid.dims.y, cluster / (grid.dims.x * grid.dims.y));
+    uint count = lightCount();
+    for (uint first = 0u; first < count; first += ML_WORKGROUP) {
+        uint i = first + gl_LocalInvocationID.x;
+        // candidateOffsets holds each light's candidate count here (no prefix sum in this mode).
+        uint candidates = i < count ? candidateOffsets[i] : 0u;
+        s_block[gl_LocalInvocationID.x] = candidates > 0u ? lightRanges[i] : uvec4(0u);
+        s_view[gl_LocalInvocationID.x] = candidates > 0u ? lightView[i] : vec4(0.0);
+        if (candidates > 0u) {
+            uvec4 b = lightRanges[i];
+            s_slices[gl_LocalInvocationID.x] = candidates / ((b.w & 0xFFFFu) * (b.w >> 16));
+        }
+        barrier();
+        uint batch = min(uint(ML_WORKGROUP), count - first);
+        for (uint k = 0u; valid && k < batch; ++k) {
+            uvec4 b = s_block[k];
+            if (b.w == 0u) continue;
+            uvec3 size = uvec3(b.w & 0xFFFFu, b.w >> 16, s_slices[k]);
+            if (any(lessThan(c, b.xyz)) || any(greaterThanEqual(c, b.xyz + size))) continue;
+            vec4 v = s_view[k];
+            if (sphereReachesCluster(cluster, c, v.xyz, v.w)) addPair(cluster, first + k, v);
+        }
+        barrier();
+    }
+}
+#else
+void assignPairs() {
     uint k = (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * ML_WORKGROUP + gl_LocalInvocationID.x;
     if (k >= totals[2]) return;
     // The light whose candidates hold k: the last offset <= k (zero-candidate lights share
@@ -76,15 +201,29 @@ void main() {
     uint nx = range.w & 0xFFFFu, ny = range.w >> 16;
     uvec3 c = range.xyz + uvec3(local % nx, (local / nx) % ny, local / (nx * ny));
     uint cluster = clusterIndex(c);
-    if (grid.options.z != 0u && clusterActive[cluster] == 0u) return;
+    if (clusterSkipped(cluster)) return;
     vec4 v = lightView[light];
-    vec3 d = max(max(aabbs[cluster].minPoint.xyz - v.xyz, v.xyz - aabbs[cluster].maxPoint.xyz), vec3(0.0));
-    if (dot(d, d) > v.w * v.w) return;
-#if defined(ML_EXACT_COUNT)
-    atomicAdd(clusterCounts[cluster], 1u);
+    if (sphereReachesCluster(cluster, c, v.xyz, v.w)) addPair(cluster, light, v);
+}
+#endif
+
+void main() {
+#if defined(ML_NORMAL_CONES)
+    if (gl_LocalInvocationIndex == 0u) {
+        s_pairsTested = 0u;
+        s_pairsKept = 0u;
+    }
+    barrier();
+    assignPairs();
+#if defined(ML_COUNTING)
+    barrier();
+    if (gl_LocalInvocationIndex == 0u && s_pairsTested > 0u) {
+        atomicAdd(totals[3], s_pairsTested);
+        atomicAdd(totals[4], s_pairsKept);
+    }
+#endif
 #else
-    uint slot = atomicAdd(cursors[cluster], 1u);
-    lightIndices[clusterOffsets[cluster] + slot] = light;
+    assignPairs();
 #endif
 }
 #endif

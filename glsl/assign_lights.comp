@@ -1,20 +1,19 @@
 #version 450 core
 // Capped light assignment, the seeds' baseline: one invocation per light walks its block of
-// clusters (include/light_cluster_range.glsl), tests each cluster's AABB against its sphere,
+// clusters (include/light_cluster_range.glsl), tests each cluster against its sphere (--cull),
 // and appends itself to the cluster's fixed-size list; references past the cap are counted.
 #include "include/bindings.h"
 #include "include/frame_uniforms.glsl"
 #include "include/lights.glsl"
 #include "include/cluster_grid.glsl"
 #include "include/light_cluster_range.glsl"
+#include "include/light_cluster_test.glsl"
 
 #ifndef ML_WORKGROUP
 #define ML_WORKGROUP ML_ASSIGN_WORKGROUP
 #endif
 layout(local_size_x = ML_WORKGROUP) in;
 
-struct ClusterAabb { vec4 minPoint; vec4 maxPoint; };
-layout(std430, binding = ML_SSBO_CLUSTER_AABBS) readonly buffer ClusterAabbs { ClusterAabb aabbs[]; };
 layout(std430, binding = ML_SSBO_CLUSTER_COUNTS) buffer ClusterCounts { uint clusterCounts[]; };
 layout(std430, binding = ML_SSBO_LIGHT_INDICES) writeonly buffer LightIndices { uint lightIndices[]; };
 layout(std430, binding = ML_SSBO_CLUSTER_ACTIVE) readonly buffer ClusterActive { uint clusterActive[]; };
@@ -26,7 +25,6 @@ void main() {
     if (i >= lightCount()) return;
     ClusterRange range;
     if (!lightClusterRange(i, range)) return;
-    float r2 = range.radius * range.radius;
     bool activeOnly = grid.options.z != 0u;
     uint cap = grid.options.y;
     for (uint s = range.lo.z; s <= range.hi.z; ++s) {
@@ -34,8 +32,7 @@ void main() {
             for (uint x = range.lo.x; x <= range.hi.x; ++x) {
                 uint cluster = clusterIndex(uvec3(x, y, s));
                 if (activeOnly && clusterActive[cluster] == 0u) continue;
-                vec3 d = max(max(aabbs[cluster].minPoint.xyz - range.center, range.center - aabbs[cluster].maxPoint.xyz), vec3(0.0));
-                if (dot(d, d) > r2) continue;
+                if (!sphereReachesCluster(cluster, uvec3(x, y, s), range.center, range.radius)) continue;
                 uint slot = atomicAdd(clusterCounts[cluster], 1u);
                 if (slot < cap) lightIndices[cluster * cap + slot] = i;
                 else atomicAdd(dropped, 1u);

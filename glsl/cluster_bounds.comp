@@ -18,20 +18,14 @@ void main() {
     uint y = (cluster / grid.dims.x) % grid.dims.y;
     uint slice = cluster / (grid.dims.x * grid.dims.y);
 
-    vec2 size = u_viewport.xy;
-    vec2 p0 = min(vec2(x, y) * grid.tile.x, size);
-    vec2 p1 = min(vec2(x + 1u, y + 1u) * grid.tile.x, size);
-    float z0 = slice == 0u ? min(grid.tile.z, grid.slicing.x) : sliceBoundary(slice);
-    float z1 = slice + 1u == grid.dims.z ? max(grid.tile.w, grid.slicing.y) : sliceBoundary(slice + 1u);
-    z0 *= 1.0 - 1e-4;
-    z1 *= 1.0 + 1e-4;
+    vec4 ndc = clusterTileNdc(uvec2(x, y));
+    vec2 z = clusterDepthExtent(slice);
 
     vec3 lo = vec3(1e30), hi = vec3(-1e30);
     for (int corner = 0; corner < 8; ++corner) {
-        vec2 px = vec2((corner & 1) != 0 ? p1.x : p0.x, (corner & 2) != 0 ? p1.y : p0.y);
-        float z = (corner & 4) != 0 ? z1 : z0;
-        vec2 ndc = px / size * 2.0 - 1.0;
-        vec3 v = vec3(ndc.x * z / u_proj[0][0], ndc.y * z / u_proj[1][1], -z);
+        vec2 c = vec2((corner & 1) != 0 ? ndc.z : ndc.x, (corner & 2) != 0 ? ndc.w : ndc.y);
+        float d = (corner & 4) != 0 ? z.y : z.x;
+        vec3 v = vec3(c.x * d / u_proj[0][0], c.y * d / u_proj[1][1], -d);
         lo = min(lo, v);
         hi = max(hi, v);
     }

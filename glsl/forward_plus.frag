@@ -7,6 +7,7 @@
 #include "include/shading.glsl"
 #include "include/material.glsl"
 #include "include/cluster_grid.glsl"
+#include "include/normal_bins.glsl"
 #include "include/cluster_lists.glsl"
 #include "include/debug_views.glsl"
 
@@ -22,6 +23,6 @@ void main() {
     uint cluster = clusterForFragment(gl_FragCoord.xy, viewDepth);
     uint view = grid.options.w;
     vec3 color = vec3(0.0);
-    if (view == ML_VIEW_SHADED || view == ML_VIEW_OVERFLOW) color = shadeAmbient(s) + shadeClusterLights(s, viewDir, cluster);
+    if (view == ML_VIEW_SHADED || view == ML_VIEW_OVERFLOW) color = shadeAmbient(s) + shadeClusterLights(s, viewDir, cluster, viewDepth);
     o_color = vec4(debugViewColor(view, s, cluster, viewDepth, color), 1.0);
 }

@@ -19,5 +19,7 @@ void main() {
     v_worldPos = a_position;
     v_worldNormal = a_normal;
     v_uv = a_uv;
-    gl_Position = u_viewProj * vec4(a_position, 1.0);
+    // Camera-relative: a_position - eye is exact for nearby geometry even far from the origin,
+    // where viewProj * a_position would cancel large terms and shift depth (issue 7, 1e5 units).
+    gl_Position = u_proj * vec4(mat3(u_view) * (a_position - u_cameraPos.xyz), 1.0);
 }

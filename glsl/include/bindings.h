@@ -28,6 +28,23 @@
 #define ML_SSBO_LIGHT_VIEW 17      // exact assignment: each light's view-space centre and radius
 #define ML_SSBO_CANDIDATE_OFFSETS 18   // exact assignment: prefix sum of candidates per light
 #define ML_SSBO_DISPATCH 19        // exact assignment: indirect dispatch arguments of the test passes
+// Radix sort (glsl/radix_sort.comp) and z-binning (--assign zbin, glsl/zbin_assign.comp). Kept
+// below 32: llvmpipe offers 32 storage-buffer bindings.
+#define ML_SSBO_RADIX_KEYS_IN 20       // keys to sort (one pass reads these...)
+#define ML_SSBO_RADIX_VALUES_IN 21     // ...and their values
+#define ML_SSBO_RADIX_KEYS_OUT 22      // (...and scatters them here)
+#define ML_SSBO_RADIX_VALUES_OUT 23
+#define ML_SSBO_RADIX_HISTOGRAMS 24    // digit counts per workgroup, digit-major, then their prefix sum
+#define ML_SSBO_ZBIN_PARAMS 25         // words per tile, visible lights
+#define ML_SSBO_ZBIN_RANGES 26         // per z-bin: first and last sorted index of the lights reaching it
+#define ML_SSBO_ZBIN_TILE_MASKS 27     // per tile: one bit per sorted light
+#define ML_SSBO_ZBIN_SORTED_LIGHTS 28  // light index at each sorted position
+#define ML_SSBO_ZBIN_SORTED_VIEW 29    // view-space centre and radius at each sorted position
+#define ML_SSBO_ZBIN_STATS 30          // --stats: lights walked and passing, per workgroup
+// --normal-cones (exact lists only, so never in the same frame as z-binning's passes). 30 is
+// shared with ML_SSBO_ZBIN_STATS: every pass binds what it reads before it runs.
+#define ML_SSBO_NORMAL_BIN_MASKS 31    // --normal-cones: per cluster, a bit per normal bin its visible samples fall in
+#define ML_SSBO_NORMAL_CONES 30        // --normal-cones: per (cluster, bin) list, the cone of its samples' normals
 
 // Texture units
 #define ML_TEX_BASE_COLOR 0
@@ -55,6 +72,18 @@
 #define ML_CLUSTER_WORKGROUP 64
 // Default light-assignment workgroup size (--workgroup overrides it).
 #define ML_ASSIGN_WORKGROUP 64
+// Light-list sort (GPU variant): threads per list, and the longest list rank-sorted in shared
+// memory (4 KiB, small enough for full occupancy); longer lists sort in place in the buffer.
+#define ML_SORT_WORKGROUP 64
+#define ML_SORT_SHARED_CAPACITY 1024
+// Radix sort: 8-bit digits (256 buckets, one per thread), each workgroup sorts a block of
+// ML_RADIX_WORKGROUP x ML_RADIX_ROUNDS keys.
+#define ML_RADIX_WORKGROUP 256
+#define ML_RADIX_ROUNDS 4
+// Z-binning: z-bins per cluster slice (the bins split each slice of the grid's slicing evenly in f(z)).
+#define ML_ZBIN_PER_SLICE 8
+// Z-binning: workgroup size of the per-light passes and of the tile-mask pass (words per group).
+#define ML_ZBIN_WORKGROUP 64
 
 // --slicing modes, as stored in the cluster grid buffer.
 #define ML_SLICING_LINEAR 0
@@ -70,6 +99,19 @@
 #define ML_VIEW_ALBEDO 5
 #define ML_VIEW_NORMAL 6
 #define ML_VIEW_DEPTH 7
+
+// --cull: the light-vs-cluster test of the assignment (the ML_CULL define of its shaders).
+#define ML_CULL_AABB 0    // sphere against the cluster's view-space AABB
+#define ML_CULL_SPHERE 1  // sphere against the cluster's six frustum planes
+#define ML_CULL_CONE 2    // seed 001: the tile's cone against the sphere's, then spherical depth slices
+
+// --normal-cones (Olsson et al. 2012): view-space normal directions quantised on a cube, each
+// face cut into CELLS x CELLS cells; a cluster's lists are kept per (cluster, bin). 6 * 2 * 2
+// = 24 bins fit one uint mask per cluster.
+#define ML_NORMAL_BIN_CELLS 2
+#define ML_NORMAL_BINS 24
+// Sample normals are summed per list in fixed point, this many units per unit length.
+#define ML_NORMAL_SUM_SCALE 1024.0
 
 // Tonemap compute tile.
 #define ML_TONEMAP_TILE 8

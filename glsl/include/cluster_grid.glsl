@@ -40,6 +40,23 @@ float sliceBoundary(uint k) {
     return grid.tile.y > 0.5 ? n * pow(f / n, t) : n + (f - n) * t;
 }
 
+// The view depths a cluster's volume spans: the first and last slice reach the camera's near
+// and far planes, and both ends are widened by a relative epsilon so a fragment's slice lookup
+// can never land outside the volume its lights were tested against (mirrors ml::clusterFrustum).
+vec2 clusterDepthExtent(uint slice) {
+    float z0 = slice == 0u ? min(grid.tile.z, grid.slicing.x) : sliceBoundary(slice);
+    float z1 = slice + 1u == grid.dims.z ? max(grid.tile.w, grid.slicing.y) : sliceBoundary(slice + 1u);
+    return vec2(z0 * (1.0 - 1e-4), z1 * (1.0 + 1e-4));
+}
+
+// The tile's rectangle in NDC: xy the lower-left corner, zw the upper-right (clamped to the
+// screen; needs frame_uniforms).
+vec4 clusterTileNdc(uvec2 tile) {
+    vec2 p0 = min(vec2(tile) * grid.tile.x, u_viewport.xy);
+    vec2 p1 = min(vec2(tile + 1u) * grid.tile.x, u_viewport.xy);
+    return vec4(p0, p1) / u_viewport.xyxy * 2.0 - 1.0;
+}
+
 // Positive view-space distance of a depth-buffer value (window depth in [0, 1]).
 float viewDepthFromWindowDepth(float windowDepth) {
     vec4 v = u_invProj * vec4(0.0, 0.0, windowDepth * 2.0 - 1.0, 1.0);

@@ -27,7 +27,7 @@ vec3 lightCountColor(uint count) {
 }
 
 vec3 debugViewColor(uint view, SurfacePoint s, uint cluster, float viewDepth, vec3 shaded) {
-    if (view == ML_VIEW_LIGHT_COUNT) return lightCountColor(clusterCounts[cluster]);
+    if (view == ML_VIEW_LIGHT_COUNT) return lightCountColor(clusterLightCount(cluster, s.normal, viewDepth));
     if (view == ML_VIEW_SLICES) {
         uint slice = cluster / (grid.dims.x * grid.dims.y);
         return indexColor(slice * 7919u + 1u);
@@ -35,7 +35,7 @@ vec3 debugViewColor(uint view, SurfacePoint s, uint cluster, float viewDepth, ve
     if (view == ML_VIEW_CLUSTERS) return indexColor(cluster);
     if (view == ML_VIEW_OVERFLOW) {
         uint cap = grid.options.y;
-        bool over = cap > 0u && clusterCounts[cluster] > cap;
+        bool over = cap > 0u && clusterCounts[clusterListKey(cluster, s.normal)] > cap;
         float grey = dot(shaded / (1.0 + shaded), vec3(0.3333));
         return over ? vec3(1.0, 0.0, 0.0) : vec3(grey);
     }

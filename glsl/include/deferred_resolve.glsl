@@ -1,33 +1,6 @@
 // Clustered deferred lighting of one pixel from the G-buffer, shared by the full-screen
 // fragment resolve and the compute resolve. Position is rebuilt from depth; the rest is
-// decoded from the --gbuffer layout (gbuffer_layout.glsl).
-layout(binding = ML_TEX_DEPTH) uniform sampler2D u_depth;
-#if ML_GBUFFER_FLOAT_TARGETS == 0
-layout(binding = ML_TEX_GBUFFER0) uniform usampler2D u_gPacked;
-#else
-layout(binding = ML_TEX_GBUFFER0) uniform sampler2D u_gTarget0;
-layout(binding = ML_TEX_GBUFFER1) uniform sampler2D u_gTarget1;
-#if ML_GBUFFER_FLOAT_TARGETS == 3
-layout(binding = ML_TEX_GBUFFER2) uniform sampler2D u_gTarget2;
-#endif
-#endif
-
-GBufferTexel fetchGBuffer(ivec2 p) {
-    GBufferTexel t;
-    t.target[0] = t.target[1] = t.target[2] = vec4(0.0);
-    t.bits = uvec4(0u);
-#if ML_GBUFFER_FLOAT_TARGETS == 0
-    t.bits = texelFetch(u_gPacked, p, 0);
-#else
-    t.target[0] = texelFetch(u_gTarget0, p, 0);
-    t.target[1] = texelFetch(u_gTarget1, p, 0);
-#if ML_GBUFFER_FLOAT_TARGETS == 3
-    t.target[2] = texelFetch(u_gTarget2, p, 0);
-#endif
-#endif
-    return t;
-}
-
+// decoded from the --gbuffer layout (gbuffer_layout.glsl, read by gbuffer_fetch.glsl).
 vec4 resolvePixel(ivec2 p) {
     float depth = texelFetch(u_depth, p, 0).r;
     if (depth >= 1.0) return vec4(0.0, 0.0, 0.0, 1.0);  // background, as the forward methods clear it
@@ -35,13 +8,13 @@ vec4 resolvePixel(ivec2 p) {
     vec4 viewPos = u_invProj * vec4(ndc, depth * 2.0 - 1.0, 1.0);
     viewPos /= viewPos.w;
     SurfacePoint s;
-    s.position = (u_invView * viewPos).xyz;
+    s.position = u_cameraPos.xyz + mat3(u_invView) * viewPos.xyz;
     decodeGBuffer(fetchGBuffer(p), s);
     vec3 viewDir = normalize(u_cameraPos.xyz - s.position);
     float viewDepth = -viewPos.z;
     uint cluster = clusterForFragment(vec2(p) + 0.5, viewDepth);
     uint view = grid.options.w;
     vec3 color = vec3(0.0);
-    if (view == ML_VIEW_SHADED || view == ML_VIEW_OVERFLOW) color = shadeAmbient(s) + shadeClusterLights(s, viewDir, cluster);
+    if (view == ML_VIEW_SHADED || view == ML_VIEW_OVERFLOW) color = shadeAmbient(s) + shadeClusterLights(s, viewDir, cluster, viewDepth);
     return vec4(debugViewColor(view, s, cluster, viewDepth, color), 1.0);
 }

@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
+
+#include "renderer/clustering/cluster_culling.h"
 
 namespace ml {
 
@@ -71,26 +74,7 @@ float DepthSlicing::boundary(std::uint32_t k, std::uint32_t slices) const {
 Aabb clusterBounds(const ClusterGrid& grid, const DepthSlicing& slicing, float cameraNear, float cameraFar,
                    const glm::mat4& projection, int width, int height, std::uint32_t x, std::uint32_t y,
                    std::uint32_t slice) {
-    const float px0 = std::min(x * grid.tileSizePx, float(width)), px1 = std::min((x + 1) * grid.tileSizePx, float(width));
-    const float py0 = std::min(y * grid.tileSizePx, float(height)), py1 = std::min((y + 1) * grid.tileSizePx, float(height));
-    float z0 = slice == 0 ? std::min(cameraNear, slicing.zNear) : slicing.boundary(slice, grid.slices);
-    float z1 = slice + 1 == grid.slices ? std::max(cameraFar, slicing.zFar) : slicing.boundary(slice + 1, grid.slices);
-    // Widen by a relative epsilon so rounding in the fragment's slice lookup cannot fall outside.
-    z0 *= 1.0f - 1e-4f;
-    z1 *= 1.0f + 1e-4f;
-    Aabb box{glm::vec3(std::numeric_limits<float>::max()), glm::vec3(std::numeric_limits<float>::lowest())};
-    for (float px : {px0, px1}) {
-        for (float py : {py0, py1}) {
-            const float ndcX = px / width * 2.0f - 1.0f, ndcY = py / height * 2.0f - 1.0f;
-            for (float z : {z0, z1}) {
-                // On the ray through (ndcX, ndcY) at view depth z (symmetric perspective projection).
-                const glm::vec3 p(ndcX * z / projection[0][0], ndcY * z / projection[1][1], -z);
-                box.min = glm::min(box.min, p);
-                box.max = glm::max(box.max, p);
-            }
-        }
-    }
-    return box;
+    return boundsOf(clusterFrustum(grid, slicing, cameraNear, cameraFar, projection, width, height, x, y, slice));
 }
 
 float distanceSquared(const Aabb& box, const glm::vec3& p) {

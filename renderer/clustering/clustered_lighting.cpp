@@ -1,9 +1,11 @@
 #include "renderer/clustering/clustered_lighting.h"
 
+
 #include <algorithm>
 #include <stdexcept>
 
 #include "glsl/include/bindings.h"
+#include "renderer/methods/gbuffer.h"
 
 namespace ml {
 
@@ -11,9 +13,30 @@ namespace {
 
 constexpr GLbitfield kComputeToCompute = GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT;
 
-gl::Program exactProgram(const char* label, const char* phase, std::uint32_t workgroup) {
-    return gl::Program(label, {{GL_COMPUTE_SHADER, "assign_exact.comp"}},
-                       {{phase, "1"}, {"ML_WORKGROUP", std::to_string(workgroup)}});
+// The --cull test is compiled in (ML_CULL), so the per-pair loop has no branch on it.
+std::string cullDefine(CullMode mode) {
+    switch (mode) {
+    case CullMode::Aabb: return "ML_CULL_AABB";
+    case CullMode::Sphere: return "ML_CULL_SPHERE";
+    case CullMode::Cone: return "ML_CULL_CONE";
+    }
+    return "ML_CULL_AABB";
+}
+
+gl::Program exactProgram(const char* label, const char* phase, const ClusteringSettings& settings) {
+    shaders::Defines defines{{phase, "1"}, {"ML_WORKGROUP", std::to_string(settings.grid.workgroup)}, {"ML_CULL", cullDefine(settings.cull)}};
+    if (settings.normalCones) defines.emplace_back("ML_NORMAL_CONES", "1");
+    return gl::Program(label, {{GL_COMPUTE_SHADER, "assign_exact.comp"}}, defines);
+}
+
+// The count and fill passes: per (light, candidate) pair, or per cluster over every light.
+gl::Program countProgram(const ClusteringSettings& settings) {
+    if (settings.assign == AssignMode::PerCluster) return exactProgram("assign.per-cluster-count", "ML_PER_CLUSTER_COUNT", settings);
+    return exactProgram("assign.count", "ML_EXACT_COUNT", settings);
+}
+gl::Program fillProgram(const ClusteringSettings& settings) {
+    if (settings.assign == AssignMode::PerCluster) return exactProgram("assign.per-cluster-fill", "ML_PER_CLUSTER_FILL", settings);
+    return exactProgram("assign.fill", "ML_EXACT_FILL", settings);
 }
 
 void clearToZero(const gl::Buffer& buffer, std::size_t bytes) {
@@ -26,27 +49,33 @@ std::string mib(std::size_t bytes) { return std::to_string((bytes + (1u << 20) -
 
 }  // namespace
 
-ClusteredLighting::ClusteredLighting(const ClusteringSettings& settings)
+ClusteredLighting::ClusteredLighting(const ClusteringSettings& settings, const shaders::Defines& gbufferDefines)
     : settings_(settings),
       depthRange_(gl::Program::compute("cluster_depth_range.comp")),
       bounds_(gl::Program::compute("cluster_bounds.comp")),
       active_(gl::Program::compute("cluster_active.comp")),
-      ranges_(exactProgram("assign.ranges", "ML_EXACT_RANGES", settings.grid.workgroup)),
-      dispatch_(exactProgram("assign.dispatch", "ML_EXACT_DISPATCH", settings.grid.workgroup)),
-      count_(exactProgram("assign.count", "ML_EXACT_COUNT", settings.grid.workgroup)),
-      fill_(exactProgram("assign.fill", "ML_EXACT_FILL", settings.grid.workgroup)),
+      normalBins_(settings.normalCones ? gl::Program::compute("cluster_normal_bins.comp", gbufferDefines) : gl::Program()),
+      ranges_(exactProgram("assign.ranges", "ML_EXACT_RANGES", settings)),
+      dispatch_(exactProgram("assign.dispatch", "ML_EXACT_DISPATCH", settings)),
+      count_(countProgram(settings)),
+      fill_(fillProgram(settings)),
       capped_(gl::Program("assign.capped", {{GL_COMPUTE_SHADER, "assign_lights.comp"}},
-                          {{"ML_WORKGROUP", std::to_string(settings.grid.workgroup)}})),
+                          {{"ML_WORKGROUP", std::to_string(settings.grid.workgroup)}, {"ML_CULL", cullDefine(settings.cull)}})),
+      sort_(gl::Program::compute("sort_cluster_lists.comp")),
       gridBuffer_("clusters.grid", sizeof(ClusterGridGpu)),
-      counters_("clusters.counters", 16),
+      counters_("clusters.counters", 32),
       dispatchArgs_("assign.dispatch-args", 16) {
     validateGridConfig(settings.grid);
+    if (settings.assign == AssignMode::ZBin) zbin_ = std::make_unique<ZBinAssignment>();
+    if (settings.normalCones && settings.assign == AssignMode::Capped)
+        throw std::invalid_argument("--normal-cones: needs exact lists (--assign exact or per-cluster), not capped ones");
     GLint64 maxBlock = 0;
     glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &maxBlock);
     maxStorageBlock_ = static_cast<std::size_t>(maxBlock);
     GLint maxGroupsX = 0;
     glGetIntegeri_v(GL_MAX_COMPUTE_WORK_GROUP_COUNT, 0, &maxGroupsX);
-    dispatch_.set("u_maxGroupsX", static_cast<unsigned>(std::max(maxGroupsX, 1)));
+    maxGroupsX_ = static_cast<std::uint32_t>(std::max(maxGroupsX, 1));
+    dispatch_.set("u_maxGroupsX", maxGroupsX_);
     GLint maxInvocations = 0;
     glGetIntegerv(GL_MAX_COMPUTE_WORK_GROUP_INVOCATIONS, &maxInvocations);
     if (settings.grid.workgroup > static_cast<std::uint32_t>(maxInvocations))
@@ -63,14 +92,23 @@ void ClusteredLighting::checkListFits(std::size_t bytes, const char* what) const
                              (capped ? "--max-per-cluster, --tiles-x or --slices" : "--lights, --light-radius, --tiles-x or --slices"));
 }
 
+std::uint32_t ClusteredLighting::listsPerCluster() const { return settings_.normalCones ? ML_NORMAL_BINS : 1u; }
+
 void ClusteredLighting::ensureStorage(std::uint32_t clusters) {
     const std::size_t perCluster = std::size_t(clusters) * 4;
+    const std::size_t perList = perCluster * listsPerCluster();
     checkListFits(std::size_t(clusters) * sizeof(ClusterAabbGpu), "cluster bounds");
+    checkListFits(perList, "per-list counts");
     aabbs_.ensure(std::size_t(clusters) * sizeof(ClusterAabbGpu));
-    counts_.ensure(perCluster);
-    offsets_.ensure(perCluster);
-    cursors_.ensure(perCluster);
+    counts_.ensure(perList);
+    offsets_.ensure(perList);
+    cursors_.ensure(perList);
     activeFlags_.ensure(perCluster);
+    if (settings_.normalCones) {
+        checkListFits(perList * 4, "normal cones");
+        normalBinMasks_.ensure(perCluster);
+        normalCones_.ensure(perList * 4);
+    }
 }
 
 void ClusteredLighting::uploadGrid(const FrameContext& ctx) {
@@ -95,9 +133,10 @@ void ClusteredLighting::bindForShading() const {
     counts_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_CLUSTER_COUNTS);
     offsets_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_CLUSTER_OFFSETS);
     indices_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_LIGHT_INDICES);
+    if (zbin_) zbin_->bindForShading();
 }
 
-void ClusteredLighting::build(const FrameContext& ctx) {
+void ClusteredLighting::build(const FrameContext& ctx, const GBuffer* gbuffer) {
     uploadGrid(ctx);
     const std::uint32_t clusters = grid_.clusterCount();
     ensureStorage(clusters);
@@ -116,6 +155,13 @@ void ClusteredLighting::build(const FrameContext& ctx) {
         glDispatchCompute(1, 1, 1);
         glMemoryBarrier(kComputeToCompute);
     }
+    if (zbin_) {
+        // Z-binning needs only the slicing (for its bins) and the tiles; --active-only does not apply.
+        // The per-cluster counts stay zero, so dumps and read-backs see empty lists.
+        clearToZero(counts_.buffer(), std::size_t(clusters) * 4);
+        zbin_->build(ctx, grid_, maxStorageBlock_);
+        return;
+    }
     {
         auto pass = ctx.timer.pass("cluster.bounds");
         bounds_.use();
@@ -131,10 +177,48 @@ void ClusteredLighting::build(const FrameContext& ctx) {
         glDispatchCompute(screenX, screenY, 1);
         glMemoryBarrier(kComputeToCompute);
     }
+    if (settings_.normalCones) {
+        if (!gbuffer) throw std::logic_error("--normal-cones: the lists need the G-buffer's normals");
+        markNormalBins(ctx, *gbuffer);
+    }
     ctx.lights.animated().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_LIGHTS);
     counters_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_ASSIGN_STATS);
-    if (settings_.assign == AssignMode::Exact) buildExact(ctx);
-    else buildCapped(ctx);
+    if (settings_.assign == AssignMode::Capped) buildCapped(ctx);
+    else buildExact(ctx);
+    sortLists(ctx);
+}
+
+void ClusteredLighting::sortLists(const FrameContext& ctx) {
+    auto pass = ctx.timer.pass("assign.sort");
+    // Capped lists are one per cluster; exact ones one per cluster and normal bin.
+    const std::uint32_t lists = grid_.clusterCount() * (settings_.assign == AssignMode::Capped ? 1u : listsPerCluster());
+    counts_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_CLUSTER_COUNTS);
+    offsets_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_CLUSTER_OFFSETS);
+    indices_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_LIGHT_INDICES);
+    sort_.use();
+    sort_.set("u_listCount", lists);
+    // One workgroup per list; past the device's limit in x, the rest goes to y.
+    const std::uint32_t groupsX = std::min(lists, maxGroupsX_);
+    glDispatchCompute(groupsX, (lists + groupsX - 1) / groupsX, 1);
+    glMemoryBarrier(kComputeToCompute);
+}
+
+void ClusteredLighting::markNormalBins(const FrameContext& ctx, const GBuffer& gbuffer) {
+    auto pass = ctx.timer.pass("cluster.normal-bins");
+    const std::uint32_t clusters = grid_.clusterCount();
+    clearToZero(normalBinMasks_.buffer(), std::size_t(clusters) * 4);
+    clearToZero(normalCones_.buffer(), std::size_t(clusters) * ML_NORMAL_BINS * 16);
+    glMemoryBarrier(kComputeToCompute);
+    normalBinMasks_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_NORMAL_BIN_MASKS);
+    normalCones_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_NORMAL_CONES);
+    gbuffer.bindForReading();
+    normalBins_.use();
+    // Phase 0: occupied bins and each list's normal sum; phase 1: each list's widest normal.
+    for (unsigned phase : {0u, 1u}) {
+        normalBins_.set("u_phase", phase);
+        glDispatchCompute(gl::groupsFor(ctx.targets.width(), ML_SCREEN_TILE), gl::groupsFor(ctx.targets.height(), ML_SCREEN_TILE), 1);
+        glMemoryBarrier(kComputeToCompute);
+    }
 }
 
 void ClusteredLighting::dispatchAssignment(const gl::Program& program, std::uint32_t lightCount) const {
@@ -145,8 +229,10 @@ void ClusteredLighting::dispatchAssignment(const gl::Program& program, std::uint
 
 void ClusteredLighting::buildExact(const FrameContext& ctx) {
     const std::uint32_t clusters = grid_.clusterCount();
-    const std::size_t perCluster = std::size_t(clusters) * 4;
+    const std::uint32_t lists = clusters * listsPerCluster();
+    const std::size_t perList = std::size_t(lists) * 4;
     const std::uint32_t lights = ctx.lights.count();
+    const bool perCluster = settings_.assign == AssignMode::PerCluster;
     lightRanges_.ensure(std::size_t(lights) * 16);
     lightView_.ensure(std::size_t(lights) * 16);
     candidateOffsets_.ensure(std::size_t(lights) * 4);
@@ -157,51 +243,73 @@ void ClusteredLighting::buildExact(const FrameContext& ctx) {
     counts_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_CLUSTER_COUNTS);
     offsets_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_CLUSTER_OFFSETS);
     cursors_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_FILL_CURSORS);
+    if (settings_.normalCones) {
+        normalBinMasks_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_NORMAL_BIN_MASKS);
+        normalCones_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_NORMAL_CONES);
+    }
+    // The per-pair passes run one invocation per candidate (indirect) or per cluster.
+    const auto dispatchPairs = [&] {
+        if (perCluster) glDispatchCompute(gl::groupsFor(clusters, settings_.grid.workgroup), 1, 1);
+        else glDispatchComputeIndirect(0);
+    };
     {
-        // Each light's candidate block, then where its candidates start among all of them.
+        // Each light's candidate block; per light, where its candidates start among all of them.
         auto pass = ctx.timer.pass("assign.ranges");
-        dispatchAssignment(ranges_, lights);
-        scan_.run(candidateOffsets_.buffer(), lights, counters_, 8);
+        clearToZero(counters_, 32);
         glMemoryBarrier(kComputeToCompute);
-        candidateOffsets_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_CANDIDATE_OFFSETS);
-        counters_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_ASSIGN_STATS);
-        dispatchArgs_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_DISPATCH);
-        dispatch_.use();
-        glDispatchCompute(1, 1, 1);
-        glMemoryBarrier(GL_COMMAND_BARRIER_BIT | kComputeToCompute);
+        dispatchAssignment(ranges_, lights);
+        if (!perCluster) {
+            scan_.run(candidateOffsets_.buffer(), lights, counters_, 8);
+            glMemoryBarrier(kComputeToCompute);
+            candidateOffsets_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_CANDIDATE_OFFSETS);
+            counters_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_ASSIGN_STATS);
+            dispatchArgs_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_DISPATCH);
+            dispatch_.use();
+            glDispatchCompute(1, 1, 1);
+            glMemoryBarrier(GL_COMMAND_BARRIER_BIT | kComputeToCompute);
+        }
     }
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, dispatchArgs_.id());
     {
-        auto pass = ctx.timer.pass("assign.count");
-        clearToZero(counts_.buffer(), perCluster);
+        auto pass = ctx.timer.pass(perCluster ? "assign.per-cluster-count" : "assign.count");
+        clearToZero(counts_.buffer(), perList);
+        if (settings_.normalCones) {
+            const std::uint32_t zero[2] = {0, 0};
+            counters_.upload(zero, sizeof zero, 12);
+        }
         glMemoryBarrier(kComputeToCompute);
         count_.use();
-        glDispatchComputeIndirect(0);
+        dispatchPairs();
         glMemoryBarrier(kComputeToCompute);
     }
     {
         auto pass = ctx.timer.pass("assign.scan");
-        glCopyNamedBufferSubData(counts_.buffer().id(), offsets_.buffer().id(), 0, 0, static_cast<GLsizeiptr>(perCluster));
+        glCopyNamedBufferSubData(counts_.buffer().id(), offsets_.buffer().id(), 0, 0, static_cast<GLsizeiptr>(perList));
         glMemoryBarrier(kComputeToCompute);
-        scan_.run(offsets_.buffer(), clusters, counters_, 4);
+        scan_.run(offsets_.buffer(), lists, counters_, 4);
         glMemoryBarrier(kComputeToCompute);
     }
     {
-        auto pass = ctx.timer.pass("assign.fill");
+        auto pass = ctx.timer.pass(perCluster ? "assign.per-cluster-fill" : "assign.fill");
         // The list is sized by this frame's total, read back here (one small sync per frame).
-        std::uint32_t total = 0;
-        counters_.download(&total, 4, 4);
+        std::uint32_t totals[8] = {};  // layout: glsl/assign_exact.comp's AssignStats
+        counters_.download(totals, sizeof(totals), 0);
+        if (totals[6] != 0)
+            throw std::runtime_error(std::to_string(lights) + " lights name more than 4,294,967,295 (light, cluster) candidate "
+                                     "pairs this frame; lower --light-radius, --lights, --tiles-x or --slices");
+        const std::uint32_t total = totals[1];
         listEntries_ = total;
         checkListFits(std::size_t(total) * 4, "the light lists");
         indices_.ensure(std::size_t(total) * 4);
-        clearToZero(cursors_.buffer(), perCluster);
+        clearToZero(cursors_.buffer(), perList);
         glMemoryBarrier(kComputeToCompute);
         counts_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_CLUSTER_COUNTS);
         offsets_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_CLUSTER_OFFSETS);
         indices_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_LIGHT_INDICES);
         counters_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_ASSIGN_STATS);
+        candidateOffsets_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_CANDIDATE_OFFSETS);
         fill_.use();
-        glDispatchComputeIndirect(0);
+        dispatchPairs();
         glMemoryBarrier(kComputeToCompute);
     }
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
@@ -228,7 +336,7 @@ ClusterGridGpu ClusteredLighting::downloadGrid() const {
 }
 
 std::vector<std::uint32_t> ClusteredLighting::downloadCounts() const {
-    std::vector<std::uint32_t> counts(grid_.clusterCount());
+    std::vector<std::uint32_t> counts(std::size_t(grid_.clusterCount()) * listsPerCluster());
     counts_.buffer().download(counts.data(), counts.size() * 4);
     return counts;
 }
@@ -241,7 +349,7 @@ std::vector<ClusterAabbGpu> ClusteredLighting::downloadAabbs() const {
 
 std::vector<std::vector<std::uint32_t>> ClusteredLighting::downloadLists() const {
     const std::vector<std::uint32_t> counts = downloadCounts();
-    const std::uint32_t clusters = grid_.clusterCount();
+    const std::uint32_t clusters = static_cast<std::uint32_t>(counts.size());  // lists: clusters, or (cluster, normal bin) keys
     std::vector<std::uint32_t> offsets(clusters);
     const bool capped = settings_.assign == AssignMode::Capped;
     if (!capped) offsets_.buffer().download(offsets.data(), offsets.size() * 4);
@@ -264,10 +372,23 @@ ClusterStatistics ClusteredLighting::statistics() const {
     s.slices = grid_.slices;
     s.clusters = grid_.clusterCount();
     s.slicing = slicingName(settings_.grid.slicing);
+    s.cull = cullModeName(settings_.cull);
     s.zNear = g.slicing.x;
     s.zFar = g.slicing.y;
+    if (zbin_) {
+        // No per-cluster lists: what z-binning built instead.
+        gridBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_CLUSTER_GRID);
+        s.zbin = true;
+        s.zbinStats = zbin_->statistics();
+        s.listBytes = s.zbinStats.totalBytes;
+        s.gridBytes = sizeof(ClusterGridGpu);
+        return s;
+    }
     const std::vector<std::uint32_t> counts = downloadCounts();
     const bool capped = settings_.assign == AssignMode::Capped;
+    // With --normal-cones the shares and means are over (cluster, normal bin) lists.
+    const std::uint32_t lists = static_cast<std::uint32_t>(counts.size());
+    s.listsPerCluster = listsPerCluster();
     std::uint64_t demand = 0, stored = 0;
     std::uint32_t empty = 0;
     for (std::uint32_t c : counts) {
@@ -277,13 +398,17 @@ ClusterStatistics ClusteredLighting::statistics() const {
         s.maxLightsPerCluster = std::max(s.maxLightsPerCluster, c);
         if (capped && c > settings_.maxPerCluster) ++s.overflowClusters;
     }
-    s.emptyShare = s.clusters ? double(empty) / s.clusters : 0.0;
-    s.meanLightsPerCluster = s.clusters ? double(demand) / s.clusters : 0.0;
-    s.meanLightsPerNonEmptyCluster = s.clusters > empty ? double(demand) / (s.clusters - empty) : 0.0;
+    s.emptyShare = lists ? double(empty) / lists : 0.0;
+    s.meanLightsPerCluster = lists ? double(demand) / lists : 0.0;
+    s.meanLightsPerNonEmptyCluster = lists > empty ? double(demand) / (lists - empty) : 0.0;
     s.listEntries = stored;
-    std::uint32_t dropped = 0;
-    counters_.download(&dropped, 4, 0);
-    s.droppedReferences = capped ? dropped : 0;
+    std::uint32_t counters[8] = {};
+    counters_.download(counters, sizeof counters, 0);
+    s.droppedReferences = capped ? counters[0] : 0;
+    if (settings_.normalCones) {
+        s.normalConePairs = counters[3];
+        s.normalConePairsKept = counters[4];
+    }
     s.activeOnly = settings_.activeOnly;
     if (settings_.activeOnly) {
         std::vector<std::uint32_t> flags(s.clusters);
@@ -291,7 +416,10 @@ ClusterStatistics ClusteredLighting::statistics() const {
         s.activeClusters = static_cast<std::uint32_t>(std::count(flags.begin(), flags.end(), 1u));
     }
     s.listBytes = capped ? std::size_t(s.clusters) * settings_.maxPerCluster * 4 : std::size_t(listEntries_) * 4;
-    s.gridBytes = std::size_t(s.clusters) * (4 * 4 + sizeof(ClusterAabbGpu));
+    // Per cluster: active flag, AABB (and normal-bin mask); per list: count, offset, cursor
+    // (and the normal cone).
+    s.gridBytes = std::size_t(s.clusters) * (4 + sizeof(ClusterAabbGpu) + (settings_.normalCones ? 4 : 0)) +
+                  std::size_t(lists) * (settings_.normalCones ? 28 : 12) + 16;
     return s;
 }
 
@@ -315,6 +443,8 @@ nlohmann::json ClusteredLighting::dump(const FrameUniforms& uniforms) const {
                       {"camera_near", g.tile.z},
                       {"camera_far", g.tile.w}};
     doc["assign"] = assignModeName(settings_.assign);
+    doc["cull"] = cullModeName(settings_.cull);
+    doc["normal_cones"] = settings_.normalCones;
     if (settings_.assign == AssignMode::Capped) doc["max_per_cluster"] = settings_.maxPerCluster;
     doc["viewport"] = {uniforms.viewport.x, uniforms.viewport.y};
     doc["view_matrix"] = matrix(uniforms.view);
@@ -322,10 +452,14 @@ nlohmann::json ClusteredLighting::dump(const FrameUniforms& uniforms) const {
     const auto lists = downloadLists();
     const auto counts = downloadCounts();
     nlohmann::json clusters = nlohmann::json::array();
-    for (std::uint32_t c = 0; c < lists.size(); ++c) {
-        if (counts[c] == 0) continue;
+    const std::uint32_t bins = listsPerCluster();
+    for (std::uint32_t key = 0; key < lists.size(); ++key) {
+        if (counts[key] == 0) continue;
+        const std::uint32_t c = key / bins;
         const std::uint32_t x = c % grid_.tilesX, y = (c / grid_.tilesX) % grid_.tilesY, slice = c / (grid_.tilesX * grid_.tilesY);
-        clusters.push_back({{"index", c}, {"x", x}, {"y", y}, {"slice", slice}, {"count", counts[c]}, {"lights", lists[c]}});
+        nlohmann::json entry = {{"index", c}, {"x", x}, {"y", y}, {"slice", slice}, {"count", counts[key]}, {"lights", lists[key]}};
+        if (bins > 1) entry["normal_bin"] = key % bins;
+        clusters.push_back(std::move(entry));
     }
     doc["clusters"] = std::move(clusters);
     return doc;
@@ -334,9 +468,24 @@ nlohmann::json ClusteredLighting::dump(const FrameUniforms& uniforms) const {
 AssignMode parseAssignMode(const std::string& text) {
     if (text == "exact") return AssignMode::Exact;
     if (text == "capped") return AssignMode::Capped;
-    throw std::invalid_argument("--assign '" + text + "': expected exact or capped");
+    if (text == "per-cluster") return AssignMode::PerCluster;
+    if (text == "zbin") return AssignMode::ZBin;
+    throw std::invalid_argument("--assign '" + text + "': expected exact, capped, per-cluster or zbin");
 }
 
-const char* assignModeName(AssignMode mode) { return mode == AssignMode::Exact ? "exact" : "capped"; }
+const char* assignModeName(AssignMode mode) {
+    switch (mode) {
+    case AssignMode::Exact: return "exact";
+    case AssignMode::Capped: return "capped";
+    case AssignMode::PerCluster: return "per-cluster";
+    case AssignMode::ZBin: return "zbin";
+    }
+    return "?";
+}
+
+shaders::Defines lightListDefines(const ClusteringSettings& settings) {
+    if (settings.assign == AssignMode::ZBin) return {{"ML_ZBIN", "1"}};
+    return {};
+}
 
 }  // namespace ml

@@ -4,14 +4,27 @@
 //   depth ─> [cluster.depth-range]  fitted slicing only: min/max visible depth ─> grid.slicing
 //         ─> [cluster.bounds]       view-space AABB per cluster
 //         ─> [cluster.active]       --active-only: flag clusters holding a visible sample
+//         ─> [cluster.normal-bins]  --normal-cones: per cluster, the normal bins its visible samples occupy
 //   exact:  [assign.ranges] ─> [assign.count] ─> [assign.scan] ─> [assign.fill]
 //           one invocation per (light, candidate cluster); one compact list, no cap
+//   per-cluster: [assign.ranges] ─> [assign.per-cluster-count] ─> [assign.scan] ─> [assign.per-cluster-fill]
+//           one invocation per cluster over every light (seed 003); the same lists
 //   capped: [assign.capped]    one invocation per light; fixed lists, overflow counted
+//   exact, capped: then [assign.sort]  each list in light-index order, so shading sums in a fixed order
+//   zbin:   [zbin.keys] ─> [zbin.sort] ─> [zbin.bins] ─> [zbin.tile-masks]   (zbin_assignment.h;
+//           no cluster bounds: bins and tile frusta replace the clusters)
+//
+// Every assignment tests pairs with the --cull test. With --normal-cones a list belongs to a
+// (cluster, normal bin) key, cluster * ML_NORMAL_BINS + bin; the per-list buffers (counts,
+// offsets, cursors: 12 B) grow 24-fold, and each list keeps the cone of its samples' normals
+// (16 B): 28 B x 24 per cluster, 26 MiB for 48 x 27 x 32 clusters.
 //
 // Memory per cluster: count, offset, fill cursor, active flag (4 B each) and an AABB (32 B):
 // 48 B, so 32 x 18 x 24 clusters take 648 KiB. Exact lists take 4 B per light reference;
 // capped lists take clusters x cap x 4 B whatever the frame needs (42x24x12 x 2048: 99 MiB).
 #pragma once
+
+#include <memory>
 
 #include <nlohmann/json.hpp>
 
@@ -19,20 +32,29 @@
 #include "renderer/clustering/cluster_statistics.h"
 #include "renderer/clustering/clustering_settings.h"
 #include "renderer/clustering/prefix_sum.h"
+#include "renderer/clustering/zbin_assignment.h"
 #include "renderer/gl/buffer.h"
 #include "renderer/gl/program.h"
+#include "renderer/gl/texture.h"
 #include "renderer/gpu_types.h"
 #include "renderer/methods/shading_method.h"
 
 namespace ml {
 
+class GBuffer;
+
 class ClusteredLighting {
 public:
-    explicit ClusteredLighting(const ClusteringSettings& settings);
+    // gbufferDefines: the G-buffer's layout (GBuffer::defines()), which --normal-cones decodes
+    // its normals from the way the lighting does.
+    explicit ClusteredLighting(const ClusteringSettings& settings, const shaders::Defines& gbufferDefines = {});
 
-    // Builds the lists from the lights and the depth already in ctx.targets.depth().
+    // Builds the lists from the lights and the depth already in ctx.targets.depth(); with
+    // --normal-cones also from the G-buffer's normals (required then).
     // Throws std::runtime_error when the lists cannot fit this GPU's storage-buffer limit.
-    void build(const FrameContext& ctx);
+    void build(const FrameContext& ctx, const GBuffer* gbuffer = nullptr);
+    // Lists per cluster: ML_NORMAL_BINS with --normal-cones, else 1.
+    std::uint32_t listsPerCluster() const;
     // Binds the grid, counts, offsets and light indices at their ML_SSBO_* points.
     void bindForShading() const;
 
@@ -46,29 +68,35 @@ public:
 
     // Read-backs for tests and dumps.
     ClusterGridGpu downloadGrid() const;
+    // Per list: per cluster, or per (cluster, normal bin) key with --normal-cones.
     std::vector<std::uint32_t> downloadCounts() const;
     std::vector<ClusterAabbGpu> downloadAabbs() const;
-    // Light indices of every cluster, in list order.
+    // Light indices of every list (cluster, or key), in list order.
     std::vector<std::vector<std::uint32_t>> downloadLists() const;
+    // The z-binning of the last build (--assign zbin), else null.
+    const ZBinAssignment* zbin() const { return zbin_.get(); }
 
 private:
     void uploadGrid(const FrameContext& ctx);
     void ensureStorage(std::uint32_t clusters);
     void checkListFits(std::size_t bytes, const char* what) const;
     void buildExact(const FrameContext& ctx);
+    void markNormalBins(const FrameContext& ctx, const GBuffer& gbuffer);
     void buildCapped(const FrameContext& ctx);
+    void sortLists(const FrameContext& ctx);
     void dispatchAssignment(const gl::Program& program, std::uint32_t lightCount) const;
 
     ClusteringSettings settings_;
     ClusterGrid grid_;
     std::size_t maxStorageBlock_ = 0;
     std::uint64_t listEntries_ = 0;
+    std::uint32_t maxGroupsX_ = 65535;
 
-    gl::Program depthRange_, bounds_, active_, ranges_, dispatch_, count_, fill_, capped_;
+    gl::Program depthRange_, bounds_, active_, normalBins_, ranges_, dispatch_, count_, fill_, capped_, sort_;
     PrefixSum scan_;
 
     gl::Buffer gridBuffer_;
-    gl::Buffer counters_;  // [0] dropped references (capped), [1] list entries, [2] candidate pairs (exact)
+    gl::Buffer counters_;  // [0] dropped references (capped), [1] list entries, [2] candidate pairs (exact), [3..4] normal-cone pairs
     gl::Buffer dispatchArgs_;  // indirect dispatch of the per-candidate passes
     gl::GrowableBuffer lightRanges_{"assign.light-ranges"};  // 16 B per light
     gl::GrowableBuffer lightView_{"assign.light-view"};      // 16 B per light
@@ -78,7 +106,10 @@ private:
     gl::GrowableBuffer offsets_{"clusters.offsets"};
     gl::GrowableBuffer cursors_{"clusters.fill-cursors"};
     gl::GrowableBuffer activeFlags_{"clusters.active"};
+    gl::GrowableBuffer normalBinMasks_{"clusters.normal-bin-masks"};  // 4 B per cluster
+    gl::GrowableBuffer normalCones_{"clusters.normal-cones"};         // 16 B per (cluster, bin) list
     gl::GrowableBuffer indices_{"clusters.light-indices"};
+    std::unique_ptr<ZBinAssignment> zbin_;  // --assign zbin only
 };
 
 }  // namespace ml

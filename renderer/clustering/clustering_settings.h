@@ -6,22 +6,41 @@
 
 #include "renderer/clustering/cluster_grid.h"
 #include "renderer/debug_view.h"
+#include "renderer/gl/shader_sources.h"
 
 namespace ml {
 
 enum class AssignMode {
-    Exact,   // count, prefix sum, fill: one compact list sized by what the frame needs
-    Capped,  // the seeds' baseline: fixed lists of maxPerCluster entries; overflow counted
+    Exact,       // count, prefix sum, fill: one compact list sized by what the frame needs
+    Capped,      // the seeds' baseline: fixed lists of maxPerCluster entries; overflow counted
+    PerCluster,  // seed 003: one invocation per cluster loops over every light; exact lists
+    ZBin,        // z-binning (Drobot 2017): depth-sorted lights, index ranges per z-bin, bit masks per tile
 };
 AssignMode parseAssignMode(const std::string& text);  // throws std::invalid_argument
 const char* assignModeName(AssignMode mode);
+
+// The light-vs-cluster test (glsl/include/light_cluster_test.glsl; ML_CULL_* in bindings.h).
+enum class CullMode {
+    Aabb,    // sphere against the cluster's view-space AABB
+    Sphere,  // sphere against the cluster's six frustum planes
+    Cone,    // seed 001's spherical-sliced cone
+};
+CullMode parseCullMode(const std::string& text);  // throws std::invalid_argument
+const char* cullModeName(CullMode mode);
 
 struct ClusteringSettings {
     ClusterGridConfig grid;
     AssignMode assign = AssignMode::Exact;
     std::uint32_t maxPerCluster = 2048;  // capped lists only (seed 000's analysis used 2048)
     bool activeOnly = false;             // skip clusters that hold no visible sample
+    CullMode cull = CullMode::Aabb;
+    // Lists per (cluster, view-space normal bin) (Olsson et al. 2012): deferred and visibility
+    // only, exact lists only. Forward+ knows no normal before it shades and ignores it.
+    bool normalCones = false;
     DebugView view = DebugView::Shaded;
 };
+
+// Defines of the shading programs that read the lists (cluster_lists.glsl picks its light loop).
+shaders::Defines lightListDefines(const ClusteringSettings& settings);
 
 }  // namespace ml

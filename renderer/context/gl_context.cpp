@@ -1,10 +1,12 @@
 #include "renderer/context/gl_context.h"
 
+#include "renderer/context/keep_modules_loaded.h"
 #include "renderer/gl/gl_api.h"
 
 namespace ml {
 
 void loadGlFunctions(GlProcLoader getProcAddress, const std::string& platform) {
+    keepLoadedModulesUntilExit();  // the driver is loaded by now (sanitizer builds only)
     const int version = gladLoadGL(reinterpret_cast<GLADloadfunc>(getProcAddress));
     if (version == 0) throw ContextError(platform + ": could not load OpenGL functions");
     const int major = GLAD_VERSION_MAJOR(version);

@@ -18,8 +18,8 @@ ClusteredDeferred::ClusteredDeferred(const ClusteringSettings& settings, Resolve
       gbuffer_(gbuffer),
       gbufferProgram_("deferred.gbuffer", {{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "gbuffer.frag"}},
                       gbuffer_.defines()),
-      lightingProgram_(lightingProgram(resolve, gbuffer_.defines())),
-      clustering_(settings) {
+      lightingProgram_(lightingProgram(resolve, deferredLightingDefines(settings, gbuffer_))),
+      clustering_(settings, gbuffer_.defines()) {
     GLuint vao = 0;
     glCreateVertexArrays(1, &vao);
     emptyVao_ = gl::Handle<gl::VertexArrayDeleter>(vao);
@@ -42,7 +42,7 @@ void ClusteredDeferred::render(const FrameContext& ctx) {
         ctx.scene.draw(gbufferProgram_);
         glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
     }
-    clustering_.build(ctx);
+    clustering_.build(ctx, &gbuffer_);
     {
         auto pass = ctx.timer.pass(resolve_ == Resolve::Compute ? "deferred.lighting-compute" : "deferred.lighting-fragment");
         bindDeferredLightingInputs(gbuffer_, ctx, clustering_);

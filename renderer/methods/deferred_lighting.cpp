@@ -4,6 +4,13 @@
 
 namespace ml {
 
+shaders::Defines deferredLightingDefines(const ClusteringSettings& clustering, const GBuffer& gbuffer) {
+    shaders::Defines defines = lightListDefines(clustering);
+    if (clustering.normalCones) defines.push_back({"ML_NORMAL_CONES", "1"});
+    for (const auto& define : gbuffer.defines()) defines.push_back(define);
+    return defines;
+}
+
 void bindDeferredLightingInputs(const GBuffer& gbuffer, const FrameContext& ctx, const ClusteredLighting& clustering) {
     gbuffer.bindForReading();
     glBindTextureUnit(ML_TEX_DEPTH, ctx.targets.depth().id());

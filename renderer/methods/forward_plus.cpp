@@ -22,7 +22,8 @@ ClusteringSettings clusteringFor(ClusteringSettings settings, bool prepass) {
 ForwardPlus::ForwardPlus(const ClusteringSettings& settings, bool prepass)
     : prepass_(prepass),
       depthProgram_("forward-plus.depth", {{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "depth_only.frag"}}),
-      shadeProgram_("forward-plus.shade", {{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "forward_plus.frag"}}),
+      shadeProgram_("forward-plus.shade", {{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "forward_plus.frag"}},
+                   lightListDefines(settings)),
       clustering_(clusteringFor(settings, prepass)) {}
 
 void ForwardPlus::render(const FrameContext& ctx) {

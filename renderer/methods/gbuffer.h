@@ -21,7 +21,9 @@ public:
     // Re-creates the targets when the frame size changed; returns the framebuffer.
     const gl::Framebuffer& prepare(const FrameTargets& frame);
     void clear() const;  // every colour target to zero (the depth is the caller's)
-    void bindForReading() const;  // at ML_TEX_GBUFFER0.. (one texture per target)
+    // At ML_TEX_GBUFFER0.. (one texture per target); read with fetchGBuffer/decodeGBuffer
+    // (include/gbuffer_fetch.glsl) by the lighting and by --normal-cones' normal bins.
+    void bindForReading() const;
     void bindForWriting() const;  // as images at ML_IMG_GBUFFER0.. (compute writes)
     std::size_t bytes() const { return static_cast<std::size_t>(width_) * height_ * gbufferBytesPerPixel(format_); }
 

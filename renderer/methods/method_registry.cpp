@@ -47,7 +47,13 @@ std::string methodName(MethodKind kind) {
 std::unique_ptr<ShadingMethod> createMethod(const MethodSettings& settings) {
     switch (settings.kind) {
     case MethodKind::Naive: return std::make_unique<NaiveForward>();
-    case MethodKind::ForwardPlus: return std::make_unique<ForwardPlus>(settings.clustering, settings.prepass);
+    case MethodKind::ForwardPlus: {
+        // Forward+ shades before any normal is known: no normal bins (the flag is refused by
+        // `render` and greyed out in `view`; here it is ignored).
+        ClusteringSettings clustering = settings.clustering;
+        clustering.normalCones = false;
+        return std::make_unique<ForwardPlus>(clustering, settings.prepass);
+    }
     case MethodKind::Deferred: return std::make_unique<ClusteredDeferred>(settings.clustering, settings.resolve, settings.gbuffer);
     case MethodKind::Visibility: return std::make_unique<VisibilityBuffer>(settings.clustering, settings.gbuffer);
     }

@@ -104,7 +104,7 @@ TEST_F(Bloom, EveryMethodMatchesNaive) {
         m.kind = kind;
         renderer.setMethod(m);
         renderer.render(0);
-        expectWithinContract("boxes bloom " + methodName(kind), renderer, naive);
+        expectWithinContract(renderer, naive, "boxes bloom " + methodName(kind));
     }
 }
 

@@ -12,18 +12,9 @@
 namespace ml::test {
 namespace {
 
-constexpr double kMaxAbs8Bit = 1.0 / 255.0 + 1e-9;
-constexpr double kMinPsnrDb = 50.0;
-
 struct AccuracyCase {
     const char* scene;
     std::uint32_t lights;
-};
-
-struct Variant {
-    MethodKind kind;
-    Resolve resolve;
-    const char* name;
 };
 
 class ClusteredAccuracy : public GpuTest, public ::testing::WithParamInterface<AccuracyCase> {};
@@ -41,12 +32,8 @@ TEST_P(ClusteredAccuracy, MatchesNaiveOnEveryGridAndSlicing) {
     const FloatImage referenceHdr = renderer.readHdr();
     const RgbaImage referenceLdr = renderer.readLdr();
 
-    const Variant variants[] = {{MethodKind::ForwardPlus, Resolve::Compute, "forward-plus"},
-                                {MethodKind::Deferred, Resolve::Compute, "deferred/compute"},
-                                {MethodKind::Deferred, Resolve::Fragment, "deferred/fragment"},
-                                {MethodKind::Visibility, Resolve::Compute, "visibility"}};
     const ClusterGridConfig grids[] = {{4, 3, Slicing::Fitted, 32}, {16, 12, Slicing::Fitted, 64}, {40, 32, Slicing::Fitted, 128}};
-    for (const Variant& v : variants) {
+    for (const ClusteredVariant& v : kClusteredVariants) {
         for (ClusterGridConfig grid : grids) {
             for (Slicing slicing : {Slicing::Linear, Slicing::Log, Slicing::Fitted}) {
                 grid.slicing = slicing;

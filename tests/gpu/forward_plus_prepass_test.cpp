@@ -26,7 +26,7 @@ TEST_P(PrepassOff, MatchesNaiveOnEverySlicing) {
     for (Slicing slicing : {Slicing::Linear, Slicing::Log, Slicing::Fitted}) {
         renderer.setMethod(forwardPlus(false, slicing));
         renderer.render(45);
-        expectWithinContract(std::string(GetParam()) + " forward-plus no pre-pass " + slicingName(slicing), renderer, naive);
+        expectWithinContract(renderer, naive, std::string(GetParam()) + " forward-plus no pre-pass " + slicingName(slicing));
         EXPECT_EQ(renderer.method().clustering()->statistics().droppedReferences, 0u);
         // Fitted needs the pre-pass depth: without it the grid is log-sliced over the camera's range.
         if (slicing == Slicing::Fitted) {

@@ -40,7 +40,7 @@ TEST_P(PackedGBuffer, MatchesStandardAndNaive) {
         const ImageDifference againstStandard = compareImages(renderer.readHdr(), standard);
         std::printf("%s packed vs standard, %s: psnr %.1f dB\n", scene.c_str(), c.name, againstStandard.psnrDb);
         EXPECT_GE(againstStandard.psnrDb, 50.0) << c.name;
-        expectWithinContract(scene + " packed " + c.name + " vs naive", renderer, naive);
+        expectWithinContract(renderer, naive, scene + " packed " + c.name + " vs naive");
     }
 }
 
@@ -66,7 +66,7 @@ TEST_F(GBufferLayouts, TwoComponentLosesTheSignOfZWherePackedDoesNot) {
         const std::string name = methodName(kind);
         renderer.setMethod(withGBuffer(kind, GBufferFormat::Packed));
         renderer.render(0);
-        expectWithinContract("-z wall, packed " + name, renderer, naive);
+        expectWithinContract(renderer, naive, "-z wall, packed " + name);
 
         renderer.setMethod(withGBuffer(kind, GBufferFormat::TwoComponent));
         renderer.render(0);
@@ -95,7 +95,7 @@ TEST_F(GBufferLayouts, TwoComponentIsExactWhereZIsNotNegative) {
     const ReferenceFrame naive = renderReference(renderer, 0);
     renderer.setMethod(withGBuffer(MethodKind::Deferred, GBufferFormat::TwoComponent));
     renderer.render(0);
-    expectWithinContract("+z wall, two-component deferred", renderer, naive);
+    expectWithinContract(renderer, naive, "+z wall, two-component deferred");
 }
 
 TEST_F(GBufferLayouts, BytesOfEveryLayoutFollowTheFormat) {

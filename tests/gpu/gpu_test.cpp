@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <sys/wait.h>
 
+#include "renderer/clustering/clustered_lighting.h"
 #include "renderer/gl/debug_output.h"
 #include "scenes/scene_library.h"
 
@@ -79,26 +80,49 @@ Scene quadScene(const std::vector<TestQuad>& quads) {
     return scene;
 }
 
+std::vector<MethodError> clusteredErrors(const Scene& scene, const std::vector<PointLight>& lights, FrameSettings s,
+                                         std::uint32_t frame) {
+    const ClusteringSettings clustering = s.method.clustering;
+    s.method = MethodSettings{};
+    FrameRenderer renderer(scene, lights, s);
+    renderer.render(frame);
+    const FloatImage referenceHdr = renderer.readHdr();
+    const RgbaImage referenceLdr = renderer.readLdr();
+    std::vector<MethodError> errors;
+    for (MethodKind kind : {MethodKind::ForwardPlus, MethodKind::Deferred, MethodKind::Visibility}) {
+        MethodSettings m;
+        m.kind = kind;
+        m.clustering = clustering;
+        renderer.setMethod(m);
+        renderer.render(frame);
+        const ClusterStatistics stats = renderer.method().clustering()->statistics();
+        MethodError e;
+        e.method = methodName(kind);
+        e.max8Bit = compareImages(renderer.readLdr(), referenceLdr).maxAbs * 255.0;
+        e.psnrDb = compareImages(renderer.readHdr(), referenceHdr).psnrDb;
+        e.droppedReferences = stats.droppedReferences;
+        e.listEntries = stats.listEntries;
+        e.emptyClusterShare = stats.emptyShare;
+        errors.push_back(e);
+    }
+    return errors;
+}
+
+void expectWithinContract(const std::vector<MethodError>& errors, const std::string& label) {
+    for (const MethodError& e : errors) {
+        std::printf("%-28s %-13s max8 %.3f  psnr %6.1f dB  entries %llu  empty %.1f %%  dropped %llu\n", label.c_str(),
+                    e.method.c_str(), e.max8Bit, e.psnrDb, static_cast<unsigned long long>(e.listEntries),
+                    100.0 * e.emptyClusterShare, static_cast<unsigned long long>(e.droppedReferences));
+        EXPECT_LE(e.max8Bit, 1.0 + 1e-6) << label << ": " << e.method;
+        EXPECT_GE(e.psnrDb, 50.0) << label << ": " << e.method;
+        EXPECT_EQ(e.droppedReferences, 0u) << label << ": " << e.method;
+    }
+}
+
 FrameSettings smallFrame(const Scene& scene, int width, int height) {
     FrameSettings s = smallFrame(scene, scene.suggestedView.value_or(framingView(scene.bounds)), width, height);
     s.animation = verticalDrift(lightVolume(scene.bounds), 0.5f);
     return s;
-}
-
-ReferenceFrame renderReference(FrameRenderer& renderer, std::uint32_t frame) {
-    renderer.render(frame);
-    return ReferenceFrame{renderer.readHdr(), renderer.readLdr()};
-}
-
-ImageDifference expectWithinContract(const std::string& label, const FrameRenderer& renderer, const ReferenceFrame& reference) {
-    const ImageDifference hdr = compareImages(renderer.readHdr(), reference.hdr);
-    const RgbaImage ldr = renderer.readLdr();
-    const ImageDifference ldrDiff = compareImages(ldr, reference.ldr);
-    std::printf("%-44s max8 %.4f  psnr %.1f dB  bad %.4f\n", label.c_str(), ldrDiff.maxAbs * 255.0, hdr.psnrDb,
-                ldrDiff.badPixelShare);
-    EXPECT_LE(ldrDiff.maxAbs, 1.0 / 255.0 + 1e-9) << label << ": images in " << writeFailureImages(label, ldr, reference.ldr);
-    EXPECT_GE(hdr.psnrDb, 50.0) << label;
-    return hdr;
 }
 
 FrameSettings smallFrame(const Scene& scene, const CameraPose& pose, int width, int height) {
@@ -109,6 +133,32 @@ FrameSettings smallFrame(const Scene& scene, const CameraPose& pose, int width, 
     fitClipPlanes(s.camera, scene.bounds);
     s.animation = verticalDrift(lightVolume(scene.bounds), 0.0f);
     return s;
+}
+
+ReferenceFrame readReference(const FrameRenderer& renderer) { return {renderer.readHdr(), renderer.readLdr()}; }
+
+ReferenceFrame renderReference(FrameRenderer& renderer, std::uint32_t frame) {
+    renderer.render(frame);
+    return readReference(renderer);
+}
+
+ImageDifference expectWithinContract(const FrameRenderer& renderer, const ReferenceFrame& reference, const std::string& label,
+                                     const std::string& imageName) {
+    const ImageDifference hdr = compareImages(renderer.readHdr(), reference.hdr);
+    const RgbaImage ldr = renderer.readLdr();
+    const ImageDifference ldrDiff = compareImages(ldr, reference.ldr);
+    std::printf("%-50s max8 %.4f  psnr %.1f dB\n", label.c_str(), ldrDiff.maxAbs * 255.0, hdr.psnrDb);
+    EXPECT_LE(ldrDiff.maxAbs, kContractMaxAbs8Bit) << label << ": images in " << writeFailureImages(imageName.empty() ? label : imageName, ldr, reference.ldr);
+    EXPECT_GE(hdr.psnrDb, kContractMinPsnrDb) << label;
+    return hdr;
+}
+
+NaiveReferenceScene::NaiveReferenceScene(const char* scene, std::uint32_t lights, std::uint32_t frameIndex)
+    : test(testScene(scene, lights, 5, lights >= 1024 ? 0.5f : 1.0f)),
+      renderer(test.scene, test.lights, smallFrame(test.scene, 160, 90)),
+      frame(frameIndex) {
+    renderer.render(frame);
+    reference = readReference(renderer);
 }
 
 int runManylights(const std::string& args, std::string& output, const std::string& workingDir, const std::string& wrapper) {

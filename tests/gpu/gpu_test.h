@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -45,23 +46,73 @@ struct TestQuad {
 };
 Scene quadScene(const std::vector<TestQuad>& quads);
 
+// The accuracy contract of design.md against naive: max error on the 8-bit output, PSNR on the
+// float output.
+constexpr double kMaxAbs8Bit = 1.0 / 255.0 + 1e-9;
+constexpr double kMinPsnrDb = 50.0;
+
+// The clustered methods and deferred resolves the accuracy tests render.
+struct ClusteredVariant {
+    MethodKind kind;
+    Resolve resolve;
+    const char* name;
+};
+inline constexpr ClusteredVariant kClusteredVariants[] = {{MethodKind::ForwardPlus, Resolve::Compute, "forward-plus"},
+                                                          {MethodKind::Deferred, Resolve::Compute, "deferred/compute"},
+                                                          {MethodKind::Deferred, Resolve::Fragment, "deferred/fragment"},
+                                                          {MethodKind::Visibility, Resolve::Compute, "visibility"}};
+
 // Frame settings for a scene at a small size, the scene's suggested camera, clip planes fitted.
 FrameSettings smallFrame(const Scene& scene, int width, int height);
 // The same from `pose`, the lights still (a scene built in a test has no suggested view).
 FrameSettings smallFrame(const Scene& scene, const CameraPose& pose, int width, int height);
 
-// A frame kept to compare others with: float and 8-bit output.
+// The accuracy contract against naive (design.md): max 1/255 on the 8-bit output, PSNR >= 50 dB
+// on the float output.
+inline constexpr double kContractMaxAbs8Bit = 1.0 / 255.0 + 1e-9;
+inline constexpr double kContractMinPsnrDb = 50.0;
+
+// The reference frame a renderer's output is held to.
 struct ReferenceFrame {
     FloatImage hdr;
     RgbaImage ldr;
 };
+ReferenceFrame readReference(const FrameRenderer& renderer);
 // Renders animation frame `frame` with the renderer's current method (naive, as built) and keeps it.
 ReferenceFrame renderReference(FrameRenderer& renderer, std::uint32_t frame);
 
-// The accuracy contract against the reference frame (design.md): max error <= 1/255 on the
-// 8-bit output and PSNR >= 50 dB on the float output. Expects both, prints the numbers under
-// `label`, writes the images on failure; returns the float difference.
-ImageDifference expectWithinContract(const std::string& label, const FrameRenderer& renderer, const ReferenceFrame& reference);
+// Compares the renderer's current frame with the reference, prints one line ("label max8 ...
+// psnr ..."), and fails the test (writing the images under `imageName`) when the frame breaks
+// the contract (imageName, or the label when empty). Returns the float-output difference.
+ImageDifference expectWithinContract(const FrameRenderer& renderer, const ReferenceFrame& reference, const std::string& label,
+                                     const std::string& imageName = "");
+
+// A test scene (seed 5; radius halved from 1024 lights up) rendered by naive forward at 160x90
+// on one frame: the reference the methods rendered by `renderer` next are held to.
+struct NaiveReferenceScene {
+    NaiveReferenceScene(const char* scene, std::uint32_t lights, std::uint32_t frameIndex = 45);
+    TestScene test;
+    FrameRenderer renderer;
+    std::uint32_t frame;
+    ReferenceFrame reference;
+};
+
+// One clustered method's difference from naive on the same frame.
+struct MethodError {
+    std::string method;
+    double max8Bit = 0.0;  // max abs error of the 8-bit output, in units of 1/255
+    double psnrDb = 0.0;   // on the float output
+    std::uint64_t droppedReferences = 0;
+    std::uint64_t listEntries = 0;
+    double emptyClusterShare = 0.0;
+};
+
+// Renders frame `frame` with naive, then with Forward+, clustered deferred and the visibility
+// buffer (the clustering of s.method), and returns each one's error against naive.
+std::vector<MethodError> clusteredErrors(const Scene& scene, const std::vector<PointLight>& lights, FrameSettings s,
+                                         std::uint32_t frame = 0);
+// Every method within the accuracy contract (design.md): 1/255 on 8 bits, 50 dB on floats.
+void expectWithinContract(const std::vector<MethodError>& errors, const std::string& label);
 
 // Runs the manylights executable with `args` (a shell-quoted string) in `workingDir` (if not
 // empty), behind `wrapper` if given (e.g. "xvfb-run -a", "env -u DISPLAY"); returns the exit

@@ -1,6 +1,8 @@
-// The GPU's light lists against a CPU sphere/AABB reference built here from the grid maths of
-// renderer/clustering/cluster_grid.h: no light that reaches a cluster may be missing from its
-// list. False positives (lights listed whose sphere misses the box) are counted.
+// The GPU's light lists against a CPU reference built here from the grid maths of
+// renderer/clustering/cluster_grid.h and cluster_culling.h, for every --cull test and both exact
+// assignments: no light that reaches a cluster (exact sphere-frustum distance) may be missing
+// from its list, and no light the CPU's cull test rejects may be listed. False positives
+// (listed lights that reach no point of the cluster) are counted.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -8,6 +10,7 @@
 #include <set>
 
 #include "gpu_test.h"
+#include "renderer/clustering/cluster_culling.h"
 #include "renderer/clustering/clustered_lighting.h"
 #include "scenes/scene_library.h"
 
@@ -20,6 +23,8 @@ struct AssignmentCase {
     std::uint32_t tilesX, slices;
     Slicing slicing;
     bool activeOnly;
+    CullMode cull = CullMode::Aabb;
+    AssignMode assign = AssignMode::Exact;
 };
 
 class LightAssignment : public GpuTest, public ::testing::WithParamInterface<AssignmentCase> {};
@@ -32,6 +37,8 @@ TEST_P(LightAssignment, ListsMatchTheCpuReference) {
     s.method.kind = MethodKind::Deferred;
     s.method.clustering.grid = ClusterGridConfig{c.tilesX, c.slices, c.slicing, 64};
     s.method.clustering.activeOnly = c.activeOnly;
+    s.method.clustering.cull = c.cull;
+    s.method.clustering.assign = c.assign;
     FrameRenderer renderer(scene, t.lights, s);
     renderer.render(20);
     const ClusteredLighting& clustering = *renderer.method().clustering();
@@ -48,29 +55,7 @@ TEST_P(LightAssignment, ListsMatchTheCpuReference) {
         EXPECT_LT(slicing.zFar, cameraFar);
     }
 
-    // Points inside each cluster's true volume (the tile's frustum between its slice planes):
-    // a light whose sphere holds one of them reaches the cluster and must be listed. The AABB
-    // is looser than the volume, so pairs the AABB admits but the volume does not may be left out.
-    auto samplesInside = [&](std::uint32_t x, std::uint32_t y, std::uint32_t slice) {
-        std::vector<glm::vec3> points;
-        const float px0 = x * grid.tileSizePx, px1 = std::min((x + 1) * grid.tileSizePx, float(s.width));
-        const float py0 = y * grid.tileSizePx, py1 = std::min((y + 1) * grid.tileSizePx, float(s.height));
-        const float z0 = std::max(slicing.boundary(slice, grid.slices), cameraNear);
-        const float z1 = std::min(slicing.boundary(slice + 1, grid.slices), cameraFar);
-        constexpr int n = 5;
-        for (int i = 0; i < n; ++i)
-            for (int j = 0; j < n; ++j)
-                for (int k = 0; k < n; ++k) {
-                    const float fx = (i + 0.5f) / n, fy = (j + 0.5f) / n, fz = (k + 0.5f) / n;
-                    const float ndcX = (px0 + fx * (px1 - px0)) / s.width * 2.0f - 1.0f;
-                    const float ndcY = (py0 + fy * (py1 - py0)) / s.height * 2.0f - 1.0f;
-                    const float z = z0 + fz * (z1 - z0);
-                    points.emplace_back(ndcX * z / proj[0][0], ndcY * z / proj[1][1], -z);
-                }
-        return points;
-    };
-
-    std::size_t missing = 0, outsideBox = 0, looseInVolume = 0, references = 0;
+    std::size_t missing = 0, outsideBox = 0, rejectedListed = 0, looseInVolume = 0, references = 0;
     std::vector<glm::vec3> centers;
     for (const PointLight& l : lights) centers.push_back(glm::vec3(view * glm::vec4(l.position, 1.0f)));
     for (std::uint32_t slice = 0; slice < grid.slices; ++slice) {
@@ -84,35 +69,44 @@ TEST_P(LightAssignment, ListsMatchTheCpuReference) {
                 ASSERT_LT(glm::length(glm::vec3(aabbs[cluster].maxPoint) - box.max), tolerance) << "cluster " << cluster;
                 const std::set<std::uint32_t> listed(lists[cluster].begin(), lists[cluster].end());
                 EXPECT_EQ(listed.size(), lists[cluster].size()) << "duplicate light in cluster " << cluster;
+                EXPECT_TRUE(std::is_sorted(lists[cluster].begin(), lists[cluster].end()))
+                    << "cluster " << cluster << ": list not in light-index order";
                 references += lists[cluster].size();
-                const std::vector<glm::vec3> points = samplesInside(x, y, slice);
+                const ClusterFrustum volume = clusterFrustum(grid, slicing, cameraNear, cameraFar, proj, s.width, s.height, x, y, slice);
                 for (std::uint32_t i = 0; i < lights.size(); ++i) {
                     const float r = lights[i].radius;
                     const bool isListed = listed.count(i) > 0;
+                    // Listed only when the CPU's copy of the cull test (with a little slack) passes.
+                    rejectedListed += isListed && !passesCullTest(c.cull, volume, centers[i], r * (1.0f + 1e-3f));
                     if (distanceSquared(box, centers[i]) > r * r * (1.0f + 1e-3f)) {
-                        outsideBox += isListed;  // the sphere misses the box: must never be listed
+                        // The sphere misses the box, so the cluster: never listed by the AABB test; the
+                        // others may list it (a false positive).
+                        if (c.cull == CullMode::Aabb) outsideBox += isListed;
+                        looseInVolume += isListed;
                         continue;
                     }
-                    bool reaches = false;
-                    for (const glm::vec3& p : points) reaches |= glm::dot(p - centers[i], p - centers[i]) < r * r * (1.0f - 1e-3f);
+                    const float distance = distanceToCluster(volume, centers[i]);
+                    const bool reaches = distance < r * (1.0f - 1e-3f);
                     if (reaches && !isListed && !c.activeOnly) {
                         if (++missing <= 5)
                             ADD_FAILURE() << "light " << i << " (view centre " << centers[i].x << "," << centers[i].y << ","
-                                          << centers[i].z << ", r " << r << ") missing from cluster " << x << "," << y
-                                          << " slice " << slice;
+                                          << centers[i].z << ", r " << r << ", distance " << distance << ") missing from cluster "
+                                          << x << "," << y << " slice " << slice << " (cull " << cullModeName(c.cull) << ")";
                     }
-                    looseInVolume += isListed && !reaches;
+                    looseInVolume += isListed && distance >= r;
                 }
             }
         }
     }
     EXPECT_EQ(missing, 0u) << "light-cluster pairs missing from the lists";
     EXPECT_EQ(outsideBox, 0u) << "listed lights whose sphere misses the cluster's box";
-    // False positives against the cluster's volume (sampled): the price of the AABB test.
+    EXPECT_EQ(rejectedListed, 0u) << "listed lights the CPU's " << cullModeName(c.cull) << " test rejects";
+    // False positives against the cluster's exact volume: the price of the cull test.
     RecordProperty("references", static_cast<int>(references));
     RecordProperty("false_positives", static_cast<int>(looseInVolume));
-    std::printf("%zu references, %zu (%.1f %%) listed without reaching a sampled point of the cluster\n", references,
-                looseInVolume, references ? 100.0 * looseInVolume / references : 0.0);
+    std::printf("cull %s, assign %s: %zu references, %zu (%.1f %%) listed without reaching the cluster\n",
+                cullModeName(c.cull), assignModeName(c.assign), references, looseInVolume,
+                references ? 100.0 * looseInVolume / references : 0.0);
     if (c.lights > 0) {
         EXPECT_GT(references, 0u);
     }
@@ -123,7 +117,52 @@ INSTANTIATE_TEST_SUITE_P(Grids, LightAssignment,
                       AssignmentCase{"boxes", 64, 7, 5, Slicing::Log, false},
                       AssignmentCase{"atrium", 200, 24, 16, Slicing::Fitted, false},
                       AssignmentCase{"atrium", 200, 13, 9, Slicing::Fitted, true},
-                      AssignmentCase{"atrium", 0, 8, 4, Slicing::Fitted, false}));
+                      AssignmentCase{"atrium", 0, 8, 4, Slicing::Fitted, false},
+                      AssignmentCase{"boxes", 64, 16, 8, Slicing::Linear, false, CullMode::Sphere},
+                      AssignmentCase{"boxes", 64, 7, 5, Slicing::Log, false, CullMode::Cone},
+                      AssignmentCase{"atrium", 200, 24, 16, Slicing::Fitted, false, CullMode::Sphere},
+                      AssignmentCase{"atrium", 200, 24, 16, Slicing::Fitted, false, CullMode::Cone},
+                      AssignmentCase{"atrium", 200, 13, 9, Slicing::Fitted, true, CullMode::Cone},
+                      AssignmentCase{"atrium", 200, 24, 16, Slicing::Fitted, false, CullMode::Cone, AssignMode::Capped},
+                      AssignmentCase{"atrium", 200, 24, 16, Slicing::Fitted, false, CullMode::Aabb, AssignMode::PerCluster},
+                      AssignmentCase{"boxes", 64, 7, 5, Slicing::Log, false, CullMode::Sphere, AssignMode::PerCluster},
+                      AssignmentCase{"atrium", 200, 13, 9, Slicing::Fitted, true, CullMode::Cone, AssignMode::PerCluster}));
+
+// The list sort on lists shorter and longer than its shared memory (ML_SORT_SHARED_CAPACITY;
+// longer lists take the in-buffer bitonic path), exact and capped. Two clusters (tile rows),
+// lights covering both.
+struct LongListCase {
+    AssignMode assign;
+    std::uint32_t lights;
+};
+
+class LongLists : public GpuTest, public ::testing::WithParamInterface<LongListCase> {};
+
+TEST_P(LongLists, AreCompleteAndSorted) {
+    const LongListCase c = GetParam();
+    const TestScene t = testScene("boxes", c.lights, 5, 3.0f);
+    FrameSettings s = smallFrame(t.scene, 64, 96);
+    s.method.kind = MethodKind::Deferred;
+    s.method.clustering.grid = ClusterGridConfig{1, 1, Slicing::Linear, 64};
+    s.method.clustering.assign = c.assign;
+    s.method.clustering.maxPerCluster = c.lights + 7;  // capped: room for every light, odd size
+    FrameRenderer renderer(t.scene, t.lights, s);
+    renderer.render(0);
+    const auto lists = renderer.method().clustering()->downloadLists();
+    ASSERT_EQ(lists.size(), 2u);
+    for (const auto& list : lists) {
+        std::printf("list of %zu lights\n", list.size());
+        if (c.lights > ML_SORT_SHARED_CAPACITY) {
+            EXPECT_GT(list.size(), std::size_t(ML_SORT_SHARED_CAPACITY));
+        }
+        EXPECT_TRUE(std::is_sorted(list.begin(), list.end()));
+        EXPECT_EQ(std::adjacent_find(list.begin(), list.end()), list.end()) << "duplicate light";
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Sort, LongLists,
+    ::testing::Values(LongListCase{AssignMode::Exact, 5000}, LongListCase{AssignMode::Exact, 700},
+                      LongListCase{AssignMode::Capped, 1500}));
 
 }  // namespace
 }  // namespace ml::test

@@ -106,7 +106,10 @@ INSTANTIATE_TEST_SUITE_P(Flags, RenderCommandBadFlag,
                       BadFlag{"--slices 5000", "--slices"}, BadFlag{"--workgroup 2048", "--workgroup"},
                       BadFlag{"--workgroup 48", "--workgroup"}, BadFlag{"--slicing cubic", "cubic"},
                       BadFlag{"--assign greedy", "greedy"}, BadFlag{"--resolve raytrace", "raytrace"},
-                      BadFlag{"--view heat", "heat"}, BadFlag{"--method naive --view light-count", "--view"},
+                      BadFlag{"--view heat", "heat"}, BadFlag{"--cull obb", "obb"},
+                      BadFlag{"--method forward-plus --normal-cones", "--normal-cones"},
+                      BadFlag{"--method naive --normal-cones", "--normal-cones"},
+                      BadFlag{"--assign capped --normal-cones", "--normal-cones"}, BadFlag{"--method naive --view light-count", "--view"},
                       BadFlag{"--scene boxes --size 320x180 --assign capped --tiles-x 64", "GL_MAX_SHADER_STORAGE_BLOCK_SIZE"}));
 
 }  // namespace

@@ -33,7 +33,7 @@ TEST_P(SpecularOff, EveryMethodMatchesNaive) {
         m.resolve = v.resolve;
         renderer.setMethod(m);
         renderer.render(30);
-        expectWithinContract(std::string(GetParam()) + " specular off " + v.name, renderer, naive);
+        expectWithinContract(renderer, naive, std::string(GetParam()) + " specular off " + v.name);
     }
 }
 
