@@ -80,6 +80,26 @@ constexpr const char* kScale = R"json({
   ]
 })json";
 
+// options: issue 5's closing table, each switchable option against naive on the same frame and
+// its cost; sized for llvmpipe (the atrium, 1024 lights, 640x360).
+constexpr const char* kOptions = R"json({
+  "name": "options",
+  "description": "The shading options of issue 5 on the atrium, 1024 lights, 640x360: G-buffer layouts, specular on/off, Forward+ with and without its depth pre-pass, bloom; each against naive on the same frame.",
+  "run": {"warmup": 1, "timed_frames": 3, "frame": 60, "naive_budget": 3e8},
+  "defaults": {"scene": "atrium", "size": "640x360", "lights": 1024, "assign": "exact"},
+  "experiments": [
+    {"name": "gbuffer", "description": "standard, packed and two-component G-buffers",
+     "method": ["deferred", "visibility"], "gbuffer": ["standard", "packed", "two-component"]},
+    {"name": "specular", "description": "Blinn-Phong on and off, every method against naive in the same mode",
+     "method": ["naive", "forward-plus", "deferred", "visibility"], "specular": ["on", "off"]},
+    {"name": "prepass", "description": "Forward+ with and without the depth pre-pass (log slicing for both: fitted needs the pre-pass)",
+     "method": "forward-plus", "slicing": "log", "prepass": ["on", "off"]},
+    {"name": "bloom", "description": "bloom off and on after shading, the same for every method",
+     "method": ["naive", "forward-plus", "deferred"], "bloom": ["off", "on"]}
+  ]
+})json";
+
+
 // culling: the light-vs-cluster tests, per-cluster assignment and normal cones (issue 5) on
 // the atrium at 1024 lights and 640x360, every point against naive (the table in the README).
 constexpr const char* kCulling = R"json({
@@ -97,7 +117,8 @@ constexpr const char* kCulling = R"json({
   ]
 })json";
 
-constexpr Preset kPresets[] = {{"quick", kQuick}, {"seeds", kSeeds}, {"scale", kScale}, {"culling", kCulling}};
+constexpr Preset kPresets[] = {{"quick", kQuick},     {"seeds", kSeeds},     {"scale", kScale},
+                               {"culling", kCulling}, {"options", kOptions}};
 
 }  // namespace
 

@@ -50,6 +50,10 @@ std::string frameKeyOf(const FrameOptions& o, double radius) {
     k["intensity"] = o.lightIntensity;
     k["drift"] = o.driftSpeed;
     k["exposure"] = o.exposure;
+    k["specular"] = o.specular;  // the naive reference must shade with the same model
+    k["bloom"] = o.bloom;        // and get the same post-process
+    k["bloom_threshold"] = o.bloomThreshold;
+    k["bloom_strength"] = o.bloomStrength;
     return k.dump();
 }
 
@@ -77,6 +81,8 @@ BenchRow configColumns(const BenchPoint& p, int index, std::uint32_t frame, cons
     row["seed"] = o.seed;
     row["intensity"] = o.lightIntensity;
     row["drift_speed"] = o.driftSpeed;
+    row["specular"] = o.specular;
+    row["bloom"] = o.bloom;
     int w = 0, h = 0;
     parseSize(o.size, w, h);
     row["width"] = w;
@@ -93,8 +99,9 @@ BenchRow configColumns(const BenchPoint& p, int index, std::uint32_t frame, cons
     row["max_per_cluster"] = p.capped ? nlohmann::ordered_json(o.maxPerCluster) : nlohmann::ordered_json();
     row["active_only"] = clustered(o.activeOnly);
     row["cull"] = clustered(o.cull);
-    row["normal_cones"] = p.gbufferLit && !p.capped ? nlohmann::ordered_json(o.normalCones) : nlohmann::ordered_json();
-    row["gbuffer"] = p.deferred ? nlohmann::ordered_json(p.gbuffer) : nlohmann::ordered_json();
+    row["normal_cones"] = p.gbuffered && !p.capped ? nlohmann::ordered_json(o.normalCones) : nlohmann::ordered_json();
+    row["gbuffer"] = p.gbuffered ? nlohmann::ordered_json(o.gbuffer) : nlohmann::ordered_json();
+    row["prepass"] = p.forwardPlus ? nlohmann::ordered_json(o.prepass) : nlohmann::ordered_json();
     row["resolve"] = p.deferred ? nlohmann::ordered_json(o.resolve) : nlohmann::ordered_json();
     row["workgroup"] = clustered(o.workgroup);
     row["frame_index"] = frame;

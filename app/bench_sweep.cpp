@@ -86,7 +86,7 @@ RadiusSpec asRadius(const json& v) {
 // ---- scene, a light set and a naive reference; method-level axes innermost.
 
 enum class ValueKind { Text, Integer, Number, Boolean, Radius, NumberOrAuto };
-enum class Applies { Always, Clustered, Deferred, Capped, GBufferLit };
+enum class Applies { Always, Clustered, Deferred, GBuffered, ForwardPlus, Capped, ExactGBuffered };
 
 struct AxisDef {
     SweepAxis info;
@@ -149,26 +149,27 @@ const std::vector<AxisDef>& axisDefs() {
          }},
         {{"drift_speed", "--drift-speed", "mean upward drift of the lights, units per second"}, ValueKind::Number,
          Applies::Always, [](BenchPoint& p, const json& v) { p.frame.driftSpeed = static_cast<float>(asNumber(v)); }},
+        {{"specular", "--specular", "Blinn-Phong specular term: on, off (Lambert only)"}, ValueKind::Boolean, Applies::Always,
+         [](BenchPoint& p, const json& v) { p.frame.specular = asBoolean(v) ? "on" : "off"; }},
+        {{"bloom", "--bloom", "bloom after shading, before the tonemap: on, off"}, ValueKind::Boolean, Applies::Always,
+         [](BenchPoint& p, const json& v) { p.frame.bloom = asBoolean(v); }},
         {{"method", "--method", "naive, forward-plus, deferred, visibility"}, ValueKind::Text, Applies::Always,
          [](BenchPoint& p, const json& v) {
              const MethodKind kind = parseMethod(asText(v));
              p.frame.method = v.get<std::string>();
              p.clustered = kind != MethodKind::Naive;
              p.deferred = kind == MethodKind::Deferred;
-             p.gbufferLit = kind == MethodKind::Deferred || kind == MethodKind::Visibility;
+             p.gbuffered = kind == MethodKind::Deferred || kind == MethodKind::Visibility;
+             p.forwardPlus = kind == MethodKind::ForwardPlus;
          }},
-        {{"gbuffer", "--gbuffer", "G-buffer layout of deferred (standard: three RGBA16F targets)"}, ValueKind::Text,
-         Applies::Deferred,
+        {{"gbuffer", "--gbuffer", "G-buffer of deferred and visibility: standard, packed, two-component"}, ValueKind::Text,
+         Applies::GBuffered,
          [](BenchPoint& p, const json& v) {
-             const std::string s = asText(v);
-             const auto& formats = gbufferFormats();
-             if (std::find(formats.begin(), formats.end(), s) == formats.end()) {
-                 std::string list;
-                 for (const std::string& f : formats) list += (list.empty() ? "" : ", ") + f;
-                 throw std::invalid_argument("unknown G-buffer format (this build has: " + list + ")");
-             }
-             p.gbuffer = s;
+             (void)parseGBufferFormat(asText(v));
+             p.frame.gbuffer = v.get<std::string>();
          }},
+        {{"prepass", "--prepass", "forward-plus depth pre-pass: on, off"}, ValueKind::Boolean, Applies::ForwardPlus,
+         [](BenchPoint& p, const json& v) { p.frame.prepass = asBoolean(v) ? "on" : "off"; }},
         {{"resolve", "--resolve", "deferred lighting pass: compute or fragment"}, ValueKind::Text, Applies::Deferred,
          [](BenchPoint& p, const json& v) {
              (void)parseResolve(asText(v));
@@ -211,7 +212,7 @@ const std::vector<AxisDef>& axisDefs() {
              p.frame.cull = v.get<std::string>();
          }},
         {{"normal_cones", "--normal-cones", "deferred and visibility, exact lists: lists per (cluster, normal bin): on, off"},
-         ValueKind::Boolean, Applies::GBufferLit, [](BenchPoint& p, const json& v) { p.frame.normalCones = asBoolean(v); }},
+         ValueKind::Boolean, Applies::ExactGBuffered, [](BenchPoint& p, const json& v) { p.frame.normalCones = asBoolean(v); }},
     };
     return defs;
 }
@@ -233,8 +234,10 @@ bool applies(const AxisDef& axis, const BenchPoint& p) {
     case Applies::Always: return true;
     case Applies::Clustered: return p.clustered;
     case Applies::Deferred: return p.deferred;
+    case Applies::GBuffered: return p.gbuffered;
+    case Applies::ForwardPlus: return p.forwardPlus;
     case Applies::Capped: return p.capped;
-    case Applies::GBufferLit: return p.gbufferLit && !p.capped;
+    case Applies::ExactGBuffered: return p.gbuffered && !p.capped;  // normal_cones: exact lists of a G-buffer
     }
     return true;
 }
@@ -315,18 +318,17 @@ std::string describePoint(const BenchPoint& p) {
         if (o.cull != FrameOptions{}.cull) s += ", cull " + o.cull;
         if (o.normalCones) s += ", normal cones";
     }
-    if (p.deferred) s += ", " + o.resolve + " resolve, " + p.gbuffer + " G-buffer";
+    if (p.deferred) s += ", " + o.resolve + " resolve";
+    if (p.gbuffered) s += ", " + o.gbuffer + " G-buffer";
+    if (p.forwardPlus && o.prepass == "off") s += ", no pre-pass";
+    if (o.specular == "off") s += ", specular off";
+    if (o.bloom) s += ", bloom";
     return s;
 }
 
 double overlapRadius(double volume, std::uint64_t lights, double overlap) {
     if (lights == 0 || !(volume > 0.0)) return 0.0;
     return std::cbrt(3.0 * overlap * volume / (4.0 * std::numbers::pi * static_cast<double>(lights)));
-}
-
-const std::vector<std::string>& gbufferFormats() {
-    static const std::vector<std::string> formats = {"standard"};
-    return formats;
 }
 
 const std::vector<SweepAxis>& sweepAxes() {
@@ -453,7 +455,7 @@ Sweep expandSweep(const json& doc, const json& overrides, const std::vector<std:
             BenchPoint p;
             p.experiment = name;
             p.frame.method = "deferred";
-            p.clustered = p.deferred = p.gbufferLit = true;
+            p.clustered = p.deferred = p.gbuffered = true;
             json key = json::object();
             for (std::size_t i = 0; i < axes.size(); ++i) {
                 const json& v = axes[i].second[digit[i]];
@@ -477,8 +479,10 @@ Sweep expandSweep(const json& doc, const json& overrides, const std::vector<std:
                 p.capped = false;
             }
             if (!p.capped) p.frame.maxPerCluster = FrameOptions{}.maxPerCluster;
-            if (!p.gbufferLit || p.capped) p.frame.normalCones = false;
-            if (!p.deferred) p.frame.resolve = FrameOptions{}.resolve, p.gbuffer = BenchPoint{}.gbuffer;
+            if (!p.gbuffered || p.capped) p.frame.normalCones = false;
+            if (!p.deferred) p.frame.resolve = FrameOptions{}.resolve;
+            if (!p.gbuffered) p.frame.gbuffer = FrameOptions{}.gbuffer;
+            if (!p.forwardPlus) p.frame.prepass = FrameOptions{}.prepass;
             for (std::size_t i = 0; i < axes.size(); ++i)
                 if (applies(*axes[i].first, p)) key[axes[i].first->info.key] = axes[i].second[digit[i]];
             try {

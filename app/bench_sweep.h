@@ -52,18 +52,15 @@ struct RunSettings {
     std::optional<double> naiveBudget;  // pixels x lights a naive frame may cost; unset: by renderer
 };
 
-// The G-buffer layouts that exist. Issue 5 adds packed ones; a new name goes here and into
-// the deferred method's settings.
-const std::vector<std::string>& gbufferFormats();
 
 struct BenchPoint {
     std::string experiment;
     FrameOptions frame;       // the point's flags, as `render` would take them
     RadiusSpec radius;        // resolved against the scene when the point runs
-    std::string gbuffer = "standard";
     bool clustered = false;   // forward-plus or deferred: the grid axes apply
-    bool deferred = false;    // resolve and gbuffer apply
-    bool gbufferLit = false;  // deferred or visibility: normal_cones applies
+    bool deferred = false;    // resolve applies
+    bool gbuffered = false;   // deferred or visibility: gbuffer and normal_cones apply
+    bool forwardPlus = false; // prepass applies
     bool capped = false;      // max_per_cluster applies
 };
 

@@ -12,6 +12,13 @@ namespace {
 // Larger than any GL implementation's maximum texture size; the context checks the real limit.
 constexpr int kMaxDimension = 16384;
 constexpr long long kMaxLights = 16'777'216;
+
+// on/off switches (--specular, --prepass): one line naming the flag and the bad value.
+bool parseOnOff(const char* flag, const std::string& text) {
+    if (text == "on") return true;
+    if (text == "off") return false;
+    throw std::invalid_argument(std::string(flag) + " '" + text + "': expected on or off");
+}
 }  // namespace
 
 void addFrameOptions(CLI::App& cmd, FrameOptions& o) {
@@ -33,6 +40,11 @@ void addFrameOptions(CLI::App& cmd, FrameOptions& o) {
     grid->add_option("--cull", o.cull, "light-vs-cluster test: aabb (sphere vs the cluster's AABB), sphere (vs its frustum planes), cone (seed 001's spherical-sliced cone)")->capture_default_str();
     grid->add_flag("--normal-cones", o.normalCones, "deferred and visibility: lists per (cluster, view-space normal bin), skipping lights behind every surface of a cluster (Olsson et al. 2012)");
     grid->add_option("--resolve", o.resolve, "deferred lighting pass: compute or fragment")->capture_default_str();
+    grid->add_option("--gbuffer", o.gbuffer, "G-buffer of deferred and visibility: standard (3 x RGBA16F, 24 B/px), packed "
+                     "(1 x RGBA32UI, 16 B/px), two-component (normal z rebuilt, loses its sign: the documented failure case); "
+                     "naive and forward-plus have none and ignore it")->capture_default_str();
+    grid->add_option("--prepass", o.prepass, "forward-plus depth pre-pass: on, or off (one LESS pass shading overdraw; "
+                     "fitted slicing falls back to log, --active-only is refused)")->capture_default_str();
     cmd.add_option("--view", o.view, "shaded, light-count, slices, clusters, overflow, albedo, normal, depth")->capture_default_str();
     cmd.add_option("--lights", o.lights, "number of point lights")->capture_default_str();
     cmd.add_option("--light-radius", o.lightRadius, "light radius in scene units (default: a tenth of the scene's diagonal)");
@@ -47,6 +59,10 @@ void addFrameOptions(CLI::App& cmd, FrameOptions& o) {
     cmd.add_option("--frames", o.frames, "advance the light animation this many frames (1/60 s each) first")->capture_default_str();
     cmd.add_option("--exposure", o.exposure, "exposure before the tonemap")->capture_default_str();
     cmd.add_option("--draw", o.draw, "scene submission: direct (a draw call per draw range) or indirect (multi-draw indirect, a call per texture)")->capture_default_str();
+    cmd.add_flag("--bloom", o.bloom, "bloom: bright pass, half-resolution Gaussian, added to the HDR image before the tonemap");
+    cmd.add_option("--bloom-threshold", o.bloomThreshold, "luminance above which pixels bloom")->capture_default_str();
+    cmd.add_option("--bloom-strength", o.bloomStrength, "how much of the blurred bright part is added back")->capture_default_str();
+    cmd.add_option("--specular", o.specular, "on: Blinn-Phong specular term; off: Lambert only (every method and the reference alike)")->capture_default_str();
     cmd.add_option("--drift-speed", o.driftSpeed, "mean upward drift of the lights, units per second (0: still)")->capture_default_str();
     cmd.add_option("--backend", o.backend, "offscreen GL: auto (EGL, then OSMesa), egl, osmesa")->capture_default_str();
     cmd.add_flag("--gl-debug", o.glDebug, "debug context; print every KHR_debug message");
@@ -99,6 +115,20 @@ PreparedFrame prepareFrame(const FrameOptions& o, const Scene* loaded) {
     if (f.settings.method.kind == MethodKind::Naive && clustering.view != DebugView::Shaded)
         throw std::invalid_argument("--view " + o.view + ": needs a clustered method (--method forward-plus or deferred)");
     f.settings.method.resolve = parseResolve(o.resolve);
+    f.settings.specular = parseOnOff("--specular", o.specular);
+    f.settings.method.gbuffer = parseGBufferFormat(o.gbuffer);
+    f.settings.method.prepass = parseOnOff("--prepass", o.prepass);
+    if (!f.settings.method.prepass && f.settings.method.kind == MethodKind::ForwardPlus) {
+        if (clustering.activeOnly)
+            throw std::invalid_argument("--active-only needs the depth pre-pass of forward-plus (drop --prepass off)");
+        if (clustering.grid.slicing == Slicing::Fitted)
+            f.warnings.push_back("--prepass off: no depth exists before the light lists, so fitted slicing falls back to log");
+    }
+    if (!(std::isfinite(o.bloomThreshold) && o.bloomThreshold >= 0.0f))
+        throw std::invalid_argument("--bloom-threshold: must be a finite number >= 0");
+    if (!(std::isfinite(o.bloomStrength) && o.bloomStrength >= 0.0f))
+        throw std::invalid_argument("--bloom-strength: must be a finite number >= 0");
+    f.settings.bloom = BloomSettings{o.bloom, o.bloomThreshold, o.bloomStrength};
     f.context.backend = parseBackend(o.backend);
     f.context.debug = o.glDebug;
     if (o.lights < 0 || o.lights > kMaxLights)

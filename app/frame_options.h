@@ -30,6 +30,8 @@ struct FrameOptions {
     std::string cull = "aabb";
     bool normalCones = false;
     std::string resolve = "compute";
+    std::string gbuffer = "standard";
+    std::string prepass = "on";
     std::string view = "shaded";
     long long lights = 1024;
     std::optional<float> lightRadius;
@@ -44,6 +46,10 @@ struct FrameOptions {
     long long frames = 0;
     float exposure = 1.0f;
     std::string draw = "direct";
+    std::string specular = "on";
+    bool bloom = false;
+    float bloomThreshold = BloomSettings{}.threshold;
+    float bloomStrength = BloomSettings{}.strength;
     float driftSpeed = 0.5f;
     std::string backend = "auto";
     bool glDebug = false;

@@ -40,6 +40,7 @@ int runRender(const RenderOptions& o) {
         std::printf("scene submission: %s, %zu draw calls per textured raster pass (%zu draw ranges)\n",
                     drawSubmissionName(renderer.scene().submission()), renderer.scene().drawCallsPerPass(),
                     renderer.scene().drawRangeCount());
+        printShadingOptions(frame.settings);
         if (clustering) {
             const ClusterStatistics stats = clustering->statistics();
             printClusterStatistics(stats);

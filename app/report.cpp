@@ -56,6 +56,28 @@ void printClusterStatistics(const ClusterStatistics& s) {
     std::printf("memory: light lists %.2f MiB, grid %.2f MiB\n", s.listBytes / 1048576.0, s.gridBytes / 1048576.0);
 }
 
+void printShadingOptions(const FrameSettings& s) {
+    std::printf("specular: %s\n", s.specular ? "on (Blinn-Phong)" : "off (Lambert only)");
+    const MethodKind kind = s.method.kind;
+    if (kind == MethodKind::Deferred || kind == MethodKind::Visibility) {
+        const std::size_t perPixel = gbufferBytesPerPixel(s.method.gbuffer);
+        std::printf("G-buffer: %s, %zu B per pixel, %.2f MiB at %dx%d (depth: the frame's depth buffer)\n",
+                    gbufferFormatName(s.method.gbuffer), perPixel,
+                    static_cast<double>(perPixel) * s.width * s.height / 1048576.0, s.width, s.height);
+    } else {
+        std::printf("G-buffer: none (%s shades while rastering; --gbuffer is ignored)\n", methodName(kind).c_str());
+    }
+    if (kind == MethodKind::ForwardPlus)
+        std::printf("depth pre-pass: %s\n", s.method.prepass ? "on (shade with EQUAL, each pixel once)"
+                                                                : "off (one LESS pass; hidden fragments are shaded too)");
+    // Two half-resolution RGBA32F images (renderer/bloom_pass.h).
+    const double bloomBytes = 2.0 * ((s.width + 1) / 2) * ((s.height + 1) / 2) * 16;
+    if (s.bloom.enabled)
+        std::printf("bloom: threshold %.3g, strength %.3g, %.2f MiB at half resolution\n", s.bloom.threshold,
+                    s.bloom.strength, bloomBytes / 1048576.0);
+    else std::printf("bloom: off\n");
+}
+
 void printCullAccuracy(const ClusterStatistics& s, const CullAccuracy& a) {
     std::printf("cull %s: %llu references, of which %llu (%.1f %%) reach no point of their cluster (exact sphere-frustum distance",
                 s.cull.c_str(), static_cast<unsigned long long>(a.references), static_cast<unsigned long long>(a.falsePositives),

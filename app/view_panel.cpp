@@ -95,9 +95,30 @@ void lightsSection(ViewSettings& s, const ViewStatistics& stats, PanelEdits& edi
     ImGui::SetNextItemWidth(kItemWidth - ImGui::GetItemRectSize().x - ImGui::GetStyle().ItemSpacing.x);
     ImGui::SliderFloat("speed", &s.animationSpeed, 0.0f, 4.0f, "%.2fx");
     ImGui::SliderFloat("exposure", &s.exposure, 0.05f, 20.0f, "%.2f", ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
+}
+
+// The shading options (issue 5): closed at start, so the panel keeps its height.
+void shadingSection(ViewSettings& s, PanelEdits& edits) {
+    // Scene submission (--draw): closed with the shading options, so the panel keeps its height.
     int draw = static_cast<int>(s.draw);
     if (comboOf("scene draws", draw, {drawSubmissionName(DrawSubmission::Direct), drawSubmissionName(DrawSubmission::Indirect)}))
         s.draw = static_cast<DrawSubmission>(draw);
+    ImGui::BeginDisabled(s.method.kind != MethodKind::Deferred && s.method.kind != MethodKind::Visibility);
+    int gbuffer = static_cast<int>(s.method.gbuffer);
+    if (comboOf("G-buffer", gbuffer, gbufferFormatNames())) {
+        s.method.gbuffer = static_cast<GBufferFormat>(gbuffer);
+        edits.method = true;
+    }
+    ImGui::EndDisabled();
+    ImGui::BeginDisabled(s.method.kind != MethodKind::ForwardPlus);
+    if (ImGui::Checkbox("depth pre-pass (Forward+)", &s.method.prepass)) edits.method = true;
+    ImGui::EndDisabled();
+    ImGui::Checkbox("specular (Blinn-Phong)", &s.specular);
+    ImGui::Checkbox("bloom", &s.bloom.enabled);
+    ImGui::BeginDisabled(!s.bloom.enabled);
+    ImGui::SliderFloat("bloom threshold", &s.bloom.threshold, 0.0f, 20.0f, "%.2f", ImGuiSliderFlags_AlwaysClamp);
+    ImGui::SliderFloat("bloom strength", &s.bloom.strength, 0.0f, 4.0f, "%.2f", ImGuiSliderFlags_AlwaysClamp);
+    ImGui::EndDisabled();
 }
 
 void gridSection(ViewSettings& s, PanelEdits& edits) {
@@ -221,6 +242,13 @@ void statisticsSection(const ViewStatistics& st) {
     } else {
         ImGui::TextColored(kDim, "no clusters: naive shades %zu lights per pixel", st.lights);
     }
+    if (st.gbuffer) {
+        const std::size_t perPixel = gbufferBytesPerPixel(*st.gbuffer);
+        ImGui::Text("G-buffer %s: %zu B/pixel, %s", gbufferFormatName(*st.gbuffer), perPixel,
+                    mebibytes(perPixel * static_cast<std::size_t>(st.width) * st.height).c_str());
+    } else {
+        ImGui::TextColored(kDim, "G-buffer: none (this method shades while rastering)");
+    }
     ImGui::Text("renderer memory %s", mebibytes(st.rendererBytes).c_str());
     if (st.gpuUsedBytes) ImGui::Text("GPU memory in use %s", mebibytes(*st.gpuUsedBytes).c_str());
     ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + kStatsWidth);
@@ -256,6 +284,9 @@ PanelEdits drawViewPanel(ViewSettings& settings, const ViewStatistics& stats) {
     const ImGuiWindowFlags flags = ImGuiWindowFlags_AlwaysAutoResize;
     ImGui::SetNextWindowPos(ImVec2(10.0f, 10.0f), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowBgAlpha(0.85f);
+    // Rows 1 px closer than ImGui's default, so the panel with every section's controls still
+    // ends above 580 px at the 640 px default window height.
+    ImGui::PushStyleVar(ImGuiStyleVar_ItemSpacing, ImVec2(ImGui::GetStyle().ItemSpacing.x, ImGui::GetStyle().ItemSpacing.y - 1.0f));
     if (ImGui::Begin("manylights", nullptr, flags)) {
         ImGui::PushItemWidth(kItemWidth);
         if (!stats.error.empty()) {
@@ -266,11 +297,13 @@ PanelEdits drawViewPanel(ViewSettings& settings, const ViewStatistics& stats) {
         if (ImGui::CollapsingHeader("Method", ImGuiTreeNodeFlags_DefaultOpen)) methodSection(settings, edits);
         if (ImGui::CollapsingHeader("Lights", ImGuiTreeNodeFlags_DefaultOpen)) lightsSection(settings, stats, edits);
         if (ImGui::CollapsingHeader("Cluster grid", ImGuiTreeNodeFlags_DefaultOpen)) gridSection(settings, edits);
+        if (ImGui::CollapsingHeader("Shading")) shadingSection(settings, edits);
         if (ImGui::CollapsingHeader("Camera and window", ImGuiTreeNodeFlags_DefaultOpen)) cameraSection(settings, stats, edits);
         if (ImGui::CollapsingHeader("Keys")) keysSection();
         ImGui::PopItemWidth();
     }
     ImGui::End();
+    ImGui::PopStyleVar();
 
     ImGui::SetNextWindowPos(ImVec2(ImGui::GetIO().DisplaySize.x - 10.0f, 10.0f), ImGuiCond_FirstUseEver, ImVec2(1.0f, 0.0f));
     ImGui::SetNextWindowBgAlpha(0.85f);

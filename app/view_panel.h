@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "renderer/bloom_pass.h"
 #include "renderer/camera_controller.h"
 #include "renderer/clustering/cluster_statistics.h"
 #include "renderer/methods/shading_method.h"
@@ -23,6 +24,8 @@ struct ViewSettings {
     float animationSpeed = 1.0f;  // times real time
     float exposure = 1.0f;
     DrawSubmission draw = DrawSubmission::Direct;
+    bool specular = true;
+    BloomSettings bloom;
     bool vsync = true;
     CameraMode cameraMode = CameraMode::Fly;
 };
@@ -38,6 +41,7 @@ struct ViewStatistics {
     TimingClock clock = TimingClock::GpuQueries;
     std::optional<ClusterStatistics> clusters;  // clustered methods; refreshed a few times a second
     std::size_t rendererBytes = 0;           // the renderer's buffers and targets
+    std::optional<GBufferFormat> gbuffer;    // the layout, where the method has a G-buffer
     std::optional<std::size_t> gpuUsedBytes; // the whole GPU, where GL_NVX_gpu_memory_info says
     std::string glRenderer, glVersion;
     int width = 0, height = 0;

@@ -82,6 +82,8 @@ ViewSession::ViewSession(const ViewOptions& options, PreparedFrame frame, std::o
     settings_.lightRadius = options.frame.lightRadius.value_or(defaultLightRadius(frame_.scene.bounds));
     settings_.exposure = options.frame.exposure;
     settings_.draw = parseDrawSubmission(options.frame.draw);
+    settings_.specular = frame_.settings.specular;
+    settings_.bloom = frame_.settings.bloom;
     settings_.vsync = !options.noVsync;
     showPanel_ = !options.hidePanel;
 
@@ -184,6 +186,8 @@ void ViewSession::applyEdits(const PanelEdits& edits) {
     if (edits.screenshot) screenshotRequested_ = true;
     renderer_->setExposure(settings_.exposure);
     renderer_->setDrawSubmission(settings_.draw);
+    renderer_->setSpecular(settings_.specular);
+    renderer_->setBloom(settings_.bloom);
 }
 
 void ViewSession::refreshStatistics(bool now, bool rendered) {
@@ -202,8 +206,11 @@ void ViewSession::refreshStatistics(bool now, bool rendered) {
     const ClusteredLighting* clustering = renderer_->method().clustering();
     if (clustering) stats_.clusters = clustering->statistics();
     else stats_.clusters.reset();
+    const MethodSettings& method = renderer_->settings().method;
+    if (method.kind == MethodKind::Deferred || method.kind == MethodKind::Visibility) stats_.gbuffer = method.gbuffer;
+    else stats_.gbuffer.reset();
     std::size_t bytes = renderer_->scene().bytes() + renderer_->lights().bytes() + renderer_->targets().bytes() +
-                        renderer_->method().extraTargetBytes();
+                        renderer_->method().extraTargetBytes() + renderer_->bloom().bytes();
     if (stats_.clusters) bytes += stats_.clusters->listBytes + stats_.clusters->gridBytes;
     stats_.rendererBytes = bytes;
     if (nvxMemoryInfo_) {

@@ -15,10 +15,11 @@
 #include "include/frame_uniforms.glsl"
 #include "include/cluster_grid.glsl"
 #include "include/normal_bins.glsl"
+#include "include/shading.glsl"
+#include "include/gbuffer_layout.glsl"
+#include "include/gbuffer_fetch.glsl"
 
 layout(local_size_x = ML_SCREEN_TILE, local_size_y = ML_SCREEN_TILE) in;
-layout(binding = ML_TEX_DEPTH) uniform sampler2D u_depth;
-layout(binding = ML_TEX_GBUFFER0) uniform sampler2D u_gNormal;  // world-space normal, as the resolve reads it
 layout(std430, binding = ML_SSBO_NORMAL_BIN_MASKS) buffer NormalBinMasks { uint normalBinMasks[]; };
 layout(std430, binding = ML_SSBO_NORMAL_CONES) buffer NormalCones { ivec4 normalCones[]; };  // xyz: normal sum, w: 1 - min cos (float bits)
 uniform uint u_phase;
@@ -43,7 +44,10 @@ void main() {
     vec2 ndc = (vec2(p) + 0.5) * u_viewport.zw * 2.0 - 1.0;
     vec4 viewPos = u_invProj * vec4(ndc, depth * 2.0 - 1.0, 1.0);
     viewPos /= viewPos.w;
-    vec3 n = normalize(mat3(u_view) * normalize(texelFetch(u_gNormal, p, 0).xyz));
+    SurfacePoint s;  // the normal decoded as the resolve decodes it, in every --gbuffer layout
+    s.position = vec3(0.0);  // decodeGBuffer fills the rest; the bins need no position
+    decodeGBuffer(fetchGBuffer(p), s);
+    vec3 n = normalize(mat3(u_view) * s.normal);
     uint mask = 1u << normalBin(n);
     for (int axis = 0; axis < 3; ++axis) {
         vec3 nudge = vec3(0.0);

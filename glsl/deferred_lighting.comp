@@ -9,6 +9,8 @@
 #include "include/normal_bins.glsl"
 #include "include/cluster_lists.glsl"
 #include "include/debug_views.glsl"
+#include "include/gbuffer_layout.glsl"
+#include "include/gbuffer_fetch.glsl"
 #include "include/deferred_resolve.glsl"
 
 layout(local_size_x = ML_SCREEN_TILE, local_size_y = ML_SCREEN_TILE) in;

@@ -8,6 +8,8 @@
 #include "include/normal_bins.glsl"
 #include "include/cluster_lists.glsl"
 #include "include/debug_views.glsl"
+#include "include/gbuffer_layout.glsl"
+#include "include/gbuffer_fetch.glsl"
 #include "include/deferred_resolve.glsl"
 
 layout(location = 0) out vec4 o_color;

@@ -1,23 +1,36 @@
 #version 450 core
 // The G-buffer pass of clustered deferred shading: what the shading model reads, no position
-// (it comes back from depth). Three RGBA16F targets: normal, albedo, specular parameters.
+// (it comes back from depth), in the --gbuffer layout (include/gbuffer_layout.glsl).
 #include "include/bindings.h"
 #include "include/frame_uniforms.glsl"
 #include "include/shading.glsl"
 #include "include/material.glsl"
+#include "include/gbuffer_layout.glsl"
 
 layout(location = 3) flat in uint v_materialIndex;  // scene.vert's per-draw attribute
 
 layout(location = 0) in vec3 v_worldPos;
 layout(location = 1) in vec3 v_worldNormal;
 layout(location = 2) in vec2 v_uv;
-layout(location = 0) out vec4 o_normal;
-layout(location = 1) out vec4 o_albedo;
-layout(location = 2) out vec4 o_specular;
+#if ML_GBUFFER_FLOAT_TARGETS == 0
+layout(location = 0) out uvec4 o_packed;
+#else
+layout(location = 0) out vec4 o_target0;
+layout(location = 1) out vec4 o_target1;
+#if ML_GBUFFER_FLOAT_TARGETS == 3
+layout(location = 2) out vec4 o_target2;
+#endif
+#endif
 
 void main() {
-    SurfacePoint s = surfaceFromMaterial(v_materialIndex, v_worldPos, v_worldNormal, v_uv);
-    o_normal = vec4(s.normal, 0.0);
-    o_albedo = vec4(s.albedo, 1.0);
-    o_specular = vec4(s.specularStrength, s.shininess, 0.0, 0.0);
+    GBufferTexel t = encodeGBuffer(surfaceFromMaterial(v_materialIndex, v_worldPos, v_worldNormal, v_uv));
+#if ML_GBUFFER_FLOAT_TARGETS == 0
+    o_packed = t.bits;
+#else
+    o_target0 = t.target[0];
+    o_target1 = t.target[1];
+#if ML_GBUFFER_FLOAT_TARGETS == 3
+    o_target2 = t.target[2];
+#endif
+#endif
 }

@@ -12,16 +12,35 @@
 #include "include/frame_uniforms.glsl"
 #include "include/shading.glsl"
 #include "include/material.glsl"
+#include "include/gbuffer_layout.glsl"
 
 layout(local_size_x = ML_SCREEN_TILE, local_size_y = ML_SCREEN_TILE) in;
 layout(binding = ML_TEX_VISIBILITY) uniform usampler2D u_visibility;
 layout(std430, binding = ML_SSBO_VERTICES) readonly buffer Vertices { float vertexData[]; };  // 8 floats a vertex
 layout(std430, binding = ML_SSBO_INDICES) readonly buffer Indices { uint indexData[]; };
 layout(std430, binding = ML_SSBO_TRIANGLE_MATERIALS) readonly buffer TriangleMaterials { uint triangleMaterial[]; };
-layout(binding = ML_IMG_GBUFFER0, rgba16f) uniform writeonly image2D u_gNormalOut;
-layout(binding = ML_IMG_GBUFFER1, rgba16f) uniform writeonly image2D u_gAlbedoOut;
-layout(binding = ML_IMG_GBUFFER2, rgba16f) uniform writeonly image2D u_gSpecularOut;
+#if ML_GBUFFER_FLOAT_TARGETS == 0
+layout(binding = ML_IMG_GBUFFER0, rgba32ui) uniform writeonly uimage2D u_gPackedOut;
+#else
+layout(binding = ML_IMG_GBUFFER0, rgba16f) uniform writeonly image2D u_gTarget0Out;
+layout(binding = ML_IMG_GBUFFER1, rgba16f) uniform writeonly image2D u_gTarget1Out;
+#if ML_GBUFFER_FLOAT_TARGETS == 3
+layout(binding = ML_IMG_GBUFFER2, rgba16f) uniform writeonly image2D u_gTarget2Out;
+#endif
+#endif
 uniform int u_textureGroup;
+
+void storeGBuffer(ivec2 p, GBufferTexel t) {
+#if ML_GBUFFER_FLOAT_TARGETS == 0
+    imageStore(u_gPackedOut, p, t.bits);
+#else
+    imageStore(u_gTarget0Out, p, t.target[0]);
+    imageStore(u_gTarget1Out, p, t.target[1]);
+#if ML_GBUFFER_FLOAT_TARGETS == 3
+    imageStore(u_gTarget2Out, p, t.target[2]);
+#endif
+#endif
+}
 
 vec3 vertexPosition(uint v) { return vec3(vertexData[8u * v], vertexData[8u * v + 1u], vertexData[8u * v + 2u]); }
 vec3 vertexNormal(uint v) { return vec3(vertexData[8u * v + 3u], vertexData[8u * v + 4u], vertexData[8u * v + 5u]); }
@@ -83,7 +102,8 @@ void main() {
         }
         base *= textureGrad(u_baseColorTexture, uv, uvq[1] - uvq[0], uvq[2] - uvq[0]);
     }
-    imageStore(u_gNormalOut, p, vec4(s.normal, 0.0));
-    imageStore(u_gAlbedoOut, p, vec4(base.rgb, 1.0));
-    imageStore(u_gSpecularOut, p, vec4(m.params.x, m.params.y, 0.0, 0.0));
+    s.albedo = base.rgb;
+    s.specularStrength = m.params.x;
+    s.shininess = m.params.y;
+    storeGBuffer(p, encodeGBuffer(s));
 }

@@ -39,7 +39,7 @@ void FrameRenderer::updateUniforms(float time) {
     uniforms_.cameraPos = glm::vec4(c.eye, 1.0f);
     uniforms_.viewport = glm::vec4(w, h, 1.0f / w, 1.0f / h);
     uniforms_.depthRange = glm::vec4(c.nearPlane, c.farPlane, time, settings_.ambient);
-    uniforms_.counts = glm::uvec4(lights_.count(), 0, 0, 0);
+    uniforms_.counts = glm::uvec4(lights_.count(), settings_.specular ? ML_SHADING_SPECULAR : 0u, 0, 0);
     frameUniformBuffer_.upload(&uniforms_, sizeof(uniforms_));
     frameUniformBuffer_.bindBase(GL_UNIFORM_BUFFER, ML_UBO_FRAME);
 }
@@ -57,9 +57,12 @@ std::vector<PassTime> FrameRenderer::renderAt(float time) {
     }
     scene_.setSubmission(settings_.draw);
     method_->render(FrameContext{scene_, lights_, frameUniformBuffer_, uniforms_, targets_, timer_});
+    const bool debugView = settings_.method.clustering.view != DebugView::Shaded;
+    // After shading, so every method gets the same bloom; debug views' colours get none.
+    if (!debugView) bloom_.run(targets_, settings_.bloom, timer_);
     {
         auto pass = timer_.pass("tonemap");
-        tonemap_.run(targets_, settings_.exposure, settings_.method.clustering.view != DebugView::Shaded);
+        tonemap_.run(targets_, settings_.exposure, debugView);
     }
     return timer_.endFrame();
 }

@@ -6,6 +6,7 @@
 #include <memory>
 #include <vector>
 
+#include "renderer/bloom_pass.h"
 #include "renderer/camera.h"
 #include "renderer/frame_targets.h"
 #include "renderer/gl/buffer.h"
@@ -29,6 +30,8 @@ struct FrameSettings {
     float exposure = 1.0f;
     float ambient = 0.03f;
     DrawSubmission draw = DrawSubmission::Direct;  // --draw: how raster passes submit the scene
+    bool specular = true;  // the Blinn-Phong term (--specular), a frame uniform: no recompile
+    BloomSettings bloom;
     LightAnimation animation;
     bool timing = false;
     TimingClock clock = TimingClock::GpuQueries;
@@ -55,6 +58,9 @@ public:
     void setLights(const std::vector<PointLight>& lights);
     void setExposure(float exposure) { settings_.exposure = exposure; }
     void setDrawSubmission(DrawSubmission draw) { settings_.draw = draw; }
+    void setSpecular(bool on) { settings_.specular = on; }
+    void setBloom(const BloomSettings& bloom) { settings_.bloom = bloom; }
+    const BloomPass& bloom() const { return bloom_; }
     const ShadingMethod& method() const { return *method_; }
     const FrameSettings& settings() const { return settings_; }
     const LightBuffers& lights() const { return lights_; }
@@ -72,6 +78,7 @@ private:
     gl::Buffer frameUniformBuffer_;
     FrameUniforms uniforms_{};
     AnimateLightsPass animate_;
+    BloomPass bloom_;
     TonemapPass tonemap_;
     std::unique_ptr<ShadingMethod> method_;
     PassTimer timer_;

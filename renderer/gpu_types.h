@@ -32,7 +32,7 @@ struct alignas(16) FrameUniforms {
     glm::vec4 cameraPos;
     glm::vec4 viewport;    // width, height, 1/width, 1/height
     glm::vec4 depthRange;  // near, far, time, ambient
-    glm::uvec4 counts;     // light count, ...
+    glm::uvec4 counts;     // light count, shading switches (ML_SHADING_*), ...
 };
 static_assert(sizeof(FrameUniforms) == 5 * 64 + 4 * 16);
 

@@ -19,7 +19,9 @@ struct SurfaceSample {
     float shininess = 32.0f;
 };
 
-// The linear radiance the shaders compute for a surface point seen from `eye`.
-glm::vec3 shadeReference(const SurfaceSample& s, const glm::vec3& eye, const std::vector<PointLight>& lights, float ambient);
+// The linear radiance the shaders compute for a surface point seen from `eye`; without
+// `specular` the Blinn-Phong term is left out (--specular off).
+glm::vec3 shadeReference(const SurfaceSample& s, const glm::vec3& eye, const std::vector<PointLight>& lights, float ambient,
+                         bool specular = true);
 
 }  // namespace ml

@@ -116,4 +116,18 @@
 // Tonemap compute tile.
 #define ML_TONEMAP_TILE 8
 
+// Frame uniforms u_counts.y: switches of the shading model (--specular).
+#define ML_SHADING_SPECULAR 1u
+
+// --gbuffer layouts, as the ML_GBUFFER_FORMAT define of the shaders that write or read it.
+#define ML_GBUFFER_STANDARD 0       // normal, albedo, specular: three RGBA16F targets (24 B per pixel)
+#define ML_GBUFFER_PACKED 1         // one RGBA32UI: octahedral normal 2x16, albedo RGBA8, specular 2x16F (16 B)
+#define ML_GBUFFER_TWO_COMPONENT 2  // normal xy + specular, albedo: two RGBA16F (16 B); z = +sqrt(1-x^2-y^2)
+
+// Bloom (--bloom): compute tile, and the separable Gaussian's taps each side at half resolution.
+#define ML_BLOOM_TILE 8
+#define ML_BLOOM_RADIUS 8
+#define ML_IMG_BLOOM_IN 5
+#define ML_IMG_BLOOM_OUT 6
+
 #endif

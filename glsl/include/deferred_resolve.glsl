@@ -1,10 +1,6 @@
 // Clustered deferred lighting of one pixel from the G-buffer, shared by the full-screen
-// fragment resolve and the compute resolve. Position is rebuilt from depth.
-layout(binding = ML_TEX_DEPTH) uniform sampler2D u_depth;
-layout(binding = ML_TEX_GBUFFER0) uniform sampler2D u_gNormal;
-layout(binding = ML_TEX_GBUFFER1) uniform sampler2D u_gAlbedo;
-layout(binding = ML_TEX_GBUFFER2) uniform sampler2D u_gSpecular;
-
+// fragment resolve and the compute resolve. Position is rebuilt from depth; the rest is
+// decoded from the --gbuffer layout (gbuffer_layout.glsl, read by gbuffer_fetch.glsl).
 vec4 resolvePixel(ivec2 p) {
     float depth = texelFetch(u_depth, p, 0).r;
     if (depth >= 1.0) return vec4(0.0, 0.0, 0.0, 1.0);  // background, as the forward methods clear it
@@ -13,11 +9,7 @@ vec4 resolvePixel(ivec2 p) {
     viewPos /= viewPos.w;
     SurfacePoint s;
     s.position = u_cameraPos.xyz + mat3(u_invView) * viewPos.xyz;
-    s.normal = normalize(texelFetch(u_gNormal, p, 0).xyz);  // 16-bit storage: restore unit length
-    s.albedo = texelFetch(u_gAlbedo, p, 0).rgb;
-    vec2 spec = texelFetch(u_gSpecular, p, 0).xy;
-    s.specularStrength = spec.x;
-    s.shininess = spec.y;
+    decodeGBuffer(fetchGBuffer(p), s);
     vec3 viewDir = normalize(u_cameraPos.xyz - s.position);
     float viewDepth = -viewPos.z;
     uint cluster = clusterForFragment(vec2(p) + 0.5, viewDepth);

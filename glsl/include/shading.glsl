@@ -4,7 +4,8 @@
 //   W(d, r) = saturate(1 - (d/r)^4)^2 / (d^2 + 1)
 // W is smooth, and exactly zero at and beyond r, so culling a light outside its radius is exact.
 // The specular term is weighted by N.L too, so shading is continuous at the terminator and a
-// tiny error in a rebuilt position or normal cannot switch a highlight on or off.
+// tiny error in a rebuilt position or normal cannot switch a highlight on or off. --specular off
+// (a frame uniform, the same in every method) leaves it out: Lambert only.
 
 float lightFalloff(float d, float radius) {
     if (d >= radius) return 0.0;
@@ -30,6 +31,7 @@ vec3 shadePointLight(SurfacePoint s, vec3 viewDir, vec4 positionRadius, vec3 col
     vec3 l = toLight / max(d, 1e-6);
     float nDotL = dot(s.normal, l);
     if (nDotL <= 0.0) return vec3(0.0);
+    if (!specularEnabled()) return color * (falloff * nDotL) * s.albedo;
     vec3 h = normalize(l + viewDir);
     float spec = s.specularStrength * pow(max(dot(s.normal, h), 0.0), s.shininess);
     return color * (falloff * nDotL) * (s.albedo + vec3(spec));

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "glsl/include/bindings.h"
+#include "renderer/methods/gbuffer.h"
 
 namespace ml {
 
@@ -48,12 +49,12 @@ std::string mib(std::size_t bytes) { return std::to_string((bytes + (1u << 20) -
 
 }  // namespace
 
-ClusteredLighting::ClusteredLighting(const ClusteringSettings& settings)
+ClusteredLighting::ClusteredLighting(const ClusteringSettings& settings, const shaders::Defines& gbufferDefines)
     : settings_(settings),
       depthRange_(gl::Program::compute("cluster_depth_range.comp")),
       bounds_(gl::Program::compute("cluster_bounds.comp")),
       active_(gl::Program::compute("cluster_active.comp")),
-      normalBins_(settings.normalCones ? gl::Program::compute("cluster_normal_bins.comp") : gl::Program()),
+      normalBins_(settings.normalCones ? gl::Program::compute("cluster_normal_bins.comp", gbufferDefines) : gl::Program()),
       ranges_(exactProgram("assign.ranges", "ML_EXACT_RANGES", settings)),
       dispatch_(exactProgram("assign.dispatch", "ML_EXACT_DISPATCH", settings)),
       count_(countProgram(settings)),
@@ -135,7 +136,7 @@ void ClusteredLighting::bindForShading() const {
     if (zbin_) zbin_->bindForShading();
 }
 
-void ClusteredLighting::build(const FrameContext& ctx, const gl::Texture2D* gbufferNormals) {
+void ClusteredLighting::build(const FrameContext& ctx, const GBuffer* gbuffer) {
     uploadGrid(ctx);
     const std::uint32_t clusters = grid_.clusterCount();
     ensureStorage(clusters);
@@ -177,8 +178,8 @@ void ClusteredLighting::build(const FrameContext& ctx, const gl::Texture2D* gbuf
         glMemoryBarrier(kComputeToCompute);
     }
     if (settings_.normalCones) {
-        if (!gbufferNormals) throw std::logic_error("--normal-cones: the lists need the G-buffer's normals");
-        markNormalBins(ctx, *gbufferNormals);
+        if (!gbuffer) throw std::logic_error("--normal-cones: the lists need the G-buffer's normals");
+        markNormalBins(ctx, *gbuffer);
     }
     ctx.lights.animated().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_LIGHTS);
     counters_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_ASSIGN_STATS);
@@ -202,7 +203,7 @@ void ClusteredLighting::sortLists(const FrameContext& ctx) {
     glMemoryBarrier(kComputeToCompute);
 }
 
-void ClusteredLighting::markNormalBins(const FrameContext& ctx, const gl::Texture2D& normals) {
+void ClusteredLighting::markNormalBins(const FrameContext& ctx, const GBuffer& gbuffer) {
     auto pass = ctx.timer.pass("cluster.normal-bins");
     const std::uint32_t clusters = grid_.clusterCount();
     clearToZero(normalBinMasks_.buffer(), std::size_t(clusters) * 4);
@@ -210,7 +211,7 @@ void ClusteredLighting::markNormalBins(const FrameContext& ctx, const gl::Textur
     glMemoryBarrier(kComputeToCompute);
     normalBinMasks_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_NORMAL_BIN_MASKS);
     normalCones_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_NORMAL_CONES);
-    glBindTextureUnit(ML_TEX_GBUFFER0, normals.id());
+    gbuffer.bindForReading();
     normalBins_.use();
     // Phase 0: occupied bins and each list's normal sum; phase 1: each list's widest normal.
     for (unsigned phase : {0u, 1u}) {

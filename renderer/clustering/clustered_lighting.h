@@ -41,14 +41,18 @@
 
 namespace ml {
 
+class GBuffer;
+
 class ClusteredLighting {
 public:
-    explicit ClusteredLighting(const ClusteringSettings& settings);
+    // gbufferDefines: the G-buffer's layout (GBuffer::defines()), which --normal-cones decodes
+    // its normals from the way the lighting does.
+    explicit ClusteredLighting(const ClusteringSettings& settings, const shaders::Defines& gbufferDefines = {});
 
     // Builds the lists from the lights and the depth already in ctx.targets.depth(); with
     // --normal-cones also from the G-buffer's normals (required then).
     // Throws std::runtime_error when the lists cannot fit this GPU's storage-buffer limit.
-    void build(const FrameContext& ctx, const gl::Texture2D* gbufferNormals = nullptr);
+    void build(const FrameContext& ctx, const GBuffer* gbuffer = nullptr);
     // Lists per cluster: ML_NORMAL_BINS with --normal-cones, else 1.
     std::uint32_t listsPerCluster() const;
     // Binds the grid, counts, offsets and light indices at their ML_SSBO_* points.
@@ -77,7 +81,7 @@ private:
     void ensureStorage(std::uint32_t clusters);
     void checkListFits(std::size_t bytes, const char* what) const;
     void buildExact(const FrameContext& ctx);
-    void markNormalBins(const FrameContext& ctx, const gl::Texture2D& normals);
+    void markNormalBins(const FrameContext& ctx, const GBuffer& gbuffer);
     void buildCapped(const FrameContext& ctx);
     void sortLists(const FrameContext& ctx);
     void dispatchAssignment(const gl::Program& program, std::uint32_t lightCount) const;

@@ -6,19 +6,20 @@
 namespace ml {
 
 namespace {
-gl::Program lightingProgram(Resolve resolve, const ClusteringSettings& clustering) {
-    const shaders::Defines defines = deferredLightingDefines(clustering);
+gl::Program lightingProgram(Resolve resolve, const shaders::Defines& defines) {
     if (resolve == Resolve::Compute) return gl::Program::compute("deferred_lighting.comp", defines);
     return gl::Program("deferred.lighting", {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "deferred_lighting.frag"}},
                        defines);
 }
 }  // namespace
 
-ClusteredDeferred::ClusteredDeferred(const ClusteringSettings& settings, Resolve resolve)
+ClusteredDeferred::ClusteredDeferred(const ClusteringSettings& settings, Resolve resolve, GBufferFormat gbuffer)
     : resolve_(resolve),
-      gbufferProgram_("deferred.gbuffer", {{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "gbuffer.frag"}}),
-      lightingProgram_(lightingProgram(resolve, settings)),
-      clustering_(settings) {
+      gbuffer_(gbuffer),
+      gbufferProgram_("deferred.gbuffer", {{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "gbuffer.frag"}},
+                      gbuffer_.defines()),
+      lightingProgram_(lightingProgram(resolve, deferredLightingDefines(settings, gbuffer_))),
+      clustering_(settings, gbuffer_.defines()) {
     GLuint vao = 0;
     glCreateVertexArrays(1, &vao);
     emptyVao_ = gl::Handle<gl::VertexArrayDeleter>(vao);
@@ -31,9 +32,8 @@ void ClusteredDeferred::render(const FrameContext& ctx) {
         const gl::Framebuffer& fbo = gbuffer_.prepare(ctx.targets);
         fbo.bind();
         glViewport(0, 0, ctx.targets.width(), ctx.targets.height());
-        const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
         const float clearDepth = 1.0f;
-        for (int i = 0; i < 3; ++i) glClearNamedFramebufferfv(fbo.id(), GL_COLOR, i, zero);
+        gbuffer_.clear();
         glClearNamedFramebufferfv(fbo.id(), GL_DEPTH, 0, &clearDepth);
         glEnable(GL_DEPTH_TEST);
         glDepthFunc(GL_LESS);
@@ -42,7 +42,7 @@ void ClusteredDeferred::render(const FrameContext& ctx) {
         ctx.scene.draw();
         glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
     }
-    clustering_.build(ctx, &gbuffer_.normal());
+    clustering_.build(ctx, &gbuffer_);
     {
         auto pass = ctx.timer.pass(resolve_ == Resolve::Compute ? "deferred.lighting-compute" : "deferred.lighting-fragment");
         bindDeferredLightingInputs(gbuffer_, ctx, clustering_);

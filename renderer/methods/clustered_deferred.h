@@ -12,7 +12,7 @@ namespace ml {
 
 class ClusteredDeferred final : public ShadingMethod {
 public:
-    ClusteredDeferred(const ClusteringSettings& settings, Resolve resolve);
+    ClusteredDeferred(const ClusteringSettings& settings, Resolve resolve, GBufferFormat gbuffer);
     std::string name() const override { return "deferred"; }
     void render(const FrameContext& ctx) override;
     const ClusteredLighting* clustering() const override { return &clustering_; }
@@ -20,10 +20,10 @@ public:
 
 private:
     Resolve resolve_;
+    GBuffer gbuffer_;
     gl::Program gbufferProgram_;
     gl::Program lightingProgram_;
     gl::Handle<gl::VertexArrayDeleter> emptyVao_;
-    GBuffer gbuffer_;
     ClusteredLighting clustering_;
 };
 

@@ -8,8 +8,9 @@
 
 namespace ml {
 
-// Defines of the lighting programs: ML_NORMAL_CONES with --normal-cones.
-shaders::Defines deferredLightingDefines(const ClusteringSettings& clustering);
+// Defines of the lighting programs: the light lists' (lightListDefines), ML_NORMAL_CONES with
+// --normal-cones, and the G-buffer's layout (ML_GBUFFER_FORMAT).
+shaders::Defines deferredLightingDefines(const ClusteringSettings& clustering, const GBuffer& gbuffer);
 
 // Binds the G-buffer, the depth, the lights and the cluster lists the lighting shaders read.
 void bindDeferredLightingInputs(const GBuffer& gbuffer, const FrameContext& ctx, const ClusteredLighting& clustering);

@@ -1,19 +1,34 @@
 #include "renderer/methods/forward_plus.h"
 
+#include <stdexcept>
+
 #include "glsl/include/bindings.h"
 
 namespace ml {
 
-ForwardPlus::ForwardPlus(const ClusteringSettings& settings)
-    : depthProgram_("forward-plus.depth", {{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "depth_only.frag"}}),
+namespace {
+// Without the pre-pass no depth exists when the light lists are built: fitted slicing (a
+// reduction of that depth) falls back to log slicing over the camera's near..far, and
+// active-only clusters (found from that depth) cannot be had at all.
+ClusteringSettings clusteringFor(ClusteringSettings settings, bool prepass) {
+    if (prepass) return settings;
+    if (settings.activeOnly)
+        throw std::invalid_argument("--active-only needs the depth pre-pass of forward-plus (drop --prepass off)");
+    if (settings.grid.slicing == Slicing::Fitted) settings.grid.slicing = Slicing::Log;
+    return settings;
+}
+}  // namespace
+
+ForwardPlus::ForwardPlus(const ClusteringSettings& settings, bool prepass)
+    : prepass_(prepass),
+      depthProgram_("forward-plus.depth", {{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "depth_only.frag"}}),
       shadeProgram_("forward-plus.shade", {{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "forward_plus.frag"}},
                    lightListDefines(settings)),
-      clustering_(settings) {}
+      clustering_(clusteringFor(settings, prepass)) {}
 
 void ForwardPlus::render(const FrameContext& ctx) {
     const gl::Framebuffer& fbo = ctx.targets.hdrFramebuffer();
-    {
-        auto pass = ctx.timer.pass("forward+.depth-prepass");
+    auto clearTargets = [&] {
         fbo.bind();
         glViewport(0, 0, ctx.targets.width(), ctx.targets.height());
         const float clearColor[4] = {0.0f, 0.0f, 0.0f, 1.0f};
@@ -23,6 +38,22 @@ void ForwardPlus::render(const FrameContext& ctx) {
         glEnable(GL_DEPTH_TEST);
         glDepthFunc(GL_LESS);
         glDepthMask(GL_TRUE);
+    };
+    if (!prepass_) {
+        // One raster pass, as naive's: LESS, first drawn wins a coplanar tie, and every fragment
+        // that passes is shaded (the overdraw the pre-pass exists to avoid).
+        clustering_.build(ctx);
+        auto pass = ctx.timer.pass("forward+.shade");
+        clearTargets();
+        shadeProgram_.use();
+        ctx.lights.animated().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_LIGHTS);
+        clustering_.bindForShading();
+        ctx.scene.draw();
+        return;
+    }
+    {
+        auto pass = ctx.timer.pass("forward+.depth-prepass");
+        clearTargets();
         glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
         depthProgram_.use();
         ctx.scene.drawDepthOnly();

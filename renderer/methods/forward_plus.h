@@ -1,5 +1,7 @@
 // Clustered forward (Forward+): a depth pre-pass, light assignment into clusters, then the
-// scene is rastered again and each fragment loops over its cluster's lights only.
+// scene is rastered again and each fragment loops over its cluster's lights only. With
+// --prepass off the scene is rastered once, shading every fragment that passes LESS (overdraw
+// shades hidden fragments too); the grid then cannot be fitted to a depth that does not exist yet.
 #pragma once
 
 #include "renderer/clustering/clustered_lighting.h"
@@ -10,12 +12,13 @@ namespace ml {
 
 class ForwardPlus final : public ShadingMethod {
 public:
-    explicit ForwardPlus(const ClusteringSettings& settings);
+    ForwardPlus(const ClusteringSettings& settings, bool prepass);
     std::string name() const override { return "forward-plus"; }
     void render(const FrameContext& ctx) override;
     const ClusteredLighting* clustering() const override { return &clustering_; }
 
 private:
+    bool prepass_;
     gl::Program depthProgram_;
     gl::Program shadeProgram_;
     ClusteredLighting clustering_;

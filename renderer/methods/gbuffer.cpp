@@ -1,32 +1,72 @@
 #include "renderer/methods/gbuffer.h"
 
+#include <string>
+
 #include "glsl/include/bindings.h"
 
 namespace ml {
+
+namespace {
+int glslFormat(GBufferFormat format) {
+    switch (format) {
+    case GBufferFormat::Standard: return ML_GBUFFER_STANDARD;
+    case GBufferFormat::Packed: return ML_GBUFFER_PACKED;
+    case GBufferFormat::TwoComponent: return ML_GBUFFER_TWO_COMPONENT;
+    }
+    return ML_GBUFFER_STANDARD;
+}
+}  // namespace
+
+shaders::Defines GBuffer::defines() const { return {{"ML_GBUFFER_FORMAT", std::to_string(glslFormat(format_))}}; }
 
 const gl::Framebuffer& GBuffer::prepare(const FrameTargets& frame) {
     if (frame.width() != width_ || frame.height() != height_ || frame.depth().id() != depthId_) {
         width_ = frame.width();
         height_ = frame.height();
         depthId_ = frame.depth().id();
-        normal_ = gl::Texture2D("gbuffer.normal", GL_RGBA16F, width_, height_);
-        albedo_ = gl::Texture2D("gbuffer.albedo", GL_RGBA16F, width_, height_);
-        specular_ = gl::Texture2D("gbuffer.specular", GL_RGBA16F, width_, height_);
-        fbo_ = gl::Framebuffer("gbuffer", {&normal_, &albedo_, &specular_}, &frame.depth());
+        targets_.clear();
+        switch (format_) {
+        case GBufferFormat::Standard:
+            targets_.emplace_back("gbuffer.normal", GL_RGBA16F, width_, height_);
+            targets_.emplace_back("gbuffer.albedo", GL_RGBA16F, width_, height_);
+            targets_.emplace_back("gbuffer.specular", GL_RGBA16F, width_, height_);
+            fbo_ = gl::Framebuffer("gbuffer", {&targets_[0], &targets_[1], &targets_[2]}, &frame.depth());
+            break;
+        case GBufferFormat::Packed:
+            targets_.emplace_back("gbuffer.packed", GL_RGBA32UI, width_, height_);
+            fbo_ = gl::Framebuffer("gbuffer", {&targets_[0]}, &frame.depth());
+            break;
+        case GBufferFormat::TwoComponent:
+            targets_.emplace_back("gbuffer.normal-xy-specular", GL_RGBA16F, width_, height_);
+            targets_.emplace_back("gbuffer.albedo", GL_RGBA16F, width_, height_);
+            fbo_ = gl::Framebuffer("gbuffer", {&targets_[0], &targets_[1]}, &frame.depth());
+            break;
+        }
     }
     return fbo_;
 }
 
+void GBuffer::clear() const {
+    for (std::size_t i = 0; i < targets_.size(); ++i) {
+        const GLint draw = static_cast<GLint>(i);
+        if (targets_[i].format() == GL_RGBA32UI) {
+            const GLuint zero[4] = {0, 0, 0, 0};
+            glClearNamedFramebufferuiv(fbo_.id(), GL_COLOR, draw, zero);
+        } else {
+            const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+            glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, draw, zero);
+        }
+    }
+}
+
 void GBuffer::bindForReading() const {
-    glBindTextureUnit(ML_TEX_GBUFFER0, normal_.id());
-    glBindTextureUnit(ML_TEX_GBUFFER1, albedo_.id());
-    glBindTextureUnit(ML_TEX_GBUFFER2, specular_.id());
+    for (std::size_t i = 0; i < targets_.size(); ++i) glBindTextureUnit(ML_TEX_GBUFFER0 + static_cast<GLuint>(i), targets_[i].id());
 }
 
 void GBuffer::bindForWriting() const {
-    glBindImageTexture(ML_IMG_GBUFFER0, normal_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
-    glBindImageTexture(ML_IMG_GBUFFER1, albedo_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
-    glBindImageTexture(ML_IMG_GBUFFER2, specular_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+    for (std::size_t i = 0; i < targets_.size(); ++i)
+        glBindImageTexture(ML_IMG_GBUFFER0 + static_cast<GLuint>(i), targets_[i].id(), 0, GL_FALSE, 0, GL_WRITE_ONLY,
+                           targets_[i].format());
 }
 
 }  // namespace ml

@@ -1,26 +1,37 @@
-// The G-buffer of clustered deferred shading: normal, albedo and specular parameters in three
-// RGBA16F targets (24 B per pixel) plus the frame's depth; position comes back from depth.
+// The G-buffer of clustered deferred shading and the visibility buffer, in one of the --gbuffer
+// layouts (gbuffer_format.h), plus the frame's depth; position comes back from depth.
 #pragma once
+
+#include <vector>
 
 #include "renderer/frame_targets.h"
 #include "renderer/gl/framebuffer.h"
+#include "renderer/gl/shader_sources.h"
 #include "renderer/gl/texture.h"
+#include "renderer/methods/gbuffer_format.h"
 
 namespace ml {
 
 class GBuffer {
 public:
+    explicit GBuffer(GBufferFormat format = GBufferFormat::Standard) : format_(format) {}
+    GBufferFormat format() const { return format_; }
+    // ML_GBUFFER_FORMAT for the shaders that write or read this layout.
+    shaders::Defines defines() const;
     // Re-creates the targets when the frame size changed; returns the framebuffer.
     const gl::Framebuffer& prepare(const FrameTargets& frame);
-    void bindForReading() const;  // at ML_TEX_GBUFFER0..2
-    void bindForWriting() const;  // as images at ML_IMG_GBUFFER0..2 (compute writes)
-    const gl::Texture2D& normal() const { return normal_; }  // world-space normals (--normal-cones reads them)
-    std::size_t bytes() const { return static_cast<std::size_t>(width_) * height_ * 24; }
+    void clear() const;  // every colour target to zero (the depth is the caller's)
+    // At ML_TEX_GBUFFER0.. (one texture per target); read with fetchGBuffer/decodeGBuffer
+    // (include/gbuffer_fetch.glsl) by the lighting and by --normal-cones' normal bins.
+    void bindForReading() const;
+    void bindForWriting() const;  // as images at ML_IMG_GBUFFER0.. (compute writes)
+    std::size_t bytes() const { return static_cast<std::size_t>(width_) * height_ * gbufferBytesPerPixel(format_); }
 
 private:
+    GBufferFormat format_;
     int width_ = 0, height_ = 0;
     GLuint depthId_ = 0;
-    gl::Texture2D normal_, albedo_, specular_;
+    std::vector<gl::Texture2D> targets_;
     gl::Framebuffer fbo_;
 };
 

@@ -52,10 +52,10 @@ std::unique_ptr<ShadingMethod> createMethod(const MethodSettings& settings) {
         // `render` and greyed out in `view`; here it is ignored).
         ClusteringSettings clustering = settings.clustering;
         clustering.normalCones = false;
-        return std::make_unique<ForwardPlus>(clustering);
+        return std::make_unique<ForwardPlus>(clustering, settings.prepass);
     }
-    case MethodKind::Deferred: return std::make_unique<ClusteredDeferred>(settings.clustering, settings.resolve);
-    case MethodKind::Visibility: return std::make_unique<VisibilityBuffer>(settings.clustering);
+    case MethodKind::Deferred: return std::make_unique<ClusteredDeferred>(settings.clustering, settings.resolve, settings.gbuffer);
+    case MethodKind::Visibility: return std::make_unique<VisibilityBuffer>(settings.clustering, settings.gbuffer);
     }
     throw std::invalid_argument("unhandled method");
 }

@@ -11,6 +11,7 @@
 #include "renderer/gl/buffer.h"
 #include "renderer/gpu_types.h"
 #include "renderer/light_buffers.h"
+#include "renderer/methods/gbuffer_format.h"
 #include "renderer/pass_timer.h"
 #include "renderer/scene_gpu.h"
 
@@ -51,6 +52,8 @@ struct MethodSettings {
     MethodKind kind = MethodKind::Naive;
     ClusteringSettings clustering;
     Resolve resolve = Resolve::Compute;
+    GBufferFormat gbuffer = GBufferFormat::Standard;  // deferred and visibility
+    bool prepass = true;  // forward-plus: depth pre-pass, then shading with EQUAL (off: one LESS pass)
 };
 
 // Names as the command line spells them.

@@ -5,11 +5,12 @@
 
 namespace ml {
 
-VisibilityBuffer::VisibilityBuffer(const ClusteringSettings& settings)
-    : rasterProgram_("visibility.raster", {{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "visibility.frag"}}),
-      resolveProgram_(gl::Program::compute("visibility_resolve.comp")),
-      lightingProgram_(gl::Program::compute("deferred_lighting.comp", deferredLightingDefines(settings))),
-      clustering_(settings) {}
+VisibilityBuffer::VisibilityBuffer(const ClusteringSettings& settings, GBufferFormat gbuffer)
+    : gbuffer_(gbuffer),
+      rasterProgram_("visibility.raster", {{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "visibility.frag"}}),
+      resolveProgram_(gl::Program::compute("visibility_resolve.comp", gbuffer_.defines())),
+      lightingProgram_(gl::Program::compute("deferred_lighting.comp", deferredLightingDefines(settings, gbuffer_))),
+      clustering_(settings, gbuffer_.defines()) {}
 
 void VisibilityBuffer::prepareTargets(const FrameTargets& frame) {
     if (frame.width() == width_ && frame.height() == height_ && frame.depth().id() == depthId_) return;
@@ -54,7 +55,7 @@ void VisibilityBuffer::render(const FrameContext& ctx) {
         }
         glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     }
-    clustering_.build(ctx, &gbuffer_.normal());
+    clustering_.build(ctx, &gbuffer_);
     {
         auto pass = ctx.timer.pass("visibility.lighting");
         bindDeferredLightingInputs(gbuffer_, ctx, clustering_);

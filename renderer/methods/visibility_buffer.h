@@ -16,7 +16,7 @@ namespace ml {
 
 class VisibilityBuffer final : public ShadingMethod {
 public:
-    explicit VisibilityBuffer(const ClusteringSettings& settings);
+    VisibilityBuffer(const ClusteringSettings& settings, GBufferFormat gbuffer);
     std::string name() const override { return "visibility"; }
     void render(const FrameContext& ctx) override;
     const ClusteredLighting* clustering() const override { return &clustering_; }
@@ -25,6 +25,7 @@ public:
 private:
     void prepareTargets(const FrameTargets& frame);
 
+    GBuffer gbuffer_;
     gl::Program rasterProgram_;
     gl::Program resolveProgram_;
     gl::Program lightingProgram_;
@@ -32,7 +33,6 @@ private:
     GLuint depthId_ = 0;
     gl::Texture2D triangleIds_;
     gl::Framebuffer fbo_;
-    GBuffer gbuffer_;
     ClusteredLighting clustering_;
 };
 

@@ -59,6 +59,27 @@ TestScene testScene(const std::string& name, std::uint32_t count, std::uint32_t 
     return t;
 }
 
+Scene quadScene(const std::vector<TestQuad>& quads) {
+    Scene scene;
+    scene.name = "quads";
+    for (const TestQuad& q : quads) {
+        const glm::vec3 n = glm::normalize(glm::cross(q.u, q.v));
+        const auto first = static_cast<std::uint32_t>(scene.vertices.size());
+        const glm::vec3 corners[4] = {q.center - q.u - q.v, q.center + q.u - q.v, q.center + q.u + q.v, q.center - q.u + q.v};
+        const glm::vec2 uvs[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+        for (int i = 0; i < 4; ++i) scene.vertices.push_back(Vertex{corners[i], n, uvs[i]});
+        const auto firstIndex = static_cast<std::uint32_t>(scene.indices.size());
+        for (std::uint32_t i : {0u, 1u, 2u, 0u, 2u, 3u}) scene.indices.push_back(first + i);
+        Material m;
+        m.name = "quad" + std::to_string(scene.materials.size());
+        m.baseColorFactor = glm::vec4(q.color, 1.0f);
+        scene.draws.push_back(DrawRange{firstIndex, 6, static_cast<std::uint32_t>(scene.materials.size())});
+        scene.materials.push_back(m);
+    }
+    computeBounds(scene);
+    return scene;
+}
+
 std::vector<MethodError> clusteredErrors(const Scene& scene, const std::vector<PointLight>& lights, FrameSettings s,
                                          std::uint32_t frame) {
     const ClusteringSettings clustering = s.method.clustering;
@@ -99,16 +120,27 @@ void expectWithinContract(const std::vector<MethodError>& errors, const std::str
 }
 
 FrameSettings smallFrame(const Scene& scene, int width, int height) {
-    FrameSettings s;
-    s.width = width;
-    s.height = height;
-    s.camera = cameraFromPose(scene.suggestedView.value_or(framingView(scene.bounds)));
-    fitClipPlanes(s.camera, scene.bounds);
+    FrameSettings s = smallFrame(scene, scene.suggestedView.value_or(framingView(scene.bounds)), width, height);
     s.animation = verticalDrift(lightVolume(scene.bounds), 0.5f);
     return s;
 }
 
+FrameSettings smallFrame(const Scene& scene, const CameraPose& pose, int width, int height) {
+    FrameSettings s;
+    s.width = width;
+    s.height = height;
+    s.camera = cameraFromPose(pose);
+    fitClipPlanes(s.camera, scene.bounds);
+    s.animation = verticalDrift(lightVolume(scene.bounds), 0.0f);
+    return s;
+}
+
 ReferenceFrame readReference(const FrameRenderer& renderer) { return {renderer.readHdr(), renderer.readLdr()}; }
+
+ReferenceFrame renderReference(FrameRenderer& renderer, std::uint32_t frame) {
+    renderer.render(frame);
+    return readReference(renderer);
+}
 
 ImageDifference expectWithinContract(const FrameRenderer& renderer, const ReferenceFrame& reference, const std::string& label,
                                      const std::string& imageName) {
@@ -116,7 +148,7 @@ ImageDifference expectWithinContract(const FrameRenderer& renderer, const Refere
     const RgbaImage ldr = renderer.readLdr();
     const ImageDifference ldrDiff = compareImages(ldr, reference.ldr);
     std::printf("%-50s max8 %.4f  psnr %.1f dB\n", label.c_str(), ldrDiff.maxAbs * 255.0, hdr.psnrDb);
-    EXPECT_LE(ldrDiff.maxAbs, kContractMaxAbs8Bit) << label << ": images in " << writeFailureImages(imageName, ldr, reference.ldr);
+    EXPECT_LE(ldrDiff.maxAbs, kContractMaxAbs8Bit) << label << ": images in " << writeFailureImages(imageName.empty() ? label : imageName, ldr, reference.ldr);
     EXPECT_GE(hdr.psnrDb, kContractMinPsnrDb) << label;
     return hdr;
 }

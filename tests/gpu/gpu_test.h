@@ -38,6 +38,14 @@ struct TestScene {
 };
 TestScene testScene(const std::string& name, std::uint32_t count, std::uint32_t seed, float radiusScale = 1.0f);
 
+// A scene built in a test from quads: each a centre, two half-extent axes (the normal is
+// u x v) and a base colour; one material per quad, drawn in the order given.
+struct TestQuad {
+    glm::vec3 center, u, v;
+    glm::vec3 color{0.8f};
+};
+Scene quadScene(const std::vector<TestQuad>& quads);
+
 // The accuracy contract of design.md against naive: max error on the 8-bit output, PSNR on the
 // float output.
 constexpr double kMaxAbs8Bit = 1.0 / 255.0 + 1e-9;
@@ -56,6 +64,8 @@ inline constexpr ClusteredVariant kClusteredVariants[] = {{MethodKind::ForwardPl
 
 // Frame settings for a scene at a small size, the scene's suggested camera, clip planes fitted.
 FrameSettings smallFrame(const Scene& scene, int width, int height);
+// The same from `pose`, the lights still (a scene built in a test has no suggested view).
+FrameSettings smallFrame(const Scene& scene, const CameraPose& pose, int width, int height);
 
 // The accuracy contract against naive (design.md): max 1/255 on the 8-bit output, PSNR >= 50 dB
 // on the float output.
@@ -68,12 +78,14 @@ struct ReferenceFrame {
     RgbaImage ldr;
 };
 ReferenceFrame readReference(const FrameRenderer& renderer);
+// Renders animation frame `frame` with the renderer's current method (naive, as built) and keeps it.
+ReferenceFrame renderReference(FrameRenderer& renderer, std::uint32_t frame);
 
 // Compares the renderer's current frame with the reference, prints one line ("label max8 ...
 // psnr ..."), and fails the test (writing the images under `imageName`) when the frame breaks
-// the contract. Returns the float-output difference.
+// the contract (imageName, or the label when empty). Returns the float-output difference.
 ImageDifference expectWithinContract(const FrameRenderer& renderer, const ReferenceFrame& reference, const std::string& label,
-                                     const std::string& imageName);
+                                     const std::string& imageName = "");
 
 // A test scene (seed 5; radius halved from 1024 lights up) rendered by naive forward at 160x90
 // on one frame: the reference the methods rendered by `renderer` next are held to.

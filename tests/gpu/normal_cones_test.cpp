@@ -33,17 +33,24 @@ TEST_P(NormalCones, DeferredAndVisibilityMatchNaiveAndRemovePairs) {
         AssignMode assign;
         CullMode cull;
         const char* name;
+        // The bins decode the normal as the lighting does, in every layout (include/gbuffer_fetch.glsl).
+        GBufferFormat gbuffer = GBufferFormat::Standard;
     };
     const Variant variants[] = {{MethodKind::Deferred, Resolve::Compute, AssignMode::Exact, CullMode::Aabb, "deferred/compute"},
                                 {MethodKind::Deferred, Resolve::Fragment, AssignMode::Exact, CullMode::Aabb, "deferred/fragment"},
                                 {MethodKind::Deferred, Resolve::Compute, AssignMode::PerCluster, CullMode::Cone, "deferred per-cluster cone"},
                                 {MethodKind::Visibility, Resolve::Compute, AssignMode::Exact, CullMode::Aabb, "visibility"},
-                                {MethodKind::Visibility, Resolve::Compute, AssignMode::Exact, CullMode::Sphere, "visibility sphere"}};
+                                {MethodKind::Visibility, Resolve::Compute, AssignMode::Exact, CullMode::Sphere, "visibility sphere"},
+                                {MethodKind::Deferred, Resolve::Compute, AssignMode::Exact, CullMode::Aabb, "deferred/compute packed",
+                                 GBufferFormat::Packed},
+                                {MethodKind::Visibility, Resolve::Compute, AssignMode::Exact, CullMode::Aabb, "visibility packed",
+                                 GBufferFormat::Packed}};
     for (const Variant& v : variants) {
         for (std::uint32_t tilesX : {16u, 40u}) {
             MethodSettings m;
             m.kind = v.kind;
             m.resolve = v.resolve;
+            m.gbuffer = v.gbuffer;
             m.clustering.grid = ClusterGridConfig{tilesX, 12, Slicing::Fitted, 64};
             m.clustering.assign = v.assign;
             m.clustering.cull = v.cull;

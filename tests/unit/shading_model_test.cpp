@@ -50,6 +50,18 @@ TEST(ShadeReference, DiffuseDirectlyAbove) {
     EXPECT_NEAR(c.r, expected, 1e-6f);
 }
 
+// --specular off: the highlight's Blinn-Phong term goes, the diffuse term stays exactly.
+TEST(ShadeReference, SpecularOffLeavesOnlyTheDiffuseTerm) {
+    SurfaceSample shiny{{0, 0, 0}, {0, 1, 0}, {0.5f, 0.5f, 0.5f}, 1.0f, 8.0f};
+    SurfaceSample matte = shiny;
+    matte.specularStrength = 0.0f;
+    const std::vector<PointLight> above{{{0.0f, 1.0f, 0.0f}, 10.0f, {2, 2, 2}}};
+    const glm::vec3 on = shadeReference(shiny, {0, 5, 0}, above, 0.03f, true);
+    const glm::vec3 off = shadeReference(shiny, {0, 5, 0}, above, 0.03f, false);
+    EXPECT_EQ(off, shadeReference(matte, {0, 5, 0}, above, 0.03f, true));
+    EXPECT_GT(on.r, off.r + 0.5f);  // the highlight, seen straight on: N.H = 1
+}
+
 TEST(Tonemap, MapsZeroToZeroAndSaturatesBelowOne) {
     EXPECT_EQ(tonemapToSrgb(glm::vec3(0.0f), 1.0f), glm::vec3(0.0f));
     const glm::vec3 big = tonemapToSrgb(glm::vec3(1e6f), 1.0f);

@@ -1,0 +1,45 @@
+#include "renderer/methods/gbuffer_format.h"
+
+#include <stdexcept>
+
+namespace ml {
+
+namespace {
+struct FormatEntry {
+    GBufferFormat format;
+    const char* name;
+    std::size_t bytesPerPixel;
+};
+constexpr FormatEntry kFormats[] = {
+    {GBufferFormat::Standard, "standard", 24},          // 3 x RGBA16F
+    {GBufferFormat::Packed, "packed", 16},              // 1 x RGBA32UI
+    {GBufferFormat::TwoComponent, "two-component", 16}, // 2 x RGBA16F
+};
+
+const FormatEntry& entry(GBufferFormat format) {
+    for (const FormatEntry& e : kFormats)
+        if (e.format == format) return e;
+    throw std::invalid_argument("unhandled G-buffer format");
+}
+}  // namespace
+
+const std::vector<std::string>& gbufferFormatNames() {
+    static const std::vector<std::string> names = [] {
+        std::vector<std::string> out;
+        for (const FormatEntry& e : kFormats) out.emplace_back(e.name);
+        return out;
+    }();
+    return names;
+}
+
+GBufferFormat parseGBufferFormat(const std::string& text) {
+    for (const FormatEntry& e : kFormats)
+        if (text == e.name) return e.format;
+    throw std::invalid_argument("--gbuffer '" + text + "': expected standard, packed or two-component");
+}
+
+const char* gbufferFormatName(GBufferFormat format) { return entry(format).name; }
+
+std::size_t gbufferBytesPerPixel(GBufferFormat format) { return entry(format).bytesPerPixel; }
+
+}  // namespace ml

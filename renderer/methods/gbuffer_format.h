@@ -1,0 +1,23 @@
+// The G-buffer layouts of --gbuffer. One enum, its names, and the bytes each stores per pixel
+// (glsl/include/gbuffer_layout.glsl encodes and decodes them; bindings.h numbers them).
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace ml {
+
+enum class GBufferFormat {
+    Standard,      // three RGBA16F targets: normal, albedo, specular parameters
+    Packed,        // one RGBA32UI target: octahedral normal, albedo RGBA8, specular 2 x half
+    TwoComponent,  // two RGBA16F targets; the normal's z is rebuilt as +sqrt: the documented failure case
+};
+
+const std::vector<std::string>& gbufferFormatNames();
+GBufferFormat parseGBufferFormat(const std::string& text);  // throws std::invalid_argument naming the value
+const char* gbufferFormatName(GBufferFormat format);
+// Colour bytes per pixel (depth is the frame's own depth buffer, counted with the frame targets).
+std::size_t gbufferBytesPerPixel(GBufferFormat format);
+
+}  // namespace ml

@@ -1,0 +1,129 @@
+// --gbuffer standard|packed|two-component: packed holds the accuracy contract (against the
+// standard layout and against naive); two-component is the documented failure case, shown on
+// surfaces whose stored (world-space) normal has z < 0.
+#include <gtest/gtest.h>
+
+#include "gpu_test.h"
+
+namespace ml::test {
+namespace {
+
+MethodSettings withGBuffer(MethodKind kind, GBufferFormat format, Resolve resolve = Resolve::Compute) {
+    MethodSettings m;
+    m.kind = kind;
+    m.resolve = resolve;
+    m.gbuffer = format;
+    return m;
+}
+
+class PackedGBuffer : public GpuTest, public ::testing::WithParamInterface<const char*> {};
+
+TEST_P(PackedGBuffer, MatchesStandardAndNaive) {
+    const TestScene t = testScene(GetParam(), 1024, 5, 0.5f);
+    FrameSettings s = smallFrame(t.scene, 160, 90);
+    FrameRenderer renderer(t.scene, t.lights, s);
+    const ReferenceFrame naive = renderReference(renderer, 45);
+    const std::string scene = GetParam();
+    struct Case {
+        MethodKind kind;
+        Resolve resolve;
+        const char* name;
+    };
+    for (const Case c : {Case{MethodKind::Deferred, Resolve::Compute, "deferred/compute"},
+                         Case{MethodKind::Deferred, Resolve::Fragment, "deferred/fragment"},
+                         Case{MethodKind::Visibility, Resolve::Compute, "visibility"}}) {
+        renderer.setMethod(withGBuffer(c.kind, GBufferFormat::Standard, c.resolve));
+        renderer.render(45);
+        const FloatImage standard = renderer.readHdr();
+        renderer.setMethod(withGBuffer(c.kind, GBufferFormat::Packed, c.resolve));
+        renderer.render(45);
+        const ImageDifference againstStandard = compareImages(renderer.readHdr(), standard);
+        std::printf("%s packed vs standard, %s: psnr %.1f dB\n", scene.c_str(), c.name, againstStandard.psnrDb);
+        EXPECT_GE(againstStandard.psnrDb, 50.0) << c.name;
+        expectWithinContract(renderer, naive, scene + " packed " + c.name + " vs naive");
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, PackedGBuffer, ::testing::Values("atrium", "boxes"));
+
+class GBufferLayouts : public GpuTest {};
+
+// A wall facing -z (world space, the space the G-buffer stores normals in) seen from the -z
+// side and lit from there. two-component rebuilds z as +sqrt(1 - x^2 - y^2): the normal flips to
+// +z, away from every light, and the wall goes dark but for the ambient term. packed keeps it.
+TEST_F(GBufferLayouts, TwoComponentLosesTheSignOfZWherePackedDoesNot) {
+    const Scene scene = quadScene({
+        {{0.0f, 0.0f, 0.0f}, {0.0f, 2.0f, 0.0f}, {2.0f, 0.0f, 0.0f}, {0.8f, 0.7f, 0.6f}},    // normal -z
+        {{0.0f, -2.0f, -2.0f}, {0.0f, 0.0f, 2.0f}, {2.0f, 0.0f, 0.0f}, {0.5f, 0.6f, 0.7f}},  // floor, normal +y
+    });
+    std::vector<PointLight> lights;
+    for (int i = 0; i < 16; ++i)
+        lights.push_back(PointLight{{-1.5f + 0.2f * i, -1.0f + 0.13f * i, -0.7f - 0.05f * i}, 3.0f, {1.0f, 0.9f, 0.8f}});
+    FrameRenderer renderer(scene, lights, smallFrame(scene, CameraPose{{0.5f, 0.3f, -5.0f}, {0.0f, 0.0f, 0.0f}, 50.0f}, 160, 90));
+    const ReferenceFrame naive = renderReference(renderer, 0);
+
+    for (MethodKind kind : {MethodKind::Deferred, MethodKind::Visibility}) {
+        const std::string name = methodName(kind);
+        renderer.setMethod(withGBuffer(kind, GBufferFormat::Packed));
+        renderer.render(0);
+        expectWithinContract(renderer, naive, "-z wall, packed " + name);
+
+        renderer.setMethod(withGBuffer(kind, GBufferFormat::TwoComponent));
+        renderer.render(0);
+        const FloatImage twoComponent = renderer.readHdr();
+        const ImageDifference d = compareImages(twoComponent, naive.hdr);
+        std::printf("-z wall, two-component %s: max %.3f, psnr %.1f dB, bad %.3f\n", name.c_str(), d.maxAbs, d.psnrDb,
+                    d.badPixelShare);
+        EXPECT_LT(d.psnrDb, 30.0) << name << ": the lost sign of z should show";
+        EXPECT_GT(d.badPixelShare, 0.2) << name << ": the whole wall should be wrong";
+        // The wall's centre pixel: lit in naive, ambient only (0.03 x albedo) in two-component.
+        const float* lit = naive.hdr.at(80, 45);
+        const float* dark = twoComponent.at(80, 45);
+        EXPECT_GT(lit[0], 0.2f) << name;
+        EXPECT_NEAR(dark[0], 0.03f * 0.8f, 1e-3f) << name;
+    }
+}
+
+// Normals with z >= 0 survive two-component: its error is confined to z < 0, so a wall facing +z
+// is exact.
+TEST_F(GBufferLayouts, TwoComponentIsExactWhereZIsNotNegative) {
+    const Scene scene = quadScene({{{0.0f, 0.0f, 0.0f}, {2.0f, 0.0f, 0.0f}, {0.0f, 2.0f, 0.0f}, {0.8f, 0.7f, 0.6f}}});  // normal +z
+    std::vector<PointLight> lights;
+    for (int i = 0; i < 16; ++i)
+        lights.push_back(PointLight{{-1.5f + 0.2f * i, -1.0f + 0.13f * i, 0.7f + 0.05f * i}, 3.0f, {1.0f, 0.9f, 0.8f}});
+    FrameRenderer renderer(scene, lights, smallFrame(scene, CameraPose{{0.5f, 0.3f, 5.0f}, {0.0f, 0.0f, 0.0f}, 50.0f}, 160, 90));
+    const ReferenceFrame naive = renderReference(renderer, 0);
+    renderer.setMethod(withGBuffer(MethodKind::Deferred, GBufferFormat::TwoComponent));
+    renderer.render(0);
+    expectWithinContract(renderer, naive, "+z wall, two-component deferred");
+}
+
+TEST_F(GBufferLayouts, BytesOfEveryLayoutFollowTheFormat) {
+    const TestScene t = testScene("boxes", 4, 1);
+    FrameSettings s = smallFrame(t.scene, 64, 48);
+    FrameRenderer renderer(t.scene, t.lights, s);
+    for (GBufferFormat f : {GBufferFormat::Standard, GBufferFormat::Packed, GBufferFormat::TwoComponent}) {
+        renderer.setMethod(withGBuffer(MethodKind::Deferred, f));
+        renderer.render(0);
+        EXPECT_EQ(renderer.method().extraTargetBytes(), 64u * 48u * gbufferBytesPerPixel(f)) << gbufferFormatName(f);
+    }
+    EXPECT_EQ(gbufferBytesPerPixel(GBufferFormat::Standard), 24u);
+    EXPECT_EQ(gbufferBytesPerPixel(GBufferFormat::Packed), 16u);
+    EXPECT_EQ(gbufferBytesPerPixel(GBufferFormat::TwoComponent), 16u);
+}
+
+TEST(GBufferCommand, StatsPrintTheLayoutAndBadValuesAreRefused) {
+    std::string output;
+    const std::string out = (testOutputDir() / "g.png").string();
+    ASSERT_EQ(runManylights("render --scene boxes --size 64x48 --lights 8 --gbuffer packed --stats --out " + out, output), 0)
+        << output;
+    EXPECT_NE(output.find("G-buffer: packed, 16 B per pixel"), std::string::npos) << output;
+    ASSERT_EQ(runManylights("render --scene boxes --size 64x48 --lights 8 --method forward-plus --gbuffer packed --stats --out " + out,
+                            output), 0) << output;
+    EXPECT_NE(output.find("--gbuffer is ignored"), std::string::npos) << output;
+    EXPECT_NE(runManylights("render --gbuffer octahedral --out " + out, output), 0);
+    EXPECT_NE(output.find("--gbuffer 'octahedral'"), std::string::npos) << output;
+}
+
+}  // namespace
+}  // namespace ml::test

@@ -1,0 +1,66 @@
+// --specular on|off: the shading model's switch, a frame uniform read by every method and the
+// CPU reference alike, so every method stays exact against naive in both modes.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "gpu_test.h"
+
+namespace ml::test {
+namespace {
+
+struct Variant {
+    MethodKind kind;
+    Resolve resolve;
+    const char* name;
+};
+constexpr Variant kVariants[] = {{MethodKind::ForwardPlus, Resolve::Compute, "forward-plus"},
+                                 {MethodKind::Deferred, Resolve::Compute, "deferred/compute"},
+                                 {MethodKind::Deferred, Resolve::Fragment, "deferred/fragment"},
+                                 {MethodKind::Visibility, Resolve::Compute, "visibility"}};
+
+class SpecularOff : public GpuTest, public ::testing::WithParamInterface<const char*> {};
+
+TEST_P(SpecularOff, EveryMethodMatchesNaive) {
+    const TestScene t = testScene(GetParam(), 256, 7, 0.6f);
+    FrameSettings s = smallFrame(t.scene, 160, 90);
+    s.specular = false;
+    FrameRenderer renderer(t.scene, t.lights, s);
+    const ReferenceFrame naive = renderReference(renderer, 30);
+    for (const Variant& v : kVariants) {
+        MethodSettings m;
+        m.kind = v.kind;
+        m.resolve = v.resolve;
+        renderer.setMethod(m);
+        renderer.render(30);
+        expectWithinContract(renderer, naive, std::string(GetParam()) + " specular off " + v.name);
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, SpecularOff, ::testing::Values("atrium", "boxes"));
+
+class SpecularSwitch : public GpuTest {};
+
+// Off leaves out a term that is never negative: no pixel gets brighter, and the highlights go.
+TEST_F(SpecularSwitch, OffRemovesTheHighlights) {
+    const TestScene t = testScene("atrium", 256, 7, 0.6f);
+    FrameSettings s = smallFrame(t.scene, 160, 90);
+    FrameRenderer renderer(t.scene, t.lights, s);
+    renderer.render(30);
+    const FloatImage on = renderer.readHdr();
+    renderer.setSpecular(false);
+    renderer.render(30);
+    const FloatImage off = renderer.readHdr();
+    double largestDrop = 0.0;
+    std::size_t brighter = 0;
+    for (std::size_t i = 0; i < on.pixels.size(); ++i) {
+        largestDrop = std::max(largestDrop, static_cast<double>(on.pixels[i] - off.pixels[i]));
+        brighter += off.pixels[i] > on.pixels[i] * (1.0f + 1e-5f) + 1e-7f;
+    }
+    EXPECT_EQ(brighter, 0u) << "specular off must never add light";
+    EXPECT_GT(largestDrop, 0.01) << "specular on and off gave the same frame";
+    EXPECT_LT(compareImages(off, on).psnrDb, 50.0) << "the highlights should be a visible difference";
+}
+
+}  // namespace
+}  // namespace ml::test
