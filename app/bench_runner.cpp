@@ -103,6 +103,7 @@ BenchRow configColumns(const BenchPoint& p, int index, std::uint32_t frame, cons
     row["gbuffer"] = p.gbuffered ? nlohmann::ordered_json(o.gbuffer) : nlohmann::ordered_json();
     row["prepass"] = p.forwardPlus ? nlohmann::ordered_json(o.prepass) : nlohmann::ordered_json();
     row["resolve"] = p.deferred ? nlohmann::ordered_json(o.resolve) : nlohmann::ordered_json();
+    row["draw"] = o.draw;
     row["workgroup"] = clustered(o.workgroup);
     row["frame_index"] = frame;
     row["warmup_frames"] = run.warmupFrames;
