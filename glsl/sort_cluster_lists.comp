@@ -4,14 +4,21 @@
 // and a float sum taken in a different order differs in its last bits. Sorted lists make the
 // shaded frame a pure function of the flags and the seed (byte-identical runs, issue 7).
 //
-// One workgroup per list: a rank sort from shared memory for lists up to
-// ML_SORT_SHARED_CAPACITY, a bitonic network in the buffer beyond. On an H200 this costs
-// 0.35 ms at 65,536 lights (2560x1440); one invocation per list with an insertion sort took
-// 1.49 ms there.
+// One workgroup per list. ML_SORT_LONG selects the long-list program; without it, the short one
+// (lengths and sizes in include/bindings.h). Short lists: a rank sort from shared memory, or a
+// bitonic network there. Long lists: a bitonic network in shared memory, or in the buffer for a
+// list longer than that (docs/architecture.md, "Light-list order", has the costs).
 #include "include/bindings.h"
 #include "include/frame_uniforms.glsl"
 #include "include/cluster_grid.glsl"
 
+#ifdef ML_SORT_LONG
+#define ML_SORT_WORKGROUP ML_SORT_LONG_WORKGROUP
+#define ML_SORT_CAPACITY ML_SORT_SHARED_CAPACITY
+#else
+#define ML_SORT_WORKGROUP ML_SORT_SHORT_WORKGROUP
+#define ML_SORT_CAPACITY ML_SORT_SHORT_MAX
+#endif
 layout(local_size_x = ML_SORT_WORKGROUP) in;
 
 layout(std430, binding = ML_SSBO_CLUSTER_COUNTS) readonly buffer ClusterCounts { uint clusterCounts[]; };
@@ -30,11 +37,11 @@ uvec2 listRange(uint list) {
     return uvec2(clusterOffsets[list], n);
 }
 
-shared uint s_list[ML_SORT_SHARED_CAPACITY];
+shared uint s_list[ML_SORT_CAPACITY];
 
 // Rank sort: a light appears at most once per list, so an entry's place is the number of
 // entries smaller than it. One barrier and n^2 / ML_SORT_WORKGROUP compares from shared
-// memory, whose reads all threads share.
+// memory, whose reads all threads share: the cheapest for short lists, quadratic beyond.
 void rankSort(uint first, uint n) {
     for (uint i = gl_LocalInvocationID.x; i < n; i += ML_SORT_WORKGROUP) s_list[i] = lightIndices[first + i];
     barrier();
@@ -43,6 +50,35 @@ void rankSort(uint first, uint n) {
         for (uint m = 0u; m < n; ++m) rank += uint(s_list[m] < x);
         lightIndices[first + rank] = x;
     }
+}
+
+uint nextPowerOfTwo(uint n) { return n <= 1u ? 1u : 1u << (findMSB(n - 1u) + 1); }
+
+// Bitonic sort in shared memory: n log^2 n / 2 compare-exchanges, a barrier per step. The list
+// is padded to a power of two with 0xFFFFFFFF, which sorts last and is never written back.
+void bitonicSortShared(uint first, uint n) {
+    uint padded = nextPowerOfTwo(n);
+    for (uint i = gl_LocalInvocationID.x; i < padded; i += ML_SORT_WORKGROUP)
+        s_list[i] = i < n ? lightIndices[first + i] : 0xFFFFFFFFu;
+    barrier();
+    for (uint k = 2u; k <= padded; k <<= 1) {
+        for (uint j = k >> 1; j > 0u; j >>= 1) {
+            for (uint p = gl_LocalInvocationID.x; p < padded / 2u; p += ML_SORT_WORKGROUP) {
+                // Pair p's lower index: p with a zero inserted at bit j (j is a power of two,
+                // and a division by a variable costs tens of instructions).
+                uint a = ((p & ~(j - 1u)) << 1) | (p & (j - 1u));
+                uint b = a + j;
+                uint x = s_list[a], y = s_list[b];
+                bool ascending = (a & k) == 0u;
+                if ((x > y) == ascending) {
+                    s_list[a] = y;
+                    s_list[b] = x;
+                }
+            }
+            barrier();
+        }
+    }
+    for (uint i = gl_LocalInvocationID.x; i < n; i += ML_SORT_WORKGROUP) lightIndices[first + i] = s_list[i];
 }
 
 // A list too long for shared memory (a hot cluster): bitonic sort in place in the buffer, in
@@ -76,7 +112,13 @@ void main() {
     uint list = gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x;
     if (list >= u_listCount) return;
     uvec2 range = listRange(list);
-    if (range.y < 2u) return;
-    if (range.y <= ML_SORT_SHARED_CAPACITY) rankSort(range.x, range.y);
+#ifdef ML_SORT_LONG
+    if (range.y <= ML_SORT_SHORT_MAX) return;
+    if (range.y <= ML_SORT_CAPACITY) bitonicSortShared(range.x, range.y);
     else bitonicSortBuffer(range.x, range.y);
+#else
+    if (range.y < 2u || range.y > ML_SORT_SHORT_MAX) return;
+    if (range.y <= ML_SORT_RANK_MAX) rankSort(range.x, range.y);
+    else bitonicSortShared(range.x, range.y);
+#endif
 }

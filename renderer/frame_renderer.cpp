@@ -10,10 +10,12 @@ FrameRenderer::FrameRenderer(const Scene& scene, const std::vector<PointLight>& 
     : settings_(settings),
       scene_(scene),
       lights_(lights),
-      targets_(settings.width, settings.height),
+      targets_(settings.width, settings.height, false),
       frameUniformBuffer_("frame.uniforms", sizeof(FrameUniforms)),
       method_(createMethod(settings.method)),
-      timer_(settings.timing, settings.clock, settings.readback) {}
+      timer_(settings.timing, settings.clock, settings.readback) {
+    targets_.setStencil(method_->needsStencil());
+}
 
 void FrameRenderer::resize(int width, int height) {
     settings_.width = width;
@@ -24,6 +26,7 @@ void FrameRenderer::resize(int width, int height) {
 void FrameRenderer::setMethod(const MethodSettings& method) {
     settings_.method = method;
     method_ = createMethod(method);
+    targets_.setStencil(method_->needsStencil());
 }
 
 void FrameRenderer::setLights(const std::vector<PointLight>& lights) { lights_ = LightBuffers(lights); }

@@ -9,8 +9,11 @@ namespace ml {
 
 class FrameTargets {
 public:
-    FrameTargets(int width, int height) { resize(width, height); }
+    FrameTargets(int width, int height, bool stencil) : stencil_(stencil) { resize(width, height); }
     void resize(int width, int height);
+    // Depth with an 8-bit stencil (only Forward+'s pre-pass uses it), or 32-bit float depth
+    // alone, which the raster passes of the other methods write faster. Re-creates on change.
+    void setStencil(bool stencil);
 
     int width() const { return width_; }
     int height() const { return height_; }
@@ -21,11 +24,12 @@ public:
     const gl::Framebuffer& hdrFramebuffer() const { return hdrFbo_; }
     const gl::Framebuffer& ldrFramebuffer() const { return ldrFbo_; }
     const gl::Framebuffer& hdrOnlyFramebuffer() const { return hdrOnlyFbo_; }
-    // hdr 16, depth-stencil 8, ldr 4 bytes per pixel.
-    std::size_t bytes() const { return static_cast<std::size_t>(width_) * height_ * 28; }
+    // hdr 16, depth 4 (8 with stencil), ldr 4 bytes per pixel.
+    std::size_t bytes() const { return static_cast<std::size_t>(width_) * height_ * (stencil_ ? 28 : 24); }
 
 private:
     int width_ = 0, height_ = 0;
+    bool stencil_ = false;
     gl::Texture2D hdr_, depth_, ldr_;
     gl::Framebuffer hdrFbo_, ldrFbo_, hdrOnlyFbo_;
 };

@@ -72,10 +72,16 @@
 #define ML_CLUSTER_WORKGROUP 64
 // Default light-assignment workgroup size (--workgroup overrides it).
 #define ML_ASSIGN_WORKGROUP 64
-// Light-list sort (GPU variant): threads per list, and the longest list rank-sorted in shared
-// memory (4 KiB, small enough for full occupancy); longer lists sort in place in the buffer.
-#define ML_SORT_WORKGROUP 64
-#define ML_SORT_SHARED_CAPACITY 1024
+// Light-list sort, in two dispatches by list length so that short lists (most of them) do not
+// hold a long list's threads and shared memory: lists up to ML_SORT_SHORT_MAX entries sort in
+// workgroups of ML_SORT_SHORT_WORKGROUP (a rank sort up to ML_SORT_RANK_MAX, bitonic beyond);
+// longer ones in workgroups of ML_SORT_LONG_WORKGROUP, bitonic in shared memory up to
+// ML_SORT_SHARED_CAPACITY (16 KiB), in place in the buffer beyond.
+#define ML_SORT_SHORT_WORKGROUP 64
+#define ML_SORT_RANK_MAX 128
+#define ML_SORT_SHORT_MAX 256
+#define ML_SORT_LONG_WORKGROUP 256
+#define ML_SORT_SHARED_CAPACITY 4096
 // Radix sort: 8-bit digits (256 buckets, one per thread), each workgroup sorts a block of
 // ML_RADIX_WORKGROUP x ML_RADIX_ROUNDS keys.
 #define ML_RADIX_WORKGROUP 256

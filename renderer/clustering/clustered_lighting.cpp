@@ -61,7 +61,8 @@ ClusteredLighting::ClusteredLighting(const ClusteringSettings& settings, const s
       fill_(fillProgram(settings)),
       capped_(gl::Program("assign.capped", {{GL_COMPUTE_SHADER, "assign_lights.comp"}},
                           {{"ML_WORKGROUP", std::to_string(settings.grid.workgroup)}, {"ML_CULL", cullDefine(settings.cull)}})),
-      sort_(gl::Program::compute("sort_cluster_lists.comp")),
+      sortShort_(gl::Program::compute("sort_cluster_lists.comp")),
+      sortLong_(gl::Program::compute("sort_cluster_lists.comp", {{"ML_SORT_LONG", "1"}})),
       gridBuffer_("clusters.grid", sizeof(ClusterGridGpu)),
       counters_("clusters.counters", 32),
       dispatchArgs_("assign.dispatch-args", 16) {
@@ -195,11 +196,14 @@ void ClusteredLighting::sortLists(const FrameContext& ctx) {
     counts_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_CLUSTER_COUNTS);
     offsets_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_CLUSTER_OFFSETS);
     indices_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_LIGHT_INDICES);
-    sort_.use();
-    sort_.set("u_listCount", lists);
-    // One workgroup per list; past the device's limit in x, the rest goes to y.
+    // One workgroup per list; past the device's limit in x, the rest goes to y. The two
+    // programs take disjoint lists (by length), so they need no barrier between them.
     const std::uint32_t groupsX = std::min(lists, maxGroupsX_);
-    glDispatchCompute(groupsX, (lists + groupsX - 1) / groupsX, 1);
+    for (const gl::Program* program : {&sortShort_, &sortLong_}) {
+        program->use();
+        program->set("u_listCount", lists);
+        glDispatchCompute(groupsX, (lists + groupsX - 1) / groupsX, 1);
+    }
     glMemoryBarrier(kComputeToCompute);
 }
 

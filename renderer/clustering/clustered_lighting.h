@@ -92,7 +92,7 @@ private:
     std::uint64_t listEntries_ = 0;
     std::uint32_t maxGroupsX_ = 65535;
 
-    gl::Program depthRange_, bounds_, active_, normalBins_, ranges_, dispatch_, count_, fill_, capped_, sort_;
+    gl::Program depthRange_, bounds_, active_, normalBins_, ranges_, dispatch_, count_, fill_, capped_, sortShort_, sortLong_;
     PrefixSum scan_;
 
     gl::Buffer gridBuffer_;

@@ -34,7 +34,11 @@ void ForwardPlus::render(const FrameContext& ctx) {
         const float clearColor[4] = {0.0f, 0.0f, 0.0f, 1.0f};
         const float clearDepth = 1.0f;
         glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 0, clearColor);
-        glClearNamedFramebufferfi(fbo.id(), GL_DEPTH_STENCIL, 0, clearDepth, 0);
+        glClearNamedFramebufferfv(fbo.id(), GL_DEPTH, 0, &clearDepth);
+        if (prepass_) {
+            const GLint clearStencil = 0;
+            glClearNamedFramebufferiv(fbo.id(), GL_STENCIL, 0, &clearStencil);
+        }
         glEnable(GL_DEPTH_TEST);
         glDepthFunc(GL_LESS);
         glDepthMask(GL_TRUE);

@@ -16,6 +16,8 @@ public:
     std::string name() const override { return "forward-plus"; }
     void render(const FrameContext& ctx) override;
     const ClusteredLighting* clustering() const override { return &clustering_; }
+    // The pre-pass path marks each pixel's first nearest fragment in the stencil.
+    bool needsStencil() const override { return prepass_; }
 
 private:
     bool prepass_;

@@ -31,7 +31,7 @@ void VisibilityBuffer::render(const FrameContext& ctx) {
         const GLuint background = 0;
         const float clearDepth = 1.0f;
         glClearNamedFramebufferuiv(fbo_.id(), GL_COLOR, 0, &background);
-        glClearNamedFramebufferfi(fbo_.id(), GL_DEPTH_STENCIL, 0, clearDepth, 0);
+        glClearNamedFramebufferfv(fbo_.id(), GL_DEPTH, 0, &clearDepth);
         glEnable(GL_DEPTH_TEST);
         glDepthFunc(GL_LESS);
         glDepthMask(GL_TRUE);

@@ -128,8 +128,9 @@ INSTANTIATE_TEST_SUITE_P(Grids, LightAssignment,
                       AssignmentCase{"boxes", 64, 7, 5, Slicing::Log, false, CullMode::Sphere, AssignMode::PerCluster},
                       AssignmentCase{"atrium", 200, 13, 9, Slicing::Fitted, true, CullMode::Cone, AssignMode::PerCluster}));
 
-// The list sort on lists shorter and longer than its shared memory (ML_SORT_SHARED_CAPACITY;
-// longer lists take the in-buffer bitonic path), exact and capped. Two clusters (tile rows),
+// The list sort on each of its paths: short lists by rank sort (up to ML_SORT_RANK_MAX) and
+// bitonic (up to ML_SORT_SHORT_MAX), long ones bitonic in shared memory (up to
+// ML_SORT_SHARED_CAPACITY) and in the buffer beyond; the edges included; exact and capped. Two clusters (tile rows),
 // lights covering both.
 struct LongListCase {
     AssignMode assign;
@@ -162,6 +163,9 @@ TEST_P(LongLists, AreCompleteAndSorted) {
 
 INSTANTIATE_TEST_SUITE_P(Sort, LongLists,
     ::testing::Values(LongListCase{AssignMode::Exact, 5000}, LongListCase{AssignMode::Exact, 700},
+                      LongListCase{AssignMode::Exact, 100}, LongListCase{AssignMode::Exact, ML_SORT_RANK_MAX + 1},
+                      LongListCase{AssignMode::Exact, ML_SORT_SHORT_MAX}, LongListCase{AssignMode::Exact, ML_SORT_SHORT_MAX + 1},
+                      LongListCase{AssignMode::Exact, ML_SORT_SHARED_CAPACITY},
                       LongListCase{AssignMode::Capped, 1500}));
 
 }  // namespace
