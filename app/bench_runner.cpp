@@ -104,6 +104,7 @@ BenchRow configColumns(const BenchPoint& p, int index, std::uint32_t frame, cons
     row["prepass"] = p.forwardPlus ? nlohmann::ordered_json(o.prepass) : nlohmann::ordered_json();
     row["resolve"] = p.deferred ? nlohmann::ordered_json(o.resolve) : nlohmann::ordered_json();
     row["draw"] = o.draw;
+    row["backface_culling"] = o.backfaceCulling;
     row["workgroup"] = clustered(o.workgroup);
     row["frame_index"] = frame;
     row["warmup_frames"] = run.warmupFrames;

@@ -206,6 +206,8 @@ const std::vector<AxisDef>& axisDefs() {
              (void)parseDrawSubmission(asText(v));
              p.frame.draw = v.get<std::string>();
          }},
+        {{"backface_culling", "--backface-culling", "cull back faces of single-sided materials: on, off"}, ValueKind::Boolean,
+         Applies::Always, [](BenchPoint& p, const json& v) { p.frame.backfaceCulling = asBoolean(v) ? "on" : "off"; }},
         {{"cull", "--cull", "light-vs-cluster test: aabb, sphere, cone"}, ValueKind::Text, Applies::Clustered,
          [](BenchPoint& p, const json& v) {
              (void)parseCullMode(asText(v));

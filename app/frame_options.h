@@ -30,7 +30,7 @@ struct FrameOptions {
     std::string cull = "aabb";
     bool normalCones = false;
     std::string resolve = "compute";
-    std::string gbuffer = "standard";
+    std::string gbuffer = "packed";
     std::string prepass = "on";
     std::string view = "shaded";
     long long lights = 1024;
@@ -46,6 +46,7 @@ struct FrameOptions {
     long long frames = 0;
     float exposure = 1.0f;
     std::string draw = "direct";
+    std::string backfaceCulling = "on";
     std::string specular = "on";
     bool bloom = false;
     float bloomThreshold = BloomSettings{}.threshold;

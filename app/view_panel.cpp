@@ -103,6 +103,7 @@ void shadingSection(ViewSettings& s, PanelEdits& edits) {
     int draw = static_cast<int>(s.draw);
     if (comboOf("scene draws", draw, {drawSubmissionName(DrawSubmission::Direct), drawSubmissionName(DrawSubmission::Indirect)}))
         s.draw = static_cast<DrawSubmission>(draw);
+    ImGui::Checkbox("back-face culling", &s.backfaceCulling);
     ImGui::BeginDisabled(s.method.kind != MethodKind::Deferred && s.method.kind != MethodKind::Visibility);
     int gbuffer = static_cast<int>(s.method.gbuffer);
     if (comboOf("G-buffer", gbuffer, gbufferFormatNames())) {

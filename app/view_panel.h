@@ -24,6 +24,7 @@ struct ViewSettings {
     float animationSpeed = 1.0f;  // times real time
     float exposure = 1.0f;
     DrawSubmission draw = DrawSubmission::Direct;
+    bool backfaceCulling = true;
     bool specular = true;
     BloomSettings bloom;
     bool vsync = true;

@@ -82,6 +82,7 @@ ViewSession::ViewSession(const ViewOptions& options, PreparedFrame frame, std::o
     settings_.lightRadius = options.frame.lightRadius.value_or(defaultLightRadius(frame_.scene.bounds));
     settings_.exposure = options.frame.exposure;
     settings_.draw = parseDrawSubmission(options.frame.draw);
+    settings_.backfaceCulling = frame_.settings.backfaceCulling;
     settings_.specular = frame_.settings.specular;
     settings_.bloom = frame_.settings.bloom;
     settings_.vsync = !options.noVsync;
@@ -186,6 +187,7 @@ void ViewSession::applyEdits(const PanelEdits& edits) {
     if (edits.screenshot) screenshotRequested_ = true;
     renderer_->setExposure(settings_.exposure);
     renderer_->setDrawSubmission(settings_.draw);
+    renderer_->setBackfaceCulling(settings_.backfaceCulling);
     renderer_->setSpecular(settings_.specular);
     renderer_->setBloom(settings_.bloom);
 }

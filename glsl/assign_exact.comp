@@ -184,34 +184,18 @@ void assignPairs() {
     }
 }
 #else
-shared uint s_firstLight, s_lastLight;
-
-// The light whose candidates hold candidate k, searched for in lights [lo - 1, hi): the last
-// one whose offset is <= k (zero-candidate lights share their successor's offset, and taking
-// the last skips them). Needs candidateOffsets[lo - 1] <= k.
-uint lightOfCandidate(uint k, uint lo, uint hi) {
+void assignPairs() {
+    uint k = (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * ML_WORKGROUP + gl_LocalInvocationID.x;
+    if (k >= totals[2]) return;
+    // The light whose candidates hold k: the last offset <= k (zero-candidate lights share
+    // their successor's offset and are skipped by taking the last).
+    uint lo = 0u, hi = lightCount();
     while (lo < hi) {
         uint mid = (lo + hi) >> 1;
         if (candidateOffsets[mid] <= k) lo = mid + 1u;
         else hi = mid;
     }
-    return lo - 1u;
-}
-
-void assignPairs() {
-    uint groupFirst = (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * ML_WORKGROUP;
-    uint k = groupFirst + gl_LocalInvocationID.x;
-    // A workgroup's candidates belong to a run of consecutive lights. Two searches over every
-    // light bound the run; each invocation then searches only the run: a few dependent loads
-    // instead of log2(lights).
-    if (groupFirst < totals[2]) {
-        uint groupLast = min(groupFirst + ML_WORKGROUP, totals[2]) - 1u;
-        if (gl_LocalInvocationID.x == 0u) s_firstLight = lightOfCandidate(groupFirst, 1u, lightCount());
-        if (gl_LocalInvocationID.x == ML_WORKGROUP - 1u) s_lastLight = lightOfCandidate(groupLast, 1u, lightCount());
-    }
-    barrier();
-    if (k >= totals[2]) return;
-    uint light = lightOfCandidate(k, s_firstLight + 1u, s_lastLight + 1u);
+    uint light = lo - 1u;
     uint local = k - candidateOffsets[light];
     uvec4 range = lightRanges[light];
     uint nx = range.w & 0xFFFFu, ny = range.w >> 16;

@@ -30,6 +30,7 @@ struct FrameSettings {
     float exposure = 1.0f;
     float ambient = 0.03f;
     DrawSubmission draw = DrawSubmission::Direct;  // --draw: how raster passes submit the scene
+    bool backfaceCulling = true;                   // --backface-culling (SceneGpu::setBackfaceCulling)
     bool specular = true;  // the Blinn-Phong term (--specular), a frame uniform: no recompile
     BloomSettings bloom;
     LightAnimation animation;
@@ -58,6 +59,7 @@ public:
     void setLights(const std::vector<PointLight>& lights);
     void setExposure(float exposure) { settings_.exposure = exposure; }
     void setDrawSubmission(DrawSubmission draw) { settings_.draw = draw; }
+    void setBackfaceCulling(bool on) { settings_.backfaceCulling = on; }
     void setSpecular(bool on) { settings_.specular = on; }
     void setBloom(const BloomSettings& bloom) { settings_.bloom = bloom; }
     const BloomPass& bloom() const { return bloom_; }

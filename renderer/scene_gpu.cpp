@@ -9,6 +9,15 @@
 #include "renderer/gpu_types.h"
 
 namespace ml {
+namespace {
+
+// GL's layout of one multi-draw-indirect command.
+struct DrawElementsIndirectCommand {
+    std::uint32_t count, instanceCount, firstIndex, baseVertex, baseInstance;
+};
+static_assert(sizeof(DrawElementsIndirectCommand) == 20, "GL's indirect command layout");
+
+}  // namespace
 
 SceneGpu::SceneGpu(const Scene& scene) : draws_(scene.draws), indexCount_(scene.indices.size()) {
     vertices_ = gl::Buffer::fromSpan<Vertex>("scene.vertices", scene.vertices, 0);
@@ -48,6 +57,7 @@ SceneGpu::SceneGpu(const Scene& scene) : draws_(scene.draws), indexCount_(scene.
         materials.push_back({m.baseColorFactor, glm::vec4(m.specularStrength, m.shininess, textured ? 1.0f : 0.0f,
                                                           textured ? float(m.baseColorTexture) : -1.0f)});
         materialTexture_.push_back(textured ? m.baseColorTexture : -1);
+        materialDoubleSided_.push_back(m.doubleSided ? 1 : 0);
     }
     if (materials.empty()) materials.push_back({glm::vec4(1.0f), glm::vec4(0.25f, 32.0f, 0.0f, -1.0f)});
     materials_ = gl::Buffer::fromSpan<GpuMaterial>("scene.materials", materials, 0);
@@ -59,21 +69,21 @@ SceneGpu::SceneGpu(const Scene& scene) : draws_(scene.draws), indexCount_(scene.
     }
     triangleMaterials_ = gl::Buffer::fromSpan<std::uint32_t>("scene.triangle-materials", triangleMaterials, 0);
 
-    // Draw ranges in base-colour-texture order, for both submissions: where surfaces tie in
-    // depth the first drawn wins, so direct and indirect must draw in the same order to give
-    // the same image. Range i is drawn with baseInstance i, so the per-draw attribute (divisor
-    // 1) reads element i.
-    const auto textureOf = [&](const DrawRange& d) {
-        return d.material < materialTexture_.size() ? materialTexture_[d.material] : -1;
+    // Draw ranges in (base-colour texture, sidedness) order, for both submissions: where
+    // surfaces tie in depth the first drawn wins, so direct and indirect must draw in the same
+    // order to give the same image. Range i is drawn with baseInstance i, so the per-draw
+    // attribute (divisor 1) reads element i.
+    const auto groupOf = [&](const DrawRange& d) {
+        return std::pair(d.material < materialTexture_.size() ? materialTexture_[d.material] : -1, doubleSided(d));
     };
-    std::stable_sort(draws_.begin(), draws_.end(), [&](const DrawRange& a, const DrawRange& b) { return textureOf(a) < textureOf(b); });
+    std::stable_sort(draws_.begin(), draws_.end(), [&](const DrawRange& a, const DrawRange& b) { return groupOf(a) < groupOf(b); });
     std::vector<glm::uvec2> params;
-    std::map<int, std::vector<std::uint32_t>> byTexture;
+    std::map<std::pair<int, bool>, std::vector<std::uint32_t>> byGroup;
     for (std::uint32_t i = 0; i < draws_.size(); ++i) {
         const DrawRange& d = draws_[i];
         const std::uint32_t material = d.material < materialTexture_.size() ? d.material : 0u;
         params.emplace_back(material, d.firstIndex / 3);
-        byTexture[textureOf(d)].push_back(i);
+        byGroup[groupOf(d)].push_back(i);
     }
     if (params.empty()) params.emplace_back(0u, 0u);
     drawParams_ = gl::Buffer::fromSpan<glm::uvec2>("scene.draw-params", params, 0);
@@ -83,13 +93,9 @@ SceneGpu::SceneGpu(const Scene& scene) : draws_(scene.draws), indexCount_(scene.
     glVertexArrayAttribIFormat(vao, 3, 2, GL_UNSIGNED_INT, 0);
     glVertexArrayAttribBinding(vao, 3, 1);
 
-    struct DrawElementsIndirectCommand {
-        std::uint32_t count, instanceCount, firstIndex, baseVertex, baseInstance;
-    };
-    static_assert(sizeof(DrawElementsIndirectCommand) == 20, "GL's indirect command layout");
     std::vector<DrawElementsIndirectCommand> commands;
-    for (const auto& [texture, ranges] : byTexture) {
-        groups_.push_back({texture, static_cast<std::uint32_t>(commands.size()), static_cast<std::uint32_t>(ranges.size())});
+    for (const auto& [group, ranges] : byGroup) {
+        groups_.push_back({group.first, group.second, static_cast<std::uint32_t>(commands.size()), static_cast<std::uint32_t>(ranges.size())});
         for (std::uint32_t i : ranges) commands.push_back({draws_[i].indexCount, 1, draws_[i].firstIndex, 0, i});
     }
     if (commands.empty()) commands.push_back({0, 0, 0, 0, 0});
@@ -114,6 +120,11 @@ std::size_t SceneGpu::drawCallsPerPass() const {
     return submission_ == DrawSubmission::Indirect ? groups_.size() : draws_.size();
 }
 
+void SceneGpu::setCullState(bool doubleSided) const {
+    if (backfaceCulling_ && !doubleSided) glEnable(GL_CULL_FACE);  // GL's defaults: CCW front, cull back
+    else glDisable(GL_CULL_FACE);
+}
+
 void SceneGpu::draw() const {
     glBindVertexArray(vao_.id());
     materials_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_MATERIALS);
@@ -121,35 +132,49 @@ void SceneGpu::draw() const {
         glBindBuffer(GL_DRAW_INDIRECT_BUFFER, commands_.id());
         for (const TextureGroup& g : groups_) {
             bindGroupTexture(g.texture);
+            setCullState(g.doubleSided);
             glMultiDrawElementsIndirect(GL_TRIANGLES, GL_UNSIGNED_INT,
-                                        reinterpret_cast<const void*>(std::uintptr_t(g.firstCommand) * 20),
+                                        reinterpret_cast<const void*>(std::uintptr_t(g.firstCommand) * sizeof(DrawElementsIndirectCommand)),
                                         static_cast<GLsizei>(g.commandCount), 0);
         }
         glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
-        return;
+    } else {
+        for (std::uint32_t i = 0; i < draws_.size(); ++i) {
+            const DrawRange& d = draws_[i];
+            bindGroupTexture(d.material < materialTexture_.size() ? materialTexture_[d.material] : -1);
+            setCullState(doubleSided(d));
+            glDrawElementsInstancedBaseInstance(GL_TRIANGLES, static_cast<GLsizei>(d.indexCount), GL_UNSIGNED_INT,
+                                                reinterpret_cast<const void*>(std::uintptr_t(d.firstIndex) * sizeof(std::uint32_t)), 1, i);
+        }
     }
-    for (std::uint32_t i = 0; i < draws_.size(); ++i) {
-        const DrawRange& d = draws_[i];
-        bindGroupTexture(d.material < materialTexture_.size() ? materialTexture_[d.material] : -1);
-        glDrawElementsInstancedBaseInstance(GL_TRIANGLES, static_cast<GLsizei>(d.indexCount), GL_UNSIGNED_INT,
-                                            reinterpret_cast<const void*>(std::uintptr_t(d.firstIndex) * sizeof(std::uint32_t)), 1, i);
-    }
+    glDisable(GL_CULL_FACE);
 }
 
-void SceneGpu::drawTriangleIds() const {
+void SceneGpu::drawUntextured() const {
     glBindVertexArray(vao_.id());
     if (submission_ == DrawSubmission::Indirect) {
-        // No textures here, so every range goes in one call.
+        // No textures here: one call per run of groups with the same cull state.
         glBindBuffer(GL_DRAW_INDIRECT_BUFFER, commands_.id());
-        glMultiDrawElementsIndirect(GL_TRIANGLES, GL_UNSIGNED_INT, nullptr, static_cast<GLsizei>(draws_.size()), 0);
+        for (std::size_t first = 0; first < groups_.size();) {
+            std::size_t end = first + 1;
+            std::uint32_t commands = groups_[first].commandCount;
+            while (end < groups_.size() && groups_[end].doubleSided == groups_[first].doubleSided) commands += groups_[end++].commandCount;
+            setCullState(groups_[first].doubleSided);
+            glMultiDrawElementsIndirect(GL_TRIANGLES, GL_UNSIGNED_INT,
+                                        reinterpret_cast<const void*>(std::uintptr_t(groups_[first].firstCommand) * sizeof(DrawElementsIndirectCommand)),
+                                        static_cast<GLsizei>(commands), 0);
+            first = end;
+        }
         glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
-        return;
+    } else {
+        for (std::uint32_t i = 0; i < draws_.size(); ++i) {
+            const DrawRange& d = draws_[i];
+            setCullState(doubleSided(d));
+            glDrawElementsInstancedBaseInstance(GL_TRIANGLES, static_cast<GLsizei>(d.indexCount), GL_UNSIGNED_INT,
+                                                reinterpret_cast<const void*>(std::uintptr_t(d.firstIndex) * sizeof(std::uint32_t)), 1, i);
+        }
     }
-    for (std::uint32_t i = 0; i < draws_.size(); ++i) {
-        const DrawRange& d = draws_[i];
-        glDrawElementsInstancedBaseInstance(GL_TRIANGLES, static_cast<GLsizei>(d.indexCount), GL_UNSIGNED_INT,
-                                            reinterpret_cast<const void*>(std::uintptr_t(d.firstIndex) * sizeof(std::uint32_t)), 1, i);
-    }
+    glDisable(GL_CULL_FACE);
 }
 
 void SceneGpu::bindGeometryForCompute() const {
@@ -157,11 +182,6 @@ void SceneGpu::bindGeometryForCompute() const {
     indices_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_INDICES);
     triangleMaterials_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_TRIANGLE_MATERIALS);
     materials_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_MATERIALS);
-}
-
-void SceneGpu::drawDepthOnly() const {
-    glBindVertexArray(vao_.id());
-    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(indexCount_), GL_UNSIGNED_INT, nullptr);
 }
 
 std::size_t SceneGpu::bytes() const {

@@ -29,13 +29,17 @@ public:
     // material and first triangle; so direct and indirect submission run the same shaders.
     void setSubmission(DrawSubmission submission) { submission_ = submission; }
     DrawSubmission submission() const { return submission_; }
+    // On (--backface-culling, the default): every raster pass culls the back faces of ranges
+    // whose material is single-sided (Material::doubleSided). Every pass culls alike, so the
+    // methods still see the same surfaces.
+    void setBackfaceCulling(bool on) { backfaceCulling_ = on; }
+    bool backfaceCulling() const { return backfaceCulling_; }
     // Draws every draw range with the current program, binding each range's base-colour texture.
     void draw() const;
-    // Draws positions only, for depth-only passes (no material state changes).
-    void drawDepthOnly() const;
-    // Draws every range without textures: the visibility buffer's raster pass, which writes
-    // v_firstTriangle + gl_PrimitiveID, the triangle's index in the scene.
-    void drawTriangleIds() const;
+    // Draws every range without binding textures: depth-only passes, and the visibility
+    // buffer's raster pass (which writes v_firstTriangle + gl_PrimitiveID, the triangle's
+    // index in the scene).
+    void drawUntextured() const;
     // Draw calls one textured raster pass issues with the current submission.
     std::size_t drawCallsPerPass() const;
     std::size_t drawRangeCount() const { return draws_.size(); }
@@ -58,21 +62,27 @@ private:
     gl::Handle<gl::VertexArrayDeleter> vao_;
     std::vector<gl::Texture2D> textures_;
     gl::Texture2D white_;
-    // Indirect submission: one command per draw range, grouped by base-colour texture.
+    // Indirect submission: one command per draw range, grouped by base-colour texture and
+    // sidedness (a multi-draw call has one cull state).
     struct TextureGroup {
         int texture = -1;  // -1: untextured (the white texture)
+        bool doubleSided = false;
         std::uint32_t firstCommand = 0;
         std::uint32_t commandCount = 0;
     };
     void bindGroupTexture(int texture) const;
+    bool doubleSided(const DrawRange& d) const { return d.material < materialDoubleSided_.size() && materialDoubleSided_[d.material]; }
+    void setCullState(bool doubleSided) const;
 
     std::vector<DrawRange> draws_;
     std::vector<int> materialTexture_;
+    std::vector<std::uint8_t> materialDoubleSided_;
     std::vector<TextureGroup> groups_;
     gl::Buffer drawParams_;  // per draw range: material, first triangle (8 B)
     gl::Buffer commands_;    // DrawElementsIndirectCommand per draw range, in group order (20 B)
     std::size_t indexCount_ = 0;
     DrawSubmission submission_ = DrawSubmission::Direct;
+    bool backfaceCulling_ = true;
 };
 
 }  // namespace ml

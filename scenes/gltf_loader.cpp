@@ -1124,6 +1124,7 @@ Material SceneBuilder::convertMaterial(std::size_t index) {
         fail(path_, what + ": baseColorFactor has " + std::to_string(f.size()) + " numbers, expected 4");
     // The spec bounds each factor to [0, 1]; clamping keeps a stray value from blowing out shading.
     m.baseColorFactor = glm::clamp(glm::vec4(glm::dvec4(f[0], f[1], f[2], f[3])), 0.0f, 1.0f);
+    m.doubleSided = source.doubleSided;
 
     const tinygltf::TextureInfo& info = source.pbrMetallicRoughness.baseColorTexture;
     if (info.index < 0) return m;

@@ -38,6 +38,9 @@ struct Material {
     int baseColorTexture = -1;        // index into Scene::images, or -1
     float specularStrength = 0.25f;   // Blinn-Phong specular weight
     float shininess = 32.0f;          // Blinn-Phong exponent
+    // glTF's doubleSided: false (the default) lets raster passes cull back faces, true draws
+    // both sides (lit with the normal as given, as glTF asks for no flipping here).
+    bool doubleSided = false;
 };
 
 // A contiguous run of triangles (3 indices each) drawn with one material.

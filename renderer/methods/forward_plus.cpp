@@ -60,7 +60,7 @@ void ForwardPlus::render(const FrameContext& ctx) {
         clearTargets();
         glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
         depthProgram_.use();
-        ctx.scene.drawDepthOnly();
+        ctx.scene.drawUntextured();
         glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
         glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
     }

@@ -14,7 +14,7 @@ namespace ml {
 
 class GBuffer {
 public:
-    explicit GBuffer(GBufferFormat format = GBufferFormat::Standard) : format_(format) {}
+    explicit GBuffer(GBufferFormat format = GBufferFormat::Packed) : format_(format) {}
     GBufferFormat format() const { return format_; }
     // ML_GBUFFER_FORMAT for the shaders that write or read this layout.
     shaders::Defines defines() const;

@@ -36,7 +36,7 @@ void VisibilityBuffer::render(const FrameContext& ctx) {
         glDepthFunc(GL_LESS);
         glDepthMask(GL_TRUE);
         rasterProgram_.use();
-        ctx.scene.drawTriangleIds();
+        ctx.scene.drawUntextured();
         glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
     }
     {
