@@ -27,6 +27,8 @@ struct MaterialSpec {
     float specular;
     float shininess;
     float metresPerRepeat;  // world size of one texture repeat
+    // Drawn without back-face culling: thin sheets whose open edges show their back faces.
+    bool doubleSided = false;
 };
 
 // Adds the materials to the scene and sets the builder's texture scale for each.
@@ -39,6 +41,7 @@ void addMaterials(Scene& scene, MeshBuilder& mb, const std::vector<MaterialSpec>
         m.baseColorTexture = s.texture;
         m.specularStrength = s.specular;
         m.shininess = s.shininess;
+        m.doubleSided = s.doubleSided;
         scene.materials.push_back(m);
         mb.setUvScale(static_cast<std::uint32_t>(i), 1.0f / s.metresPerRepeat);
     }
@@ -257,7 +260,7 @@ void column(MeshBuilder& mb, const Tess& tess, const glm::vec3& base, float spri
     mb.addBox(kStone, glm::vec3(base.x - cs.plinthHalf, base.y, base.z - cs.plinthHalf),
               glm::vec3(base.x + cs.plinthHalf, base.y + cs.plinthHeight, base.z + cs.plinthHalf), 0x3fu & ~0x4u);
     mb.addBox(kStone, glm::vec3(base.x - cs.abacusHalf, springY - cs.abacusHeight, base.z - cs.abacusHalf),
-              glm::vec3(base.x + cs.abacusHalf, springY, base.z + cs.abacusHalf), 0x3fu & ~0x8u);
+              glm::vec3(base.x + cs.abacusHalf, springY, base.z + cs.abacusHalf));  // closed: the wall above is narrower
 
     const float yS0 = y0 + 2.0f * tb + 2.0f * ts;
     const float yS1 = yTop - echinusH - neck - 2.0f * ta;
@@ -372,9 +375,9 @@ void addBalustrade(MeshBuilder& mb, const Tess& tess, float side) {
     for (int b = 0; b < kBays; ++b) {
         const float c = bayCenterX(b);
         const float x0 = c - 0.5f * kBay + kUpper.column.plinthHalf, x1 = c + 0.5f * kBay - kUpper.column.plinthHalf;
-        mb.addBox(kStone, glm::vec3(x0, y0, z - 0.15f), glm::vec3(x1, y0 + railLow, z + 0.15f), 0x38u);
-        mb.addBox(kStone, glm::vec3(x0, y0 + railTop, z - 0.18f), glm::vec3(x1, y0 + railTop + railCap, z + 0.18f),
-                  0x3cu);
+        // With their ends: the rail meets the round shaft, whose plinth is lower, so they show.
+        mb.addBox(kStone, glm::vec3(x0, y0, z - 0.15f), glm::vec3(x1, y0 + railLow, z + 0.15f), 0x3bu);
+        mb.addBox(kStone, glm::vec3(x0, y0 + railTop, z - 0.18f), glm::vec3(x1, y0 + railTop + railCap, z + 0.18f));
         for (int k = 0; k < 7; ++k)
             baluster(mb, tess, glm::vec3(c + 0.45f * float(k - 3), y0 + railLow, z), railTop - railLow);
     }
@@ -551,9 +554,9 @@ std::vector<MaterialSpec> atriumMaterials() {
     m[kColumnMarble] = {"column_marble", {0.95f, 0.92f, 0.85f, 1.0f}, kImgMarble, 0.45f, 64.0f, 1.5f};
     m[kStone] = {"stone_blocks", {0.95f, 0.90f, 0.82f, 1.0f}, kImgStone, 0.15f, 20.0f, 2.4f};
     m[kPlaster] = {"plaster_wall", {1.0f, 0.95f, 0.88f, 1.0f}, kImgPlaster, 0.08f, 10.0f, 3.0f};
-    m[kFabricRed] = {"fabric_red", {0.70f, 0.05f, 0.04f, 1.0f}, kImgFabric, 0.06f, 8.0f, 0.5f};
-    m[kFabricGreen] = {"fabric_green", {0.06f, 0.40f, 0.10f, 1.0f}, kImgFabric, 0.06f, 8.0f, 0.5f};
-    m[kFabricBlue] = {"fabric_blue", {0.05f, 0.12f, 0.55f, 1.0f}, kImgFabric, 0.06f, 8.0f, 0.5f};
+    m[kFabricRed] = {"fabric_red", {0.70f, 0.05f, 0.04f, 1.0f}, kImgFabric, 0.06f, 8.0f, 0.5f, true};
+    m[kFabricGreen] = {"fabric_green", {0.06f, 0.40f, 0.10f, 1.0f}, kImgFabric, 0.06f, 8.0f, 0.5f, true};
+    m[kFabricBlue] = {"fabric_blue", {0.05f, 0.12f, 0.55f, 1.0f}, kImgFabric, 0.06f, 8.0f, 0.5f, true};
     m[kBronze] = {"bronze", {0.62f, 0.42f, 0.20f, 1.0f}, -1, 0.90f, 128.0f, 1.0f};
     m[kWater] = {"water", {0.04f, 0.14f, 0.18f, 1.0f}, -1, 1.00f, 256.0f, 1.0f};
     m[kWood] = {"wood", {1.0f, 1.0f, 1.0f, 1.0f}, kImgWood, 0.12f, 16.0f, 2.0f};

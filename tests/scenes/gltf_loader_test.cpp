@@ -363,7 +363,7 @@ TEST(GltfLoader, MirroringTransformKeepsFrontFacesAndNormals) {
 TEST(GltfLoader, Uv0AndBaseColorFactorAndOneDrawPerMaterial) {
     Gltf g;
     g.add("materials", {{"name", "red"}, {"pbrMetallicRoughness", {{"baseColorFactor", {1.0, 0.0, 0.0, 1.0}}}}});
-    g.add("materials", {{"name", "blue"}, {"pbrMetallicRoughness", {{"baseColorFactor", {0.0, 0.25, 1.0, 0.5}}}}});
+    g.add("materials", {{"name", "blue"}, {"doubleSided", true}, {"pbrMetallicRoughness", {{"baseColorFactor", {0.0, 0.25, 1.0, 0.5}}}}});
     const int pos = g.vec3({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}});
     const int uv = g.vec2({{0, 0}, {1, 0}, {0.5f, 1}});
     // The same UVs as normalized UNSIGNED_SHORT, as glTF allows.
@@ -384,6 +384,8 @@ TEST(GltfLoader, Uv0AndBaseColorFactorAndOneDrawPerMaterial) {
     EXPECT_EQ(scene.materials[0].name, "red");
     EXPECT_EQ(scene.materials[0].baseColorFactor, glm::vec4(1, 0, 0, 1));
     EXPECT_EQ(scene.materials[1].baseColorFactor, glm::vec4(0, 0.25f, 1, 0.5f));
+    EXPECT_FALSE(scene.materials[0].doubleSided);  // glTF's default: back faces may be culled
+    EXPECT_TRUE(scene.materials[1].doubleSided);
     ASSERT_EQ(scene.draws.size(), 2u);
     EXPECT_EQ(scene.draws[0].material, 0u);
     EXPECT_EQ(scene.draws[0].indexCount, 6u);
