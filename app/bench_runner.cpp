@@ -54,6 +54,7 @@ std::string frameKeyOf(const FrameOptions& o, double radius) {
     k["bloom"] = o.bloom;        // and get the same post-process
     k["bloom_threshold"] = o.bloomThreshold;
     k["bloom_strength"] = o.bloomStrength;
+    k["backface_culling"] = o.backfaceCulling;  // and raster the same surfaces
     return k.dump();
 }
 
@@ -214,6 +215,10 @@ void BenchRunner::measureInto(BenchRow& row, const BenchPoint& point) {
         reference = &references_.insert(referenceKey, ReferenceImages{renderer_->readHdr(), renderer_->readLdr()});
     }
     renderer_->setMethod(f.settings.method);
+    // Not part of the frame key (the reference does not depend on it): set for every point.
+    renderer_->setDrawSubmission(f.settings.draw);
+    renderer_->render(first);  // applies it, so the scene reports its draw calls
+    row["draw_calls"] = renderer_->scene().drawCallsPerPass();
 
     // Warm-up: shader compilation (llvmpipe compiles on first draw) and first-use allocation.
     for (int i = 0; i < run_.warmupFrames; ++i) renderer_->render(first + static_cast<std::uint32_t>(i));

@@ -68,6 +68,8 @@
 #define ML_SCAN_WORKGROUP 256
 // Screen-space compute passes (depth reduction, active clusters, compute resolve): tile edge.
 #define ML_SCREEN_TILE 8
+// Fitted slicing's depth reduction: pixels per invocation along each axis.
+#define ML_DEPTH_RANGE_BLOCK 4
 // Cluster AABB pass workgroup size.
 #define ML_CLUSTER_WORKGROUP 64
 // Default light-assignment workgroup size (--workgroup overrides it).

@@ -150,7 +150,8 @@ void ClusteredLighting::build(const FrameContext& ctx, const GBuffer* gbuffer) {
         auto pass = ctx.timer.pass("cluster.depth-range");
         depthRange_.use();
         depthRange_.set("u_phase", 0u);
-        glDispatchCompute(screenX, screenY, 1);
+        glDispatchCompute(gl::groupsFor(ctx.targets.width(), ML_SCREEN_TILE * ML_DEPTH_RANGE_BLOCK),
+                          gl::groupsFor(ctx.targets.height(), ML_SCREEN_TILE * ML_DEPTH_RANGE_BLOCK), 1);
         glMemoryBarrier(kComputeToCompute);
         depthRange_.set("u_phase", 1u);
         glDispatchCompute(1, 1, 1);

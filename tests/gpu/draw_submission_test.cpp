@@ -3,6 +3,10 @@
 // every method's frame is bit-identical, and fewer calls are issued.
 #include <gtest/gtest.h>
 
+#include <fstream>
+#include <map>
+#include <sstream>
+
 #include "gpu_test.h"
 
 namespace ml::test {
@@ -40,6 +44,35 @@ TEST(DrawSubmissionFlag, BadValueIsOneLine) {
     std::string output;
     EXPECT_NE(runManylights("render --draw bundles --out /dev/null", output), 0);
     EXPECT_NE(output.find("--draw 'bundles': expected direct or indirect"), std::string::npos) << output;
+}
+
+// The bench's --draw axis reaches the renderer: rows of an indirect point issue fewer draw
+// calls than direct ones (the renderer is kept between points of the same frame, so the
+// submission must be set for each point).
+TEST(DrawSubmissionFlag, BenchAxisSetsTheSubmissionPerPoint) {
+    const std::string dir = testOutputDir().string();
+    std::string output;
+    ASSERT_EQ(runManylights("bench --size 64x36 --lights 4 --method visibility --draw direct,indirect,direct "
+                            "--warmup 0 --timed-frames 1 --name draw --out " + dir, output), 0) << output;
+    std::ifstream csv(dir + "/draw.csv");
+    std::string line;
+    ASSERT_TRUE(std::getline(csv, line));
+    std::map<std::string, std::size_t> column;
+    std::stringstream header(line);
+    for (std::string name; std::getline(header, name, ',');) column[name] = column.size();
+    ASSERT_TRUE(column.count("draw") && column.count("draw_calls")) << line;
+    std::map<std::string, std::vector<int>> calls;
+    while (std::getline(csv, line)) {
+        std::vector<std::string> fields;
+        std::stringstream row(line);
+        for (std::string f; std::getline(row, f, ',');) fields.push_back(f);
+        ASSERT_GT(fields.size(), column["draw_calls"]) << line;
+        calls[fields[column["draw"]]].push_back(std::stoi(fields[column["draw_calls"]]));
+    }
+    ASSERT_EQ(calls["direct"].size(), 2u);
+    ASSERT_EQ(calls["indirect"].size(), 1u);
+    EXPECT_LT(calls["indirect"][0], calls["direct"][0]);
+    EXPECT_EQ(calls["direct"][1], calls["direct"][0]) << "the third point kept the second's submission";
 }
 
 }  // namespace
