@@ -61,8 +61,8 @@ constexpr const char* kSeeds = R"json({
      "method": "deferred", "assign": "exact", "resolve": ["fragment", "compute"], "lights": [1000, 8192]},
     {"name": "baseline", "description": "the seeds' configuration (deferred, three-target G-buffer, fragment resolve, linear 42x24x12, cap 2048) at the seeds' radius 2",
      "method": "deferred", "resolve": "fragment", "radius": 2, "lights": [1000, 2000, 4096, 8192]},
-    {"name": "ours", "description": "our fast exact path on the same frames: visibility buffer, exact lists, fitted slicing, 32 across x 24",
-     "method": ["visibility", "deferred"], "assign": "exact", "slicing": "fitted", "tiles_x": 32, "slices": 24,
+    {"name": "ours", "description": "our fast exact path on the same frames: visibility buffer, exact lists, fitted slicing, the default 32 across x 48",
+     "method": ["visibility", "deferred"], "assign": "exact", "slicing": "fitted", "tiles_x": 32, "slices": 48,
      "gbuffer": "packed", "radius": 2, "lights": [1000, 2000, 4096, 8192]}
   ]
 })json";

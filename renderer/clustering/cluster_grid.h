@@ -26,10 +26,11 @@ Slicing parseSlicing(const std::string& text);  // throws std::invalid_argument
 const char* slicingName(Slicing slicing);
 
 struct ClusterGridConfig {
-    // The defaults: 48 x 27 x 32 at 16:9 measured fastest of six grids on an H200 at 65,536 and
-    // 1,048,576 lights (docs/bench/nvidia-h200/grid-sweep.md).
-    std::uint32_t tilesX = 48;
-    std::uint32_t slices = 32;
+    // The defaults: 32 x 18 x 48 at 16:9, of six grids on an H200 the fastest at 65,536 lights
+    // (with 32 x 64) and among the fastest at 1,048,576 once the list sort got cheaper
+    // (docs/bench/nvidia-h200/grid-sweep-2/README.md).
+    std::uint32_t tilesX = 32;
+    std::uint32_t slices = 48;
     Slicing slicing = Slicing::Fitted;
     std::uint32_t workgroup = 64;  // light-assignment compute workgroup size
 };

@@ -17,7 +17,7 @@
 // Every assignment tests pairs with the --cull test. With --normal-cones a list belongs to a
 // (cluster, normal bin) key, cluster * ML_NORMAL_BINS + bin; the per-list buffers (counts,
 // offsets, cursors: 12 B) grow 24-fold, and each list keeps the cone of its samples' normals
-// (16 B): 28 B x 24 per cluster, 26 MiB for 48 x 27 x 32 clusters.
+// (16 B): 28 B x 24 per cluster, 17.7 MiB for 32 x 18 x 48 clusters.
 //
 // Memory per cluster: count, offset, fill cursor, active flag (4 B each) and an AABB (32 B):
 // 48 B, so 32 x 18 x 24 clusters take 648 KiB. Exact lists take 4 B per light reference;
