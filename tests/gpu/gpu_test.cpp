@@ -148,8 +148,8 @@ ImageDifference expectWithinContract(const FrameRenderer& renderer, const Refere
     const RgbaImage ldr = renderer.readLdr();
     const ImageDifference ldrDiff = compareImages(ldr, reference.ldr);
     std::printf("%-50s max8 %.4f  psnr %.1f dB\n", label.c_str(), ldrDiff.maxAbs * 255.0, hdr.psnrDb);
-    EXPECT_LE(ldrDiff.maxAbs, kContractMaxAbs8Bit) << label << ": images in " << writeFailureImages(imageName.empty() ? label : imageName, ldr, reference.ldr);
-    EXPECT_GE(hdr.psnrDb, kContractMinPsnrDb) << label;
+    EXPECT_LE(ldrDiff.maxAbs, kMaxAbs8Bit) << label << ": images in " << writeFailureImages(imageName.empty() ? label : imageName, ldr, reference.ldr);
+    EXPECT_GE(hdr.psnrDb, kMinPsnrDb) << label;
     return hdr;
 }
 

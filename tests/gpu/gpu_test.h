@@ -67,11 +67,6 @@ FrameSettings smallFrame(const Scene& scene, int width, int height);
 // The same from `pose`, the lights still (a scene built in a test has no suggested view).
 FrameSettings smallFrame(const Scene& scene, const CameraPose& pose, int width, int height);
 
-// The accuracy contract against naive (design.md): max 1/255 on the 8-bit output, PSNR >= 50 dB
-// on the float output.
-inline constexpr double kContractMaxAbs8Bit = 1.0 / 255.0 + 1e-9;
-inline constexpr double kContractMinPsnrDb = 50.0;
-
 // The reference frame a renderer's output is held to.
 struct ReferenceFrame {
     FloatImage hdr;
