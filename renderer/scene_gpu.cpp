@@ -7,6 +7,7 @@
 
 #include "glsl/include/bindings.h"
 #include "renderer/gpu_types.h"
+#include "renderer/shading_reference.h"
 
 namespace ml {
 namespace {
@@ -53,10 +54,12 @@ SceneGpu::SceneGpu(const Scene& scene) : draws_(scene.draws), indexCount_(scene.
 
     std::vector<GpuMaterial> materials;
     for (const Material& m : scene.materials) {
-        const bool textured = m.baseColorTexture >= 0 && m.baseColorTexture < static_cast<int>(textures_.size());
-        materials.push_back({m.baseColorFactor, glm::vec4(m.specularStrength, m.shininess, textured ? 1.0f : 0.0f,
-                                                          textured ? float(m.baseColorTexture) : -1.0f)});
-        materialTexture_.push_back(textured ? m.baseColorTexture : -1);
+        const int texture = m.baseColorTexture.image;
+        const bool textured = texture >= 0 && texture < static_cast<int>(textures_.size());
+        const ShadingTerms t = shadingTerms(glm::vec3(m.baseColorFactor), m.metallic, m.roughness);
+        materials.push_back({m.baseColorFactor, glm::vec4(t.specular.x, t.shininess, textured ? 1.0f : 0.0f,
+                                                          textured ? float(texture) : -1.0f)});
+        materialTexture_.push_back(textured ? texture : -1);
         materialDoubleSided_.push_back(m.doubleSided ? 1 : 0);
     }
     if (materials.empty()) materials.push_back({glm::vec4(1.0f), glm::vec4(0.25f, 32.0f, 0.0f, -1.0f)});

@@ -1125,6 +1125,8 @@ Material SceneBuilder::convertMaterial(std::size_t index) {
     // The spec bounds each factor to [0, 1]; clamping keeps a stray value from blowing out shading.
     m.baseColorFactor = glm::clamp(glm::vec4(glm::dvec4(f[0], f[1], f[2], f[3])), 0.0f, 1.0f);
     m.doubleSided = source.doubleSided;
+    m.metallic = static_cast<float>(std::clamp(source.pbrMetallicRoughness.metallicFactor, 0.0, 1.0));
+    m.roughness = static_cast<float>(std::clamp(source.pbrMetallicRoughness.roughnessFactor, 0.0, 1.0));
 
     const tinygltf::TextureInfo& info = source.pbrMetallicRoughness.baseColorTexture;
     if (info.index < 0) return m;
@@ -1144,7 +1146,7 @@ Material SceneBuilder::convertMaterial(std::size_t index) {
         fail(path_, named("textures", static_cast<std::size_t>(info.index), model_.textures[static_cast<std::size_t>(info.index)].name) +
                         ": source image index " + std::to_string(image) + " out of range (" +
                         std::to_string(model_.images.size()) + " images)");
-    m.baseColorTexture = imageFor(static_cast<std::size_t>(image));
+    m.baseColorTexture.image = imageFor(static_cast<std::size_t>(image));
     return m;
 }
 

@@ -24,8 +24,8 @@ struct MaterialSpec {
     const char* name;
     glm::vec4 baseColor;
     int texture;          // index into the scene's images, or -1
-    float specular;
-    float shininess;
+    float metallic;
+    float roughness;
     float metresPerRepeat;  // world size of one texture repeat
     // Drawn without back-face culling: thin sheets whose open edges show their back faces.
     bool doubleSided = false;
@@ -38,9 +38,9 @@ void addMaterials(Scene& scene, MeshBuilder& mb, const std::vector<MaterialSpec>
         Material m;
         m.name = s.name;
         m.baseColorFactor = s.baseColor;
-        m.baseColorTexture = s.texture;
-        m.specularStrength = s.specular;
-        m.shininess = s.shininess;
+        m.baseColorTexture.image = s.texture;
+        m.metallic = s.metallic;
+        m.roughness = s.roughness;
         m.doubleSided = s.doubleSided;
         scene.materials.push_back(m);
         mb.setUvScale(static_cast<std::uint32_t>(i), 1.0f / s.metresPerRepeat);
@@ -550,19 +550,19 @@ void addBanners(MeshBuilder& mb, const Tess& tess) {
 
 std::vector<MaterialSpec> atriumMaterials() {
     std::vector<MaterialSpec> m(kAtriumMaterialCount);
-    m[kFloor] = {"floor_tiles", {1.0f, 1.0f, 1.0f, 1.0f}, kImgFloor, 0.30f, 40.0f, 4.0f};
-    m[kColumnMarble] = {"column_marble", {0.95f, 0.92f, 0.85f, 1.0f}, kImgMarble, 0.45f, 64.0f, 1.5f};
-    m[kStone] = {"stone_blocks", {0.95f, 0.90f, 0.82f, 1.0f}, kImgStone, 0.15f, 20.0f, 2.4f};
-    m[kPlaster] = {"plaster_wall", {1.0f, 0.95f, 0.88f, 1.0f}, kImgPlaster, 0.08f, 10.0f, 3.0f};
-    m[kFabricRed] = {"fabric_red", {0.70f, 0.05f, 0.04f, 1.0f}, kImgFabric, 0.06f, 8.0f, 0.5f, true};
-    m[kFabricGreen] = {"fabric_green", {0.06f, 0.40f, 0.10f, 1.0f}, kImgFabric, 0.06f, 8.0f, 0.5f, true};
-    m[kFabricBlue] = {"fabric_blue", {0.05f, 0.12f, 0.55f, 1.0f}, kImgFabric, 0.06f, 8.0f, 0.5f, true};
-    m[kBronze] = {"bronze", {0.62f, 0.42f, 0.20f, 1.0f}, -1, 0.90f, 128.0f, 1.0f};
-    m[kWater] = {"water", {0.04f, 0.14f, 0.18f, 1.0f}, -1, 1.00f, 256.0f, 1.0f};
-    m[kWood] = {"wood", {1.0f, 1.0f, 1.0f, 1.0f}, kImgWood, 0.12f, 16.0f, 2.0f};
-    m[kPolishedMarble] = {"polished_marble", {1.0f, 1.0f, 1.0f, 1.0f}, kImgMarble, 0.80f, 96.0f, 1.0f};
-    m[kGlazedOchre] = {"glazed_ochre", {0.80f, 0.45f, 0.08f, 1.0f}, -1, 0.60f, 80.0f, 1.0f};
-    m[kDarkStone] = {"dark_stone", {0.30f, 0.29f, 0.27f, 1.0f}, kImgMarble, 0.35f, 48.0f, 1.0f};
+    m[kFloor] = {"floor_tiles", {1.0f, 1.0f, 1.0f, 1.0f}, kImgFloor, 0.0f, 0.47f, 4.0f};
+    m[kColumnMarble] = {"column_marble", {0.95f, 0.92f, 0.85f, 1.0f}, kImgMarble, 0.0f, 0.42f, 1.5f};
+    m[kStone] = {"stone_blocks", {0.95f, 0.90f, 0.82f, 1.0f}, kImgStone, 0.0f, 0.55f, 2.4f};
+    m[kPlaster] = {"plaster_wall", {1.0f, 0.95f, 0.88f, 1.0f}, kImgPlaster, 0.0f, 0.64f, 3.0f};
+    m[kFabricRed] = {"fabric_red", {0.70f, 0.05f, 0.04f, 1.0f}, kImgFabric, 0.0f, 0.67f, 0.5f, true};
+    m[kFabricGreen] = {"fabric_green", {0.06f, 0.40f, 0.10f, 1.0f}, kImgFabric, 0.0f, 0.67f, 0.5f, true};
+    m[kFabricBlue] = {"fabric_blue", {0.05f, 0.12f, 0.55f, 1.0f}, kImgFabric, 0.0f, 0.67f, 0.5f, true};
+    m[kBronze] = {"bronze", {0.62f, 0.42f, 0.20f, 1.0f}, -1, 1.0f, 0.35f, 1.0f};
+    m[kWater] = {"water", {0.04f, 0.14f, 0.18f, 1.0f}, -1, 0.0f, 0.30f, 1.0f};
+    m[kWood] = {"wood", {1.0f, 1.0f, 1.0f, 1.0f}, kImgWood, 0.0f, 0.58f, 2.0f};
+    m[kPolishedMarble] = {"polished_marble", {1.0f, 1.0f, 1.0f, 1.0f}, kImgMarble, 0.0f, 0.38f, 1.0f};
+    m[kGlazedOchre] = {"glazed_ochre", {0.80f, 0.45f, 0.08f, 1.0f}, -1, 0.0f, 0.40f, 1.0f};
+    m[kDarkStone] = {"dark_stone", {0.30f, 0.29f, 0.27f, 1.0f}, kImgMarble, 0.0f, 0.45f, 1.0f};
     return m;
 }
 
@@ -633,7 +633,7 @@ Scene makePlane() {
     Scene scene;
     scene.name = "plane";
     MeshBuilder mb(1);
-    addMaterials(scene, mb, {{"white", {0.8f, 0.8f, 0.8f, 1.0f}, -1, 0.25f, 32.0f, 1.0f}});
+    addMaterials(scene, mb, {{"white", {0.8f, 0.8f, 0.8f, 1.0f}, -1, 0.0f, 0.49f, 1.0f}});
     addGround(mb, 0, 20.0f);
     finish(scene, mb);
     scene.suggestedView = CameraPose{glm::vec3(0.0f, 10.0f, 14.0f), glm::vec3(0.0f), 60.0f};
@@ -645,12 +645,12 @@ Scene makeBoxes() {
     scene.name = "boxes";
     MeshBuilder mb(6);
     addMaterials(scene, mb,
-                 {{"ground", {0.8f, 0.8f, 0.8f, 1.0f}, -1, 0.20f, 24.0f, 1.0f},
-                  {"red", {0.75f, 0.08f, 0.06f, 1.0f}, -1, 0.30f, 32.0f, 1.0f},
-                  {"green", {0.10f, 0.60f, 0.15f, 1.0f}, -1, 0.30f, 32.0f, 1.0f},
-                  {"blue", {0.08f, 0.18f, 0.75f, 1.0f}, -1, 0.50f, 64.0f, 1.0f},
-                  {"yellow", {0.85f, 0.70f, 0.10f, 1.0f}, -1, 0.40f, 48.0f, 1.0f},
-                  {"white", {0.90f, 0.90f, 0.90f, 1.0f}, -1, 0.80f, 128.0f, 1.0f}});
+                 {{"ground", {0.8f, 0.8f, 0.8f, 1.0f}, -1, 0.0f, 0.53f, 1.0f},
+                  {"red", {0.75f, 0.08f, 0.06f, 1.0f}, -1, 0.0f, 0.49f, 1.0f},
+                  {"green", {0.10f, 0.60f, 0.15f, 1.0f}, -1, 0.0f, 0.49f, 1.0f},
+                  {"blue", {0.08f, 0.18f, 0.75f, 1.0f}, -1, 0.0f, 0.42f, 1.0f},
+                  {"yellow", {0.85f, 0.70f, 0.10f, 1.0f}, -1, 0.0f, 0.45f, 1.0f},
+                  {"white", {0.90f, 0.90f, 0.90f, 1.0f}, -1, 0.0f, 0.35f, 1.0f}});
     addGround(mb, 0, 20.0f);
     // Boxes stand on the ground; their bottoms are never seen and are left out.
     const unsigned noBottom = 0x3fu & ~0x4u;

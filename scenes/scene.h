@@ -1,8 +1,10 @@
 // The scene model: only what shading needs (design.md, "Modelling no more than a scene needs").
 //
 // Geometry is flattened to world space at load time: one vertex array, one index array, and a
-// list of draw ranges that each name a material. Skins, morphs, animation, cameras and lights
-// of a glTF file are not modelled; the loader skips them with one warning each.
+// list of draw ranges that each name a material. Optional vertex streams (tangents, a second UV
+// set, vertex colours) exist only when a material or primitive asks for them, so a scene that
+// uses none of them uploads and reads what it did before. Skins, morphs, animation and lights of
+// a glTF file are not modelled; the loader skips them with one warning each.
 #pragma once
 
 #include <cstdint>
@@ -24,23 +26,69 @@ struct Vertex {
 };
 static_assert(sizeof(Vertex) == 32, "Vertex is uploaded as-is; keep it tightly packed");
 
-// An 8-bit RGBA image whose colour channels are sRGB-encoded (glTF baseColorTexture).
+// An 8-bit RGBA image. Colour images (base colour, emissive) are sRGB-encoded and sampled as
+// linear through sRGB storage; data images (normal, metallic-roughness, occlusion) are linear.
+// An image used both ways is held twice, once per colour space.
 struct Image {
     std::string name;
     int width = 0;
     int height = 0;
     std::vector<std::uint8_t> rgba8;  // width * height * 4 bytes, rows top to bottom
+    bool srgb = true;
 };
 
+// glTF sampler: filters and wrap modes, with the GL enum values glTF itself uses.
+struct Sampler {
+    int magFilter = 0x2601;  // GL_LINEAR
+    int minFilter = 0x2703;  // GL_LINEAR_MIPMAP_LINEAR
+    int wrapS = 0x2901;      // GL_REPEAT
+    int wrapT = 0x2901;
+    bool operator==(const Sampler&) const = default;
+};
+
+// KHR_texture_transform: uv' = T(offset) * R(rotation) * S(scale) * uv.
+struct TextureTransform {
+    glm::vec2 offset{0.0f};
+    float rotation = 0.0f;  // radians, counter-clockwise in UV space as glTF defines it
+    glm::vec2 scale{1.0f};
+    bool isIdentity() const { return offset == glm::vec2(0.0f) && rotation == 0.0f && scale == glm::vec2(1.0f); }
+};
+
+// One texture a material reads: which image, sampled how, through which UV set.
+struct TextureRef {
+    int image = -1;    // index into Scene::images, or -1: the material has no such texture
+    int sampler = -1;  // index into Scene::samplers, or -1: glTF's default (linear, mipmapped, repeat)
+    int texCoord = 0;  // 0: TEXCOORD_0 (Vertex::uv), 1: TEXCOORD_1 (Scene::uv1)
+    TextureTransform transform;
+    bool present() const { return image >= 0; }
+};
+
+// glTF's alphaMode. BLEND is drawn as MASK at 0.5 (with a warning) until transparency exists.
+enum class AlphaMode { Opaque, Mask, Blend };
+
+// A glTF metallic-roughness material (README, "Shading model", says how it is shaded).
 struct Material {
     std::string name;
     glm::vec4 baseColorFactor{1.0f};  // linear
-    int baseColorTexture = -1;        // index into Scene::images, or -1
-    float specularStrength = 0.25f;   // Blinn-Phong specular weight
-    float shininess = 32.0f;          // Blinn-Phong exponent
+    TextureRef baseColorTexture;      // sRGB; alpha is coverage
+    // Defaults are a plain dielectric for procedural scenes; the glTF loader always sets both
+    // from the file (whose own defaults are 1 and 1).
+    float metallic = 0.0f;
+    float roughness = 0.5f;
+    TextureRef metallicRoughnessTexture;  // linear; B is metallic, G is roughness
+    TextureRef normalTexture;             // linear, tangent space
+    float normalScale = 1.0f;
+    TextureRef occlusionTexture;          // linear; R is ambient occlusion
+    float occlusionStrength = 1.0f;
+    glm::vec3 emissive{0.0f};             // linear emissiveFactor times KHR_materials_emissive_strength
+    TextureRef emissiveTexture;           // sRGB
+    AlphaMode alphaMode = AlphaMode::Opaque;
+    float alphaCutoff = 0.5f;             // MASK (and BLEND, for now): drawn where alpha >= cutoff
     // glTF's doubleSided: false (the default) lets raster passes cull back faces, true draws
     // both sides (lit with the normal as given, as glTF asks for no flipping here).
     bool doubleSided = false;
+
+    bool alphaTested() const { return alphaMode != AlphaMode::Opaque; }
 };
 
 // A contiguous run of triangles (3 indices each) drawn with one material.
@@ -70,6 +118,15 @@ struct CameraPose {
     float fovyDegrees = 60.0f;
 };
 
+// A perspective camera a glTF file defines, placed by its node's world transform.
+struct SceneCamera {
+    std::string name;
+    CameraPose pose;
+    glm::vec3 up{0.0f, 1.0f, 0.0f};  // the node's +y: a rolled camera stays rolled
+    float nearPlane = 0.0f;          // glTF znear
+    float farPlane = 0.0f;           // glTF zfar, 0 where the file gives none (infinite)
+};
+
 struct Scene {
     std::string name;
     std::vector<Vertex> vertices;
@@ -77,6 +134,12 @@ struct Scene {
     std::vector<DrawRange> draws;
     std::vector<Material> materials;
     std::vector<Image> images;
+    std::vector<Sampler> samplers;
+    // Optional vertex streams: each is empty, or holds one element per vertex.
+    std::vector<glm::vec4> tangents;  // xyz world-space unit tangent, w the bitangent's sign (+-1)
+    std::vector<glm::vec2> uv1;       // TEXCOORD_1
+    std::vector<glm::vec4> colors;    // COLOR_0, linear RGBA (1 where a primitive has none)
+    std::vector<SceneCamera> cameras;        // a glTF file's cameras, in the file's order
     Bounds bounds;                           // of all vertex positions
     std::optional<CameraPose> suggestedView; // procedural scenes set one; glTF derives from bounds
 

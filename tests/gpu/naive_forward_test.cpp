@@ -15,7 +15,7 @@ TEST_F(NaiveForwardTest, MatchesTheFormulaOnThePlane) {
     const Scene plane = makePlane();
     ASSERT_FALSE(plane.materials.empty());
     const Material& m = plane.materials[plane.draws.at(0).material];
-    ASSERT_LT(m.baseColorTexture, 0) << "this test assumes an untextured plane";
+    ASSERT_FALSE(m.baseColorTexture.present()) << "this test assumes an untextured plane";
 
     std::vector<PointLight> lights{
         {{0.0f, 1.0f, 0.0f}, 4.0f, {1.0f, 0.5f, 0.25f}},
@@ -55,7 +55,7 @@ TEST_F(NaiveForwardTest, MatchesTheFormulaOnThePlane) {
                 }
                 continue;
             }
-            SurfaceSample sample{p, {0, 1, 0}, glm::vec3(m.baseColorFactor), m.specularStrength, m.shininess};
+            SurfaceSample sample{p, {0, 1, 0}, glm::vec3(m.baseColorFactor), m.metallic, m.roughness};
             const glm::vec3 expected = shadeReference(sample, s.camera.eye, lights, s.ambient);
             for (int c = 0; c < 3; ++c)
                 EXPECT_NEAR(gpu[c], expected[c], 2e-3f + 2e-3f * expected[c]) << "pixel " << x << "," << y << " channel " << c;

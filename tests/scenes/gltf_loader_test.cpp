@@ -300,7 +300,7 @@ TEST(GltfLoader, IndexedMeshIsFlattenedToWorldSpace) {
     EXPECT_EQ(scene.draws[0].indexCount, 6u);
     ASSERT_EQ(scene.materials.size(), 1u);
     EXPECT_EQ(scene.materials[0].baseColorFactor, glm::vec4(1.0f));
-    EXPECT_EQ(scene.materials[0].baseColorTexture, -1);
+    EXPECT_EQ(scene.materials[0].baseColorTexture.image, -1);
     expectNear(scene.bounds.min, {0, 0, -2});
     expectNear(scene.bounds.max, {10, 6, 0});
 }
@@ -418,7 +418,7 @@ TEST(GltfLoader, BaseColorTextureFromPngDataUri) {
     EXPECT_EQ(scene.images[0].height, 2);
     EXPECT_EQ(scene.images[0].rgba8, pixels);  // sRGB bytes as stored, top row first
     ASSERT_EQ(scene.materials.size(), 1u);
-    EXPECT_EQ(scene.materials[0].baseColorTexture, 0);
+    EXPECT_EQ(scene.materials[0].baseColorTexture.image, 0);
 }
 
 TEST(GltfLoader, GlbWithBinChunkAndImageInBufferView) {
@@ -561,7 +561,7 @@ TEST(GltfLoaderWarnings, UndecodableImageBecomesWhite) {
     EXPECT_EQ(scene.images[0].width, 1);
     EXPECT_EQ(scene.images[0].height, 1);
     EXPECT_EQ(scene.images[0].rgba8, (std::vector<std::uint8_t>{255, 255, 255, 255}));
-    EXPECT_EQ(scene.materials[0].baseColorTexture, 0);
+    EXPECT_EQ(scene.materials[0].baseColorTexture.image, 0);
     EXPECT_EQ(scene.triangleCount(), 1u);
 }
 

@@ -54,14 +54,16 @@ void expectValidScene(const Scene& s) {
     EXPECT_EQ(drawMaterials.size(), s.draws.size()) << "geometry should be grouped: one draw range per material";
 
     for (const Material& m : s.materials) {
-        EXPECT_TRUE(m.baseColorTexture == -1 || (m.baseColorTexture >= 0 && m.baseColorTexture < int(s.images.size())))
+        EXPECT_TRUE(m.baseColorTexture.image == -1 || (m.baseColorTexture.image >= 0 && m.baseColorTexture.image < int(s.images.size())))
             << m.name;
         for (int c = 0; c < 4; ++c) {
             EXPECT_GE(m.baseColorFactor[c], 0.0f) << m.name;
             EXPECT_LE(m.baseColorFactor[c], 1.0f) << m.name;
         }
-        EXPECT_GE(m.specularStrength, 0.0f) << m.name;
-        EXPECT_GT(m.shininess, 0.0f) << m.name;
+        EXPECT_GE(m.metallic, 0.0f) << m.name;
+        EXPECT_LE(m.metallic, 1.0f) << m.name;
+        EXPECT_GT(m.roughness, 0.0f) << m.name;
+        EXPECT_LE(m.roughness, 1.0f) << m.name;
         EXPECT_FALSE(m.name.empty());
     }
     for (const Image& img : s.images) {
@@ -204,8 +206,8 @@ TEST(AtriumTest, HasSeveralMaterialsWithProceduralTextures) {
     std::size_t textured = 0;
     for (const Material& m : s.materials) {
         colours.insert({m.baseColorFactor.r, m.baseColorFactor.g, m.baseColorFactor.b});
-        speculars.insert(m.specularStrength);
-        if (m.baseColorTexture >= 0) ++textured;
+        speculars.insert(m.roughness);
+        if (m.baseColorTexture.present()) ++textured;
     }
     EXPECT_GE(colours.size(), 6u);
     EXPECT_GE(speculars.size(), 4u);
@@ -213,7 +215,7 @@ TEST(AtriumTest, HasSeveralMaterialsWithProceduralTextures) {
     // Every texture is used by some material, and every material by some draw.
     std::set<int> usedImages;
     for (const Material& m : s.materials)
-        if (m.baseColorTexture >= 0) usedImages.insert(m.baseColorTexture);
+        if (m.baseColorTexture.present()) usedImages.insert(m.baseColorTexture.image);
     EXPECT_EQ(usedImages.size(), s.images.size());
     EXPECT_EQ(s.draws.size(), s.materials.size());
 }
@@ -247,7 +249,7 @@ TEST(PlaneTest, IsATwentyMetreSquareFacingUp) {
     EXPECT_EQ(s.bounds.max, glm::vec3(10.0f, 0.0f, 10.0f));
     for (const Vertex& v : s.vertices) EXPECT_EQ(v.normal, glm::vec3(0.0f, 1.0f, 0.0f));
     ASSERT_EQ(s.materials.size(), 1u);
-    EXPECT_EQ(s.materials[0].baseColorTexture, -1);
+    EXPECT_EQ(s.materials[0].baseColorTexture.image, -1);
     EXPECT_TRUE(s.images.empty());
     EXPECT_GT(s.materials[0].baseColorFactor.r, 0.5f);
 }

@@ -42,24 +42,41 @@ TEST(ShadeReference, LightBehindTheSurfaceAddsNothing) {
 }
 
 TEST(ShadeReference, DiffuseDirectlyAbove) {
-    SurfaceSample s{{0, 0, 0}, {0, 1, 0}, {0.5f, 0.5f, 0.5f}, 0.0f, 32.0f};
+    SurfaceSample s{{0, 0, 0}, {0, 1, 0}, {0.5f, 0.5f, 0.5f}, 0.0f, 1.0f};
     const std::vector<PointLight> above{{{0.0f, 1.0f, 0.0f}, 10.0f, {2, 2, 2}}};
     const glm::vec3 c = shadeReference(s, {0, 5, 0}, above, 0.0f);
-    // W(1, 10) = (1 - 1e-4)^2 / 2; N.L = 1.
-    const float expected = 2.0f * (1.0f - 1e-4f) * (1.0f - 1e-4f) / 2.0f * 0.5f;
+    // W(1, 10) = (1 - 1e-4)^2 / 2; N.L = 1; roughness 1: shininess 1, N.H = 1, so the specular
+    // term is f0 (0.04) times (1 + 8) / 8.
+    const float expected = 2.0f * (1.0f - 1e-4f) * (1.0f - 1e-4f) / 2.0f * (0.5f + 0.04f * 9.0f / 8.0f);
     EXPECT_NEAR(c.r, expected, 1e-6f);
 }
 
 // --specular off: the highlight's Blinn-Phong term goes, the diffuse term stays exactly.
 TEST(ShadeReference, SpecularOffLeavesOnlyTheDiffuseTerm) {
-    SurfaceSample shiny{{0, 0, 0}, {0, 1, 0}, {0.5f, 0.5f, 0.5f}, 1.0f, 8.0f};
-    SurfaceSample matte = shiny;
-    matte.specularStrength = 0.0f;
+    SurfaceSample shiny{{0, 0, 0}, {0, 1, 0}, {0.5f, 0.5f, 0.5f}, 0.0f, 0.3f};
     const std::vector<PointLight> above{{{0.0f, 1.0f, 0.0f}, 10.0f, {2, 2, 2}}};
     const glm::vec3 on = shadeReference(shiny, {0, 5, 0}, above, 0.03f, true);
     const glm::vec3 off = shadeReference(shiny, {0, 5, 0}, above, 0.03f, false);
-    EXPECT_EQ(off, shadeReference(matte, {0, 5, 0}, above, 0.03f, true));
-    EXPECT_GT(on.r, off.r + 0.5f);  // the highlight, seen straight on: N.H = 1
+    const ShadingTerms t = shadingTerms(shiny.baseColor, shiny.metallic, shiny.roughness);
+    const float w = lightFalloff(1.0f, 10.0f);
+    EXPECT_NEAR(off.r, 0.03f * (0.5f + 0.04f) + 2.0f * w * 0.5f, 1e-6f);
+    EXPECT_NEAR(on.r - off.r, 2.0f * w * t.specular.r, 1e-4f * on.r);  // the highlight, seen straight on: N.H = 1
+    EXPECT_GT(on.r, off.r + 0.5f);
+}
+
+// The metallic-roughness mapping: dielectrics keep their colour in the diffuse term and a grey
+// 4 % reflectance; metals move all of it into the specular colour.
+TEST(ShadingTerms, MetallicRoughnessMapping) {
+    const glm::vec3 gold{1.0f, 0.78f, 0.34f};
+    const ShadingTerms dielectric = shadingTerms(gold, 0.0f, 0.5f);
+    EXPECT_EQ(dielectric.diffuse, gold);
+    EXPECT_EQ(dielectric.f0, glm::vec3(0.04f));
+    EXPECT_NEAR(dielectric.shininess, 2.0f / 0.0625f - 2.0f, 1e-3f);  // alpha = 0.25
+    const ShadingTerms metal = shadingTerms(gold, 1.0f, 0.5f);
+    EXPECT_EQ(metal.diffuse, glm::vec3(0.0f));
+    EXPECT_EQ(metal.f0, gold);
+    EXPECT_EQ(shadingTerms(gold, 0.0f, 1.0f).shininess, 1.0f);     // never pow(0, 0)
+    EXPECT_EQ(shadingTerms(gold, 0.0f, 0.0f).shininess, 8192.0f);  // a mirror, bounded
 }
 
 TEST(Tonemap, MapsZeroToZeroAndSaturatesBelowOne) {
