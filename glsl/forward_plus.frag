@@ -6,25 +6,21 @@
 #include "include/lights.glsl"
 #include "include/shading.glsl"
 #include "include/material.glsl"
-
-layout(location = 3) flat in uint v_materialIndex;  // scene.vert's per-draw attribute
+#include "include/scene_fragment.glsl"
 #include "include/cluster_grid.glsl"
 #include "include/normal_bins.glsl"
 #include "include/cluster_lists.glsl"
 #include "include/debug_views.glsl"
 
-layout(location = 0) in vec3 v_worldPos;
-layout(location = 1) in vec3 v_worldNormal;
-layout(location = 2) in vec2 v_uv;
 layout(location = 0) out vec4 o_color;
 
 void main() {
-    SurfacePoint s = surfaceFromMaterial(v_materialIndex, v_worldPos, v_worldNormal, v_uv);
+    SurfacePoint s = fragmentSurface();
     vec3 viewDir = normalize(u_cameraPos.xyz - s.position);
     float viewDepth = -(u_view * vec4(v_worldPos, 1.0)).z;
     uint cluster = clusterForFragment(gl_FragCoord.xy, viewDepth);
     uint view = grid.options.w;
     vec3 color = vec3(0.0);
-    if (view == ML_VIEW_SHADED || view == ML_VIEW_OVERFLOW) color = shadeAmbient(s) + shadeClusterLights(s, viewDir, cluster, viewDepth);
+    if (view == ML_VIEW_SHADED || view == ML_VIEW_OVERFLOW) color = shadeUnlit(s) + shadeClusterLights(s, viewDir, cluster, viewDepth);
     o_color = vec4(debugViewColor(view, s, cluster, viewDepth, color), 1.0);
 }

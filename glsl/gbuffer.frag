@@ -5,13 +5,9 @@
 #include "include/frame_uniforms.glsl"
 #include "include/shading.glsl"
 #include "include/material.glsl"
+#include "include/scene_fragment.glsl"
 #include "include/gbuffer_layout.glsl"
 
-layout(location = 3) flat in uint v_materialIndex;  // scene.vert's per-draw attribute
-
-layout(location = 0) in vec3 v_worldPos;
-layout(location = 1) in vec3 v_worldNormal;
-layout(location = 2) in vec2 v_uv;
 #if ML_GBUFFER_FLOAT_TARGETS == 0
 layout(location = 0) out uvec4 o_packed;
 #else
@@ -23,7 +19,7 @@ layout(location = 2) out vec4 o_target2;
 #endif
 
 void main() {
-    GBufferTexel t = encodeGBuffer(surfaceFromMaterial(v_materialIndex, v_worldPos, v_worldNormal, v_uv));
+    GBufferTexel t = encodeGBuffer(fragmentSurface());
 #if ML_GBUFFER_FLOAT_TARGETS == 0
     o_packed = t.bits;
 #else

@@ -5,18 +5,14 @@
 #include "include/lights.glsl"
 #include "include/shading.glsl"
 #include "include/material.glsl"
+#include "include/scene_fragment.glsl"
 
-layout(location = 3) flat in uint v_materialIndex;  // scene.vert's per-draw attribute
-
-layout(location = 0) in vec3 v_worldPos;
-layout(location = 1) in vec3 v_worldNormal;
-layout(location = 2) in vec2 v_uv;
 layout(location = 0) out vec4 o_color;
 
 void main() {
-    SurfacePoint s = surfaceFromMaterial(v_materialIndex, v_worldPos, v_worldNormal, v_uv);
+    SurfacePoint s = fragmentSurface();
     vec3 viewDir = normalize(u_cameraPos.xyz - s.position);
-    vec3 color = shadeAmbient(s);
+    vec3 color = shadeUnlit(s);
     uint n = lightCount();
     for (uint i = 0u; i < n; ++i) {
         color += shadePointLight(s, viewDir, lights[i].positionRadius, lights[i].color.rgb);

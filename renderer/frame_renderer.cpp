@@ -12,7 +12,7 @@ FrameRenderer::FrameRenderer(const Scene& scene, const std::vector<PointLight>& 
       lights_(lights),
       targets_(settings.width, settings.height, false),
       frameUniformBuffer_("frame.uniforms", sizeof(FrameUniforms)),
-      method_(createMethod(settings.method)),
+      method_(createMethod(settings.method, scene_.materialFeatures())),
       timer_(settings.timing, settings.clock, settings.readback) {
     targets_.setStencil(method_->needsStencil());
 }
@@ -25,7 +25,7 @@ void FrameRenderer::resize(int width, int height) {
 
 void FrameRenderer::setMethod(const MethodSettings& method) {
     settings_.method = method;
-    method_ = createMethod(method);
+    method_ = createMethod(method, scene_.materialFeatures());
     targets_.setStencil(method_->needsStencil());
 }
 

@@ -6,6 +6,8 @@
 
 #include <glm/glm.hpp>
 
+#include "glsl/include/bindings.h"
+
 namespace ml {
 
 // glsl/include/lights.glsl: struct Light (std430).
@@ -18,9 +20,12 @@ static_assert(sizeof(GpuLight) == 32);
 // glsl/include/material.glsl: struct Material (std430).
 struct alignas(16) GpuMaterial {
     glm::vec4 baseColorFactor;
-    glm::vec4 params;  // specular strength, shininess, has texture, unused
+    glm::vec4 emissiveCutoff;  // rgb emissive, a alpha cutoff
+    glm::vec4 factors;         // metallic, roughness, normal scale, occlusion strength
+    glm::uvec4 info;           // texture slot bits, TEXCOORD_1 slot bits, texture set + 1, unused
+    glm::vec4 uvTransforms[2 * ML_TEXTURE_SLOTS];  // per slot: mat2 columns, offset
 };
-static_assert(sizeof(GpuMaterial) == 32);
+static_assert(sizeof(GpuMaterial) == 64 + 32 * ML_TEXTURE_SLOTS);
 
 // glsl/include/frame_uniforms.glsl: FrameUniformsBlock (std140).
 struct alignas(16) FrameUniforms {

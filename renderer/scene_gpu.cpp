@@ -7,7 +7,7 @@
 
 #include "glsl/include/bindings.h"
 #include "renderer/gpu_types.h"
-#include "renderer/shading_reference.h"
+#include "renderer/material_features.h"
 
 namespace ml {
 namespace {
@@ -18,9 +18,49 @@ struct DrawElementsIndirectCommand {
 };
 static_assert(sizeof(DrawElementsIndirectCommand) == 20, "GL's indirect command layout");
 
+constexpr GLuint kSlotUnits[ML_TEXTURE_SLOTS] = {ML_TEX_BASE_COLOR, ML_TEX_METALLIC_ROUGHNESS, ML_TEX_NORMAL,
+                                                 ML_TEX_OCCLUSION, ML_TEX_EMISSIVE};
+
+// The texture slots whose shader path this scene compiles in (a slot whose feature is off is never sampled).
+std::array<const TextureRef*, ML_TEXTURE_SLOTS> sampledSlots(const Material& m, std::uint32_t features) {
+    std::array<const TextureRef*, ML_TEXTURE_SLOTS> slots{};
+    slots[ML_SLOT_BASE_COLOR] = &m.baseColorTexture;
+    if (features & ML_FEATURE_METALLIC_ROUGHNESS_MAP) slots[ML_SLOT_METALLIC_ROUGHNESS] = &m.metallicRoughnessTexture;
+    if (features & ML_FEATURE_NORMAL_MAP) slots[ML_SLOT_NORMAL] = &m.normalTexture;
+    if (features & ML_FEATURE_OCCLUSION_MAP) slots[ML_SLOT_OCCLUSION] = &m.occlusionTexture;
+    if ((features & ML_FEATURE_EMISSIVE_MAP) && m.emissive != glm::vec3(0.0f)) slots[ML_SLOT_EMISSIVE] = &m.emissiveTexture;
+    return slots;
+}
+
+void setSamplerParameters(GLuint sampler, const Sampler& s) {
+    glSamplerParameteri(sampler, GL_TEXTURE_MIN_FILTER, s.minFilter);
+    glSamplerParameteri(sampler, GL_TEXTURE_MAG_FILTER, s.magFilter);
+    glSamplerParameteri(sampler, GL_TEXTURE_WRAP_S, s.wrapS);
+    glSamplerParameteri(sampler, GL_TEXTURE_WRAP_T, s.wrapT);
+}
+
+gl::Handle<gl::SamplerDeleter> makeSampler(const std::string& name, const Sampler& s) {
+    GLuint id = 0;
+    glCreateSamplers(1, &id);
+    gl::label(GL_SAMPLER, id, name);
+    setSamplerParameters(id, s);
+    return gl::Handle<gl::SamplerDeleter>(id);
+}
+
+// An optional per-vertex stream at attribute `location` from vertex buffer binding `binding`.
+template <typename T>
+gl::Buffer vertexStream(GLuint vao, const char* label, const std::vector<T>& data, GLuint binding, GLuint location, GLint size) {
+    gl::Buffer buffer = gl::Buffer::fromSpan<T>(label, data, 0);
+    glVertexArrayVertexBuffer(vao, binding, buffer.id(), 0, sizeof(T));
+    glEnableVertexArrayAttrib(vao, location);
+    glVertexArrayAttribFormat(vao, location, size, GL_FLOAT, GL_FALSE, 0);
+    glVertexArrayAttribBinding(vao, location, binding);
+    return buffer;
+}
+
 }  // namespace
 
-SceneGpu::SceneGpu(const Scene& scene) : draws_(scene.draws), indexCount_(scene.indices.size()) {
+SceneGpu::SceneGpu(const Scene& scene) : features_(ml::materialFeatures(scene)), indexCount_(scene.indices.size()) {
     vertices_ = gl::Buffer::fromSpan<Vertex>("scene.vertices", scene.vertices, 0);
     indices_ = gl::Buffer::fromSpan<std::uint32_t>("scene.indices", scene.indices, 0);
 
@@ -37,56 +77,114 @@ SceneGpu::SceneGpu(const Scene& scene) : draws_(scene.draws), indexCount_(scene.
         glVertexArrayAttribFormat(vao, a, sizes[a], GL_FLOAT, GL_FALSE, offsets[a]);
         glVertexArrayAttribBinding(vao, a, 0);
     }
+    // The optional streams, only where the scene's features read them (scene.vert's locations 4-6).
+    const auto sized = [&](std::size_t n) { return n == scene.vertices.size(); };
+    if ((features_ & ML_FEATURE_NORMAL_MAP) && sized(scene.tangents.size()))
+        tangents_ = vertexStream(vao, "scene.tangents", scene.tangents, 2, 4, 4);
+    else
+        features_ &= ~std::uint32_t(ML_FEATURE_NORMAL_MAP);
+    if ((features_ & ML_FEATURE_UV1) && sized(scene.uv1.size())) uv1_ = vertexStream(vao, "scene.uv1", scene.uv1, 3, 5, 2);
+    else features_ &= ~std::uint32_t(ML_FEATURE_UV1);
+    if ((features_ & ML_FEATURE_VERTEX_COLOR) && sized(scene.colors.size()))
+        colors_ = vertexStream(vao, "scene.colors", scene.colors, 4, 6, 4);
+    else
+        features_ &= ~std::uint32_t(ML_FEATURE_VERTEX_COLOR);
 
-    // Base-colour textures: sRGB storage, so sampling returns linear values; full mip chains.
+    // Colour images in sRGB storage (sampling returns linear values), data images linear; full
+    // mip chains, filtered and wrapped by the material's sampler objects.
     for (const Image& image : scene.images) {
-        gl::Texture2D tex("texture." + image.name, GL_SRGB8_ALPHA8, image.width, image.height,
+        gl::Texture2D tex("texture." + image.name, image.srgb ? GL_SRGB8_ALPHA8 : GL_RGBA8, image.width, image.height,
                           gl::fullMipLevels(image.width, image.height));
         // Scene images are stored top row first; glTF UVs put v = 0 at the top, so upload as is.
         glTextureSubImage2D(tex.id(), 0, 0, 0, image.width, image.height, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba8.data());
         glGenerateTextureMipmap(tex.id());
-        tex.setSampling(GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR, GL_REPEAT);
         textures_.push_back(std::move(tex));
     }
+    for (std::size_t i = 0; i < scene.samplers.size(); ++i)
+        samplers_.push_back(makeSampler("sampler." + std::to_string(i), scene.samplers[i]));
+    defaultSampler_ = makeSampler("sampler.default", Sampler{});
     white_ = gl::Texture2D("texture.white", GL_SRGB8_ALPHA8, 1, 1);
     const std::uint8_t white[4] = {255, 255, 255, 255};
     glTextureSubImage2D(white_.id(), 0, 0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, white);
 
     std::vector<GpuMaterial> materials;
+    std::vector<int> materialSet;
+    std::map<TextureSet, int> setIndex;
     for (const Material& m : scene.materials) {
-        const int texture = m.baseColorTexture.image;
-        const bool textured = texture >= 0 && texture < static_cast<int>(textures_.size());
-        const ShadingTerms t = shadingTerms(glm::vec3(m.baseColorFactor), m.metallic, m.roughness);
-        materials.push_back({m.baseColorFactor, glm::vec4(t.specular.x, t.shininess, textured ? 1.0f : 0.0f,
-                                                          textured ? float(texture) : -1.0f)});
-        materialTexture_.push_back(textured ? texture : -1);
-        materialDoubleSided_.push_back(m.doubleSided ? 1 : 0);
+        GpuMaterial g{};
+        g.baseColorFactor = m.baseColorFactor;
+        // BLEND is drawn as MASK at 0.5 until transparency exists (the loader warns).
+        g.emissiveCutoff = glm::vec4(m.emissive, m.alphaMode == AlphaMode::Blend ? 0.5f : m.alphaCutoff);
+        g.factors = glm::vec4(m.metallic, m.roughness, m.normalScale, m.occlusionStrength);
+        TextureSet set{};
+        bool textured = false;
+        const auto slots = sampledSlots(m, features_);
+        for (int slot = 0; slot < ML_TEXTURE_SLOTS; ++slot) {
+            const UvAffine identity;
+            g.uvTransforms[2 * slot] = glm::vec4(identity.column0, identity.column1);
+            const TextureRef* ref = slots[slot];
+            if (ref == nullptr || !ref->present() || ref->image >= static_cast<int>(textures_.size())) continue;
+            const int sampler = ref->sampler >= 0 && ref->sampler < static_cast<int>(samplers_.size()) ? ref->sampler : -1;
+            set[slot] = {ref->image, sampler};
+            textured = true;
+            g.info.x |= 1u << slot;
+            if (ref->texCoord == 1 && (features_ & ML_FEATURE_UV1)) g.info.y |= 1u << slot;
+            const UvAffine a = uvAffine(ref->transform);
+            g.uvTransforms[2 * slot] = glm::vec4(a.column0, a.column1);
+            g.uvTransforms[2 * slot + 1] = glm::vec4(a.offset, 0.0f, 0.0f);
+        }
+        int index = -1;
+        if (textured) {
+            auto [it, added] = setIndex.try_emplace(set, static_cast<int>(textureSets_.size()));
+            if (added) textureSets_.push_back(set);
+            index = it->second;
+        }
+        g.info.z = static_cast<std::uint32_t>(index + 1);
+        materials.push_back(g);
+        materialSet.push_back(index);
     }
-    if (materials.empty()) materials.push_back({glm::vec4(1.0f), glm::vec4(0.25f, 32.0f, 0.0f, -1.0f)});
+    if (materials.empty()) {
+        GpuMaterial g{};
+        g.baseColorFactor = glm::vec4(1.0f);
+        g.factors = glm::vec4(0.0f, 0.5f, 1.0f, 1.0f);
+        materials.push_back(g);
+        materialSet.push_back(-1);
+    }
     materials_ = gl::Buffer::fromSpan<GpuMaterial>("scene.materials", materials, 0);
 
+    const auto materialOf = [&](const DrawRange& d) { return d.material < scene.materials.size() ? d.material : 0u; };
     std::vector<std::uint32_t> triangleMaterials(scene.indices.size() / 3, 0u);
-    for (const DrawRange& d : scene.draws) {
-        const std::uint32_t material = d.material < scene.materials.size() ? d.material : 0u;
-        std::fill_n(triangleMaterials.begin() + d.firstIndex / 3, d.indexCount / 3, material);
-    }
+    for (const DrawRange& d : scene.draws) std::fill_n(triangleMaterials.begin() + d.firstIndex / 3, d.indexCount / 3, materialOf(d));
     triangleMaterials_ = gl::Buffer::fromSpan<std::uint32_t>("scene.triangle-materials", triangleMaterials, 0);
 
-    // Draw ranges in (base-colour texture, sidedness) order, for both submissions: where
-    // surfaces tie in depth the first drawn wins, so direct and indirect must draw in the same
-    // order to give the same image. Range i is drawn with baseInstance i, so the per-draw
-    // attribute (divisor 1) reads element i.
+    // Draw ranges in group order (opaque before alpha-tested, then texture set, then sidedness),
+    // for both submissions: where surfaces tie in depth the first drawn wins, so direct and
+    // indirect must draw in the same order to give the same image. Range i is drawn with
+    // baseInstance i, so the per-draw attribute (divisor 1) reads element i.
     const auto groupOf = [&](const DrawRange& d) {
-        return std::pair(d.material < materialTexture_.size() ? materialTexture_[d.material] : -1, doubleSided(d));
+        const std::uint32_t m = materialOf(d);
+        DrawGroup g;
+        if (m < scene.materials.size()) {
+            g.alphaTested = scene.materials[m].alphaTested() && (features_ & ML_FEATURE_ALPHA_TEST);
+            g.doubleSided = scene.materials[m].doubleSided;
+        }
+        g.textureSet = materialSet[m];
+        return g;
     };
-    std::stable_sort(draws_.begin(), draws_.end(), [&](const DrawRange& a, const DrawRange& b) { return groupOf(a) < groupOf(b); });
+    draws_ = scene.draws;
+    std::stable_sort(draws_.begin(), draws_.end(), [&](const DrawRange& a, const DrawRange& b) { return groupOf(a).key() < groupOf(b).key(); });
     std::vector<glm::uvec2> params;
-    std::map<std::pair<int, bool>, std::vector<std::uint32_t>> byGroup;
+    std::vector<DrawElementsIndirectCommand> commands;
     for (std::uint32_t i = 0; i < draws_.size(); ++i) {
         const DrawRange& d = draws_[i];
-        const std::uint32_t material = d.material < materialTexture_.size() ? d.material : 0u;
-        params.emplace_back(material, d.firstIndex / 3);
-        byGroup[groupOf(d)].push_back(i);
+        params.emplace_back(materialOf(d), d.firstIndex / 3);
+        commands.push_back({d.indexCount, 1, d.firstIndex, 0, i});
+        const DrawGroup g = groupOf(d);
+        if (groups_.empty() || groups_.back().key() != g.key()) {
+            groups_.push_back(g);
+            groups_.back().firstRange = i;
+        }
+        ++groups_.back().rangeCount;
     }
     if (params.empty()) params.emplace_back(0u, 0u);
     drawParams_ = gl::Buffer::fromSpan<glm::uvec2>("scene.draw-params", params, 0);
@@ -95,12 +193,6 @@ SceneGpu::SceneGpu(const Scene& scene) : draws_(scene.draws), indexCount_(scene.
     glEnableVertexArrayAttrib(vao, 3);
     glVertexArrayAttribIFormat(vao, 3, 2, GL_UNSIGNED_INT, 0);
     glVertexArrayAttribBinding(vao, 3, 1);
-
-    std::vector<DrawElementsIndirectCommand> commands;
-    for (const auto& [group, ranges] : byGroup) {
-        groups_.push_back({group.first, group.second, static_cast<std::uint32_t>(commands.size()), static_cast<std::uint32_t>(ranges.size())});
-        for (std::uint32_t i : ranges) commands.push_back({draws_[i].indexCount, 1, draws_[i].firstIndex, 0, i});
-    }
     if (commands.empty()) commands.push_back({0, 0, 0, 0, 0});
     commands_ = gl::Buffer::fromSpan<DrawElementsIndirectCommand>("scene.draw-commands", commands, 0);
 }
@@ -115,8 +207,13 @@ const char* drawSubmissionName(DrawSubmission submission) {
     return submission == DrawSubmission::Indirect ? "indirect" : "direct";
 }
 
-void SceneGpu::bindGroupTexture(int texture) const {
-    glBindTextureUnit(ML_TEX_BASE_COLOR, texture >= 0 ? textures_[static_cast<std::size_t>(texture)].id() : white_.id());
+void SceneGpu::bindTextureSet(int set) const {
+    for (int slot = 0; slot < ML_TEXTURE_SLOTS; ++slot) {
+        const SlotBinding b = set >= 0 && set < static_cast<int>(textureSets_.size()) ? textureSets_[static_cast<std::size_t>(set)][slot]
+                                                                                     : SlotBinding{};
+        glBindTextureUnit(kSlotUnits[slot], b.texture >= 0 ? textures_[static_cast<std::size_t>(b.texture)].id() : white_.id());
+        glBindSampler(kSlotUnits[slot], b.sampler >= 0 ? samplers_[static_cast<std::size_t>(b.sampler)].id() : defaultSampler_.id());
+    }
 }
 
 std::size_t SceneGpu::drawCallsPerPass() const {
@@ -128,56 +225,47 @@ void SceneGpu::setCullState(bool doubleSided) const {
     else glDisable(GL_CULL_FACE);
 }
 
-void SceneGpu::draw() const {
-    glBindVertexArray(vao_.id());
-    materials_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_MATERIALS);
+void SceneGpu::drawGroups(std::size_t first, std::size_t end) const {
+    const std::uint32_t firstRange = groups_[first].firstRange;
+    const std::uint32_t endRange = groups_[end - 1].firstRange + groups_[end - 1].rangeCount;
     if (submission_ == DrawSubmission::Indirect) {
-        glBindBuffer(GL_DRAW_INDIRECT_BUFFER, commands_.id());
-        for (const TextureGroup& g : groups_) {
-            bindGroupTexture(g.texture);
-            setCullState(g.doubleSided);
-            glMultiDrawElementsIndirect(GL_TRIANGLES, GL_UNSIGNED_INT,
-                                        reinterpret_cast<const void*>(std::uintptr_t(g.firstCommand) * sizeof(DrawElementsIndirectCommand)),
-                                        static_cast<GLsizei>(g.commandCount), 0);
-        }
-        glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
-    } else {
-        for (std::uint32_t i = 0; i < draws_.size(); ++i) {
-            const DrawRange& d = draws_[i];
-            bindGroupTexture(d.material < materialTexture_.size() ? materialTexture_[d.material] : -1);
-            setCullState(doubleSided(d));
-            glDrawElementsInstancedBaseInstance(GL_TRIANGLES, static_cast<GLsizei>(d.indexCount), GL_UNSIGNED_INT,
-                                                reinterpret_cast<const void*>(std::uintptr_t(d.firstIndex) * sizeof(std::uint32_t)), 1, i);
-        }
+        glMultiDrawElementsIndirect(GL_TRIANGLES, GL_UNSIGNED_INT,
+                                    reinterpret_cast<const void*>(std::uintptr_t(firstRange) * sizeof(DrawElementsIndirectCommand)),
+                                    static_cast<GLsizei>(endRange - firstRange), 0);
+        return;
     }
-    glDisable(GL_CULL_FACE);
+    for (std::uint32_t i = firstRange; i < endRange; ++i) {
+        const DrawRange& d = draws_[i];
+        glDrawElementsInstancedBaseInstance(GL_TRIANGLES, static_cast<GLsizei>(d.indexCount), GL_UNSIGNED_INT,
+                                            reinterpret_cast<const void*>(std::uintptr_t(d.firstIndex) * sizeof(std::uint32_t)), 1, i);
+    }
 }
 
-void SceneGpu::drawUntextured() const {
+void SceneGpu::draw(const RasterProgram& program) const {
     glBindVertexArray(vao_.id());
-    if (submission_ == DrawSubmission::Indirect) {
-        // No textures here: one call per run of groups with the same cull state.
-        glBindBuffer(GL_DRAW_INDIRECT_BUFFER, commands_.id());
-        for (std::size_t first = 0; first < groups_.size();) {
-            std::size_t end = first + 1;
-            std::uint32_t commands = groups_[first].commandCount;
-            while (end < groups_.size() && groups_[end].doubleSided == groups_[first].doubleSided) commands += groups_[end++].commandCount;
-            setCullState(groups_[first].doubleSided);
-            glMultiDrawElementsIndirect(GL_TRIANGLES, GL_UNSIGNED_INT,
-                                        reinterpret_cast<const void*>(std::uintptr_t(groups_[first].firstCommand) * sizeof(DrawElementsIndirectCommand)),
-                                        static_cast<GLsizei>(commands), 0);
-            first = end;
+    materials_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_MATERIALS);
+    if (submission_ == DrawSubmission::Indirect) glBindBuffer(GL_DRAW_INDIRECT_BUFFER, commands_.id());
+    const gl::Program* current = nullptr;
+    for (std::size_t first = 0; first < groups_.size();) {
+        const DrawGroup& g = groups_[first];
+        const bool textured = program.readsMaterial() || g.alphaTested;
+        std::size_t end = first + 1;
+        // Without textures, one call covers every following group with the same cull state.
+        if (!textured)
+            while (end < groups_.size() && !groups_[end].alphaTested && groups_[end].doubleSided == g.doubleSided) ++end;
+        const gl::Program& variant = program.variant(g.alphaTested);
+        if (&variant != current) {
+            variant.use();
+            current = &variant;
         }
-        glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
-    } else {
-        for (std::uint32_t i = 0; i < draws_.size(); ++i) {
-            const DrawRange& d = draws_[i];
-            setCullState(doubleSided(d));
-            glDrawElementsInstancedBaseInstance(GL_TRIANGLES, static_cast<GLsizei>(d.indexCount), GL_UNSIGNED_INT,
-                                                reinterpret_cast<const void*>(std::uintptr_t(d.firstIndex) * sizeof(std::uint32_t)), 1, i);
-        }
+        if (textured) bindTextureSet(g.textureSet);
+        setCullState(g.doubleSided);
+        drawGroups(first, end);
+        first = end;
     }
+    if (submission_ == DrawSubmission::Indirect) glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
     glDisable(GL_CULL_FACE);
+    for (GLuint unit : kSlotUnits) glBindSampler(unit, 0);
 }
 
 void SceneGpu::bindGeometryForCompute() const {
@@ -185,10 +273,14 @@ void SceneGpu::bindGeometryForCompute() const {
     indices_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_INDICES);
     triangleMaterials_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_TRIANGLE_MATERIALS);
     materials_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_MATERIALS);
+    if (tangents_) tangents_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_VERTEX_TANGENTS);
+    if (uv1_) uv1_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_VERTEX_UV1);
+    if (colors_) colors_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_VERTEX_COLORS);
 }
 
 std::size_t SceneGpu::bytes() const {
-    return vertices_.size() + indices_.size() + materials_.size() + triangleMaterials_.size();
+    return vertices_.size() + indices_.size() + materials_.size() + triangleMaterials_.size() + tangents_.size() + uv1_.size() +
+           colors_.size();
 }
 
 }  // namespace ml

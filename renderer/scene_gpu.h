@@ -1,21 +1,28 @@
 // A scene's geometry, materials and textures on the GPU, uploaded once.
 #pragma once
 
+#include <array>
+#include <cstdint>
 #include <string>
+#include <tuple>
 #include <vector>
+
+#include "glsl/include/bindings.h"
 
 #include "renderer/gl/buffer.h"
 #include "renderer/gl/program.h"
 #include "renderer/gl/texture.h"
+#include "renderer/raster_program.h"
 #include "scenes/scene.h"
 
 namespace ml {
 
 // How raster passes submit the scene (--draw): one glDrawElements call per draw range, or
 // multi-draw indirect, GL's counterpart of seed 001's render bundles: the draw ranges live in a
-// GPU command buffer and one glMultiDrawElementsIndirect call per base-colour texture draws
-// them all, so the CPU cost per pass follows the number of textures, not of meshes. (GL 4.5 core
-// has no bindless textures, so a texture change still needs its own call.)
+// GPU command buffer and one glMultiDrawElementsIndirect call per draw group (texture set,
+// alpha test, sidedness) draws them all, so the CPU cost per pass follows the number of texture
+// sets, not of meshes. (GL 4.5 core has no bindless textures, so a texture change still needs
+// its own call.)
 enum class DrawSubmission { Direct, Indirect };
 DrawSubmission parseDrawSubmission(const std::string& text);  // throws std::invalid_argument
 const char* drawSubmissionName(DrawSubmission submission);
@@ -23,6 +30,10 @@ const char* drawSubmissionName(DrawSubmission submission);
 class SceneGpu {
 public:
     explicit SceneGpu(const Scene& scene);
+
+    // ML_FEATURE_* bits of what the drawn materials use (renderer/material_features.h): every
+    // program that reads a material or a G-buffer is built with them.
+    std::uint32_t materialFeatures() const { return features_; }
 
     // Every raster pass draws through scene.vert, whose per-draw attribute (location 3, one
     // value per draw range through the instance divisor and baseInstance) carries the range's
@@ -34,50 +45,63 @@ public:
     // methods still see the same surfaces.
     void setBackfaceCulling(bool on) { backfaceCulling_ = on; }
     bool backfaceCulling() const { return backfaceCulling_; }
-    // Draws every draw range with the current program, binding each range's base-colour texture.
-    void draw() const;
-    // Draws every range without binding textures: depth-only passes, and the visibility
-    // buffer's raster pass (which writes v_firstTriangle + gl_PrimitiveID, the triangle's
-    // index in the scene).
-    void drawUntextured() const;
-    // Draw calls one textured raster pass issues with the current submission.
+    // Draws every draw range: opaque ranges first with the program's opaque variant, then the
+    // alpha-tested ones with its masked variant. Textures are bound where the program reads the
+    // material, and for masked ranges always (coverage needs the base colour's alpha).
+    void draw(const RasterProgram& program) const;
+    // Draw calls one pass issues with the current submission.
     std::size_t drawCallsPerPass() const;
     std::size_t drawRangeCount() const { return draws_.size(); }
 
     // For compute passes that rebuild surfaces from triangle ids: vertices, indices, the
-    // material of every triangle, and the materials, at their ML_SSBO_* points.
+    // material of every triangle, the materials, and the optional vertex streams, at their
+    // ML_SSBO_* points.
     void bindGeometryForCompute() const;
-    // Base-colour textures: materials name them by index (GpuMaterial::params.w, -1 for none).
-    std::size_t textureCount() const { return textures_.size(); }
-    void bindTexture(std::size_t index, GLuint unit) const { glBindTextureUnit(unit, textures_.at(index).id()); }
+    // Texture sets: the distinct (texture, sampler) tuples over a material's slots. Materials name
+    // theirs (GpuMaterial::info.z); -1 is "no texture". Binds a set's textures at ML_TEX_*.
+    std::size_t textureSetCount() const { return textureSets_.size(); }
+    void bindTextureSet(int set) const;
 
     std::size_t triangleCount() const { return indexCount_ / 3; }
     std::size_t bytes() const;
 
 private:
+    // One texture unit's binding: image index into textures_ (-1: white) and sampler (-1: default).
+    struct SlotBinding {
+        int texture = -1;
+        int sampler = -1;
+        auto operator<=>(const SlotBinding&) const = default;
+    };
+    using TextureSet = std::array<SlotBinding, ML_TEXTURE_SLOTS>;
+
+    // Draw ranges with the same program variant, textures and cull state.
+    struct DrawGroup {
+        bool alphaTested = false;
+        int textureSet = -1;
+        bool doubleSided = false;
+        std::uint32_t firstRange = 0;  // into draws_ (and the indirect commands, in the same order)
+        std::uint32_t rangeCount = 0;
+        std::tuple<bool, int, bool> key() const { return {alphaTested, textureSet, doubleSided}; }
+    };
+
+    void setCullState(bool doubleSided) const;
+    void drawGroups(std::size_t first, std::size_t end) const;
+
     gl::Buffer vertices_;
     gl::Buffer indices_;
+    gl::Buffer tangents_, uv1_, colors_;  // optional streams: empty where the scene has none
     gl::Buffer materials_;
     gl::Buffer triangleMaterials_;  // 4 B per triangle
     gl::Handle<gl::VertexArrayDeleter> vao_;
     std::vector<gl::Texture2D> textures_;
+    std::vector<gl::Handle<gl::SamplerDeleter>> samplers_;
+    gl::Handle<gl::SamplerDeleter> defaultSampler_;
     gl::Texture2D white_;
-    // Indirect submission: one command per draw range, grouped by base-colour texture and
-    // sidedness (a multi-draw call has one cull state).
-    struct TextureGroup {
-        int texture = -1;  // -1: untextured (the white texture)
-        bool doubleSided = false;
-        std::uint32_t firstCommand = 0;
-        std::uint32_t commandCount = 0;
-    };
-    void bindGroupTexture(int texture) const;
-    bool doubleSided(const DrawRange& d) const { return d.material < materialDoubleSided_.size() && materialDoubleSided_[d.material]; }
-    void setCullState(bool doubleSided) const;
+    std::vector<TextureSet> textureSets_;
+    std::uint32_t features_ = 0;
 
-    std::vector<DrawRange> draws_;
-    std::vector<int> materialTexture_;
-    std::vector<std::uint8_t> materialDoubleSided_;
-    std::vector<TextureGroup> groups_;
+    std::vector<DrawRange> draws_;  // in group order
+    std::vector<DrawGroup> groups_;
     gl::Buffer drawParams_;  // per draw range: material, first triangle (8 B)
     gl::Buffer commands_;    // DrawElementsIndirectCommand per draw range, in group order (20 B)
     std::size_t indexCount_ = 0;

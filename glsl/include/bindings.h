@@ -34,6 +34,12 @@
 #define ML_SSBO_RADIX_VALUES_IN 21     // ...and their values
 #define ML_SSBO_RADIX_KEYS_OUT 22      // (...and scatters them here)
 #define ML_SSBO_RADIX_VALUES_OUT 23
+// The visibility resolve's optional vertex streams (Scene::tangents, uv1, colors). It runs before
+// any light assignment, and every pass binds what it reads before it runs, so these share the
+// radix sort's points.
+#define ML_SSBO_VERTEX_TANGENTS 20
+#define ML_SSBO_VERTEX_UV1 21
+#define ML_SSBO_VERTEX_COLORS 22
 #define ML_SSBO_RADIX_HISTOGRAMS 24    // digit counts per workgroup, digit-major, then their prefix sum
 #define ML_SSBO_ZBIN_PARAMS 25         // words per tile, visible lights
 #define ML_SSBO_ZBIN_RANGES 26         // per z-bin: first and last sorted index of the lights reaching it
@@ -46,8 +52,13 @@
 #define ML_SSBO_NORMAL_BIN_MASKS 31    // --normal-cones: per cluster, a bit per normal bin its visible samples fall in
 #define ML_SSBO_NORMAL_CONES 30        // --normal-cones: per (cluster, bin) list, the cone of its samples' normals
 
-// Texture units
+// Texture units. A material's textures, one unit per slot (ML_SLOT_*): ML_TEX_MATERIAL + slot,
+// except base colour, which kept unit 0.
 #define ML_TEX_BASE_COLOR 0
+#define ML_TEX_METALLIC_ROUGHNESS 6
+#define ML_TEX_NORMAL 7
+#define ML_TEX_OCCLUSION 8
+#define ML_TEX_EMISSIVE 9
 
 #define ML_TEX_DEPTH 1
 #define ML_TEX_GBUFFER0 2
@@ -61,6 +72,26 @@
 #define ML_IMG_GBUFFER0 2
 #define ML_IMG_GBUFFER1 3
 #define ML_IMG_GBUFFER2 4
+
+// A material's texture slots (Material::info bits, GpuMaterial::transforms).
+#define ML_SLOT_BASE_COLOR 0
+#define ML_SLOT_METALLIC_ROUGHNESS 1
+#define ML_SLOT_NORMAL 2
+#define ML_SLOT_OCCLUSION 3
+#define ML_SLOT_EMISSIVE 4
+#define ML_TEXTURE_SLOTS 5
+
+// What a scene's materials use (ML_MATERIAL_FEATURES, a bit mask): every shader that samples a
+// material is compiled with only these paths, so a scene that uses none of them pays nothing.
+#define ML_FEATURE_METALLIC_ROUGHNESS_MAP 1
+#define ML_FEATURE_NORMAL_MAP 2            // also the tangent stream
+#define ML_FEATURE_OCCLUSION_MAP 4
+#define ML_FEATURE_EMISSIVE 8
+#define ML_FEATURE_EMISSIVE_MAP 16
+#define ML_FEATURE_TEXTURE_TRANSFORM 32
+#define ML_FEATURE_UV1 64                  // some texture reads TEXCOORD_1
+#define ML_FEATURE_VERTEX_COLOR 128        // COLOR_0
+#define ML_FEATURE_ALPHA_TEST 256          // some material is MASK (or BLEND, drawn as MASK)
 
 // The light animation's compute workgroup size.
 #define ML_ANIMATE_WORKGROUP 256

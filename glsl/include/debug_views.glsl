@@ -39,7 +39,7 @@ vec3 debugViewColor(uint view, SurfacePoint s, uint cluster, float viewDepth, ve
         float grey = dot(shaded / (1.0 + shaded), vec3(0.3333));
         return over ? vec3(1.0, 0.0, 0.0) : vec3(grey);
     }
-    if (view == ML_VIEW_ALBEDO) return s.albedo;
+    if (view == ML_VIEW_ALBEDO) return s.baseColor;
     if (view == ML_VIEW_NORMAL) return s.normal * 0.5 + 0.5;
     if (view == ML_VIEW_DEPTH) {
         float n = grid.slicing.x, f = grid.slicing.y;

@@ -1,13 +1,20 @@
 // The --gbuffer layouts (gbuffer_format.h; numbered in bindings.h), chosen by the define
 // ML_GBUFFER_FORMAT. Encoded by the G-buffer pass and the visibility resolve, decoded by the
-// deferred lighting; position is never stored (it comes back from depth). Needs shading.glsl.
+// deferred lighting; position is never stored (it comes back from depth). What is stored is the
+// material at the point (shading.glsl's SurfacePoint before deriveShadingTerms). Needs
+// shading.glsl.
 //
-//   standard       target 0 RGBA16F normal xyz     target 1 RGBA16F albedo   target 2 RGBA16F ks, shininess   24 B
-//   packed         target 0 RGBA32UI: x octahedral normal (2 x snorm16), y albedo (sRGB-encoded RGBA8),
-//                  z ks and shininess (2 x half), w spare                                                      16 B
-//   two-component  target 0 RGBA16F normal x, y, ks, shininess   target 1 RGBA16F albedo                      16 B
+//   standard       target 0 RGBA16F normal xyz, occlusion   target 1 RGBA16F base colour, metallic
+//                  target 2 RGBA16F roughness, emissive rgb                                             24 B
+//   packed         target 0 RGBA32UI: x octahedral normal (2 x snorm16), y base colour (sRGB-encoded
+//                  RGB8) and metallic (unorm8), z roughness and occlusion (2 x unorm16),
+//                  w emissive (RGB9E5, written only where the scene has emissive materials)             16 B
+//   two-component  target 0 RGBA16F normal x, y, roughness, metallic   target 1 RGBA16F base colour,
+//                  occlusion; no room for emissive (the renderer warns where a scene has some).        16 B
 //                  z is rebuilt as +sqrt(1 - x^2 - y^2): every normal with z < 0 (world space) is mirrored
 //                  to z > 0, so surfaces facing -z are lit as if they faced +z. The documented failure case.
+#include "include/material_features.glsl"
+
 #ifndef ML_GBUFFER_FORMAT
 #define ML_GBUFFER_FORMAT ML_GBUFFER_STANDARD
 #endif
@@ -40,50 +47,84 @@ vec3 octDecode(vec2 e) {
     return normalize(n);
 }
 
-// Albedo is stored sRGB-encoded in 8 bits, as 8-bit colour textures are: the steps are even to
-// the eye, so dark albedos do not band (linear 8 bits would put 1/255 steps into the shadows).
+// Base colour is stored sRGB-encoded in 8 bits, as 8-bit colour textures are: the steps are even
+// to the eye, so dark colours do not band (linear 8 bits would put 1/255 steps into the shadows).
 vec3 encodeSrgb(vec3 c) {
     c = clamp(c, 0.0, 1.0);
     return mix(12.92 * c, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, step(vec3(0.0031308), c));
 }
 vec3 decodeSrgb(vec3 c) { return mix(c / 12.92, pow((c + 0.055) / 1.055, vec3(2.4)), step(vec3(0.04045), c)); }
 
+// RGB9E5 (GL's shared-exponent format, EXT_texture_shared_exponent): three 9-bit mantissas and a
+// 5-bit exponent in 32 bits, for emissive radiance, which is HDR. Relative error under 2^-9 of
+// the largest channel.
+uint packRgb9e5(vec3 c) {
+    const float kBias = 15.0, kMantissaBits = 9.0, kMaxValue = 65408.0;  // (511/512) * 2^16
+    vec3 rc = clamp(c, 0.0, kMaxValue);
+    float maxc = max(rc.r, max(rc.g, rc.b));
+    float exponent = max(-kBias - 1.0, floor(log2(max(maxc, 1e-30)))) + 1.0 + kBias;
+    float denom = exp2(exponent - kBias - kMantissaBits);
+    if (floor(maxc / denom + 0.5) >= 512.0) {
+        denom *= 2.0;
+        exponent += 1.0;
+    }
+    uvec3 m = uvec3(min(floor(rc / denom + 0.5), vec3(511.0)));
+    return m.r | (m.g << 9u) | (m.b << 18u) | (uint(exponent) << 27u);
+}
+vec3 unpackRgb9e5(uint v) {
+    vec3 m = vec3(uvec3(v, v >> 9u, v >> 18u) & 511u);
+    return m * exp2(float(v >> 27u) - 15.0 - 9.0);
+}
+
 GBufferTexel encodeGBuffer(SurfacePoint s) {
     GBufferTexel t;
     t.target[0] = t.target[1] = t.target[2] = vec4(0.0);
     t.bits = uvec4(0u);
 #if ML_GBUFFER_FORMAT == ML_GBUFFER_STANDARD
-    t.target[0] = vec4(s.normal, 0.0);
-    t.target[1] = vec4(s.albedo, 1.0);
-    t.target[2] = vec4(s.specularStrength, s.shininess, 0.0, 0.0);
+    t.target[0] = vec4(s.normal, s.occlusion);
+    t.target[1] = vec4(s.baseColor, s.metallic);
+    t.target[2] = vec4(s.roughness, s.emissive);
 #elif ML_GBUFFER_FORMAT == ML_GBUFFER_PACKED
-    t.bits = uvec4(packSnorm2x16(octEncode(s.normal)), packUnorm4x8(vec4(encodeSrgb(s.albedo), 1.0)),
-                     packHalf2x16(vec2(s.specularStrength, s.shininess)), 0u);
+    t.bits = uvec4(packSnorm2x16(octEncode(s.normal)), packUnorm4x8(vec4(encodeSrgb(s.baseColor), s.metallic)),
+                   packUnorm2x16(vec2(s.roughness, s.occlusion)), 0u);
+#if ML_HAS(ML_FEATURE_EMISSIVE)
+    t.bits.w = packRgb9e5(s.emissive);
+#endif
 #else
-    t.target[0] = vec4(s.normal.xy, s.specularStrength, s.shininess);
-    t.target[1] = vec4(s.albedo, 1.0);
+    t.target[0] = vec4(s.normal.xy, s.roughness, s.metallic);
+    t.target[1] = vec4(s.baseColor, s.occlusion);
 #endif
     return t;
 }
 
-// Fills the surface's normal (unit length), albedo and specular parameters.
+// Fills the surface's normal (unit length) and material, then its shading terms.
 void decodeGBuffer(GBufferTexel t, inout SurfacePoint s) {
+    s.emissive = vec3(0.0);
 #if ML_GBUFFER_FORMAT == ML_GBUFFER_STANDARD
     s.normal = normalize(t.target[0].xyz);  // 16-bit storage: restore unit length
-    s.albedo = t.target[1].rgb;
-    s.specularStrength = t.target[2].x;
-    s.shininess = t.target[2].y;
+    s.occlusion = t.target[0].w;
+    s.baseColor = t.target[1].rgb;
+    s.metallic = t.target[1].w;
+    s.roughness = t.target[2].x;
+    s.emissive = t.target[2].yzw;
 #elif ML_GBUFFER_FORMAT == ML_GBUFFER_PACKED
     s.normal = octDecode(unpackSnorm2x16(t.bits.x));
-    s.albedo = decodeSrgb(unpackUnorm4x8(t.bits.y).rgb);
-    vec2 spec = unpackHalf2x16(t.bits.z);
-    s.specularStrength = spec.x;
-    s.shininess = spec.y;
+    vec4 baseMetallic = unpackUnorm4x8(t.bits.y);
+    s.baseColor = decodeSrgb(baseMetallic.rgb);
+    s.metallic = baseMetallic.a;
+    vec2 roughnessOcclusion = unpackUnorm2x16(t.bits.z);
+    s.roughness = roughnessOcclusion.x;
+    s.occlusion = roughnessOcclusion.y;
+#if ML_HAS(ML_FEATURE_EMISSIVE)
+    s.emissive = unpackRgb9e5(t.bits.w);
+#endif
 #else
     vec2 xy = t.target[0].xy;
     s.normal = normalize(vec3(xy, sqrt(max(1.0 - dot(xy, xy), 0.0))));  // the sign of z is gone
-    s.albedo = t.target[1].rgb;
-    s.specularStrength = t.target[0].z;
-    s.shininess = t.target[0].w;
+    s.roughness = t.target[0].z;
+    s.metallic = t.target[0].w;
+    s.baseColor = t.target[1].rgb;
+    s.occlusion = t.target[1].w;
 #endif
+    deriveShadingTerms(s);
 }

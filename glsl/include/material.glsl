@@ -1,20 +1,120 @@
-// Materials, mirrored in C++ by ml::GpuMaterial (renderer/gpu_types.h).
+// Materials, mirrored in C++ by ml::GpuMaterial (renderer/gpu_types.h), and how a surface point
+// samples them. Needs shading.glsl. Paths a scene does not use are compiled out through
+// ML_MATERIAL_FEATURES (bindings.h, ML_FEATURE_*), so their cost is paid only where used.
+#include "include/material_features.glsl"
+
 struct Material {
     vec4 baseColorFactor;  // linear
-    vec4 params;           // x: specular strength, y: shininess, z: has texture (0/1)
+    vec4 emissiveCutoff;   // rgb: emissive factor times strength, a: alpha cutoff
+    vec4 factors;          // metallic, roughness, normal scale, occlusion strength
+    uvec4 info;            // x: slots with a texture (bit per ML_SLOT_*), y: slots reading TEXCOORD_1,
+                           // z: texture set + 1 (0: none), w: unused
+    // Per slot, KHR_texture_transform as uv' = mat2(xy, zw) * uv + offset: [2 slot] the matrix's
+    // columns, [2 slot + 1].xy the offset.
+    vec4 uvTransforms[2 * ML_TEXTURE_SLOTS];
 };
 layout(std430, binding = ML_SSBO_MATERIALS) readonly buffer MaterialBuffer { Material materials[]; };
-layout(binding = ML_TEX_BASE_COLOR) uniform sampler2D u_baseColorTexture;  // sRGB texture: sampled as linear
+// sRGB textures (base colour, emissive) are stored as such and sampled as linear.
+layout(binding = ML_TEX_BASE_COLOR) uniform sampler2D u_baseColorTexture;
+layout(binding = ML_TEX_METALLIC_ROUGHNESS) uniform sampler2D u_metallicRoughnessTexture;
+layout(binding = ML_TEX_NORMAL) uniform sampler2D u_normalTexture;
+layout(binding = ML_TEX_OCCLUSION) uniform sampler2D u_occlusionTexture;
+layout(binding = ML_TEX_EMISSIVE) uniform sampler2D u_emissiveTexture;
 
-SurfacePoint surfaceFromMaterial(uint materialIndex, vec3 worldPos, vec3 worldNormal, vec2 uv) {
-    Material m = materials[materialIndex];
+// Where a point samples its material: its UV sets and, in passes without a rasterizer's 2x2
+// quads (the visibility resolve, ML_EXPLICIT_GRADIENTS), their screen-space gradients.
+struct MaterialCoords {
+    vec2 uv[2];
+#ifdef ML_EXPLICIT_GRADIENTS
+    vec2 dx[2];
+    vec2 dy[2];
+#endif
+};
+
+bool hasTexture(Material m, uint slot) { return (m.info.x & (1u << slot)) != 0u; }
+
+vec4 sampleMaterialTexture(sampler2D tex, Material m, uint slot, MaterialCoords c) {
+#if ML_HAS(ML_FEATURE_UV1)
+    uint set = (m.info.y >> slot) & 1u;
+#else
+    const uint set = 0u;
+#endif
+    vec2 uv = c.uv[set];
+#if ML_HAS(ML_FEATURE_TEXTURE_TRANSFORM)
+    mat2 linear = mat2(m.uvTransforms[2u * slot].xy, m.uvTransforms[2u * slot].zw);
+    uv = linear * uv + m.uvTransforms[2u * slot + 1u].xy;
+#endif
+#ifdef ML_EXPLICIT_GRADIENTS
+    vec2 dx = c.dx[set], dy = c.dy[set];
+#if ML_HAS(ML_FEATURE_TEXTURE_TRANSFORM)
+    dx = linear * dx;
+    dy = linear * dy;
+#endif
+    return textureGrad(tex, uv, dx, dy);
+#else
+    return texture(tex, uv);
+#endif
+}
+
+// Base colour and coverage: factor x texture x COLOR_0.
+vec4 materialBaseColor(Material m, MaterialCoords c, vec4 vertexColor) {
+    vec4 base = m.baseColorFactor;
+    if (hasTexture(m, ML_SLOT_BASE_COLOR)) base *= sampleMaterialTexture(u_baseColorTexture, m, ML_SLOT_BASE_COLOR, c);
+#if ML_HAS(ML_FEATURE_VERTEX_COLOR)
+    base *= vertexColor;
+#endif
+    return base;
+}
+
+// glTF MASK: covered where alpha >= alphaCutoff (BLEND is drawn as MASK at 0.5 for now).
+bool alphaCovered(Material m, float alpha) { return alpha >= m.emissiveCutoff.a; }
+
+// The tangent-space normal map's direction in world space (glTF: B = cross(N, T) * w, the map's
+// x and y scaled by normalTexture.scale). A degenerate tangent leaves the normal as it is.
+vec3 perturbNormal(vec3 n, vec4 tangent, vec3 texel, float scale) {
+    vec3 t = tangent.xyz - n * dot(n, tangent.xyz);
+    float length2 = dot(t, t);
+    if (!(length2 > 1e-16)) return n;
+    t *= inversesqrt(length2);
+    vec3 b = cross(n, t) * (tangent.w < 0.0 ? -1.0 : 1.0);
+    vec3 k = texel * 2.0 - 1.0;
+    k.xy *= scale;
+    vec3 mapped = t * k.x + b * k.y + n * k.z;
+    float mapped2 = dot(mapped, mapped);
+    return mapped2 > 1e-16 ? mapped * inversesqrt(mapped2) : n;
+}
+
+// The shading inputs at a point of material m whose base colour (materialBaseColor) is known.
+SurfacePoint surfaceFromMaterial(Material m, vec3 worldPos, vec3 worldNormal, vec4 worldTangent, vec4 base, MaterialCoords c) {
     SurfacePoint s;
     s.position = worldPos;
     s.normal = normalize(worldNormal);
-    vec4 base = m.baseColorFactor;
-    if (m.params.z > 0.5) base *= texture(u_baseColorTexture, uv);
-    s.albedo = base.rgb;
-    s.specularStrength = m.params.x;
-    s.shininess = m.params.y;
+#if ML_HAS(ML_FEATURE_NORMAL_MAP)
+    if (hasTexture(m, ML_SLOT_NORMAL))
+        s.normal = perturbNormal(s.normal, worldTangent, sampleMaterialTexture(u_normalTexture, m, ML_SLOT_NORMAL, c).xyz, m.factors.z);
+#endif
+    s.baseColor = base.rgb;
+    s.metallic = m.factors.x;
+    s.roughness = m.factors.y;
+#if ML_HAS(ML_FEATURE_METALLIC_ROUGHNESS_MAP)
+    if (hasTexture(m, ML_SLOT_METALLIC_ROUGHNESS)) {
+        vec4 mr = sampleMaterialTexture(u_metallicRoughnessTexture, m, ML_SLOT_METALLIC_ROUGHNESS, c);
+        s.roughness *= mr.g;
+        s.metallic *= mr.b;
+    }
+#endif
+    s.occlusion = 1.0;
+#if ML_HAS(ML_FEATURE_OCCLUSION_MAP)
+    if (hasTexture(m, ML_SLOT_OCCLUSION))
+        s.occlusion = 1.0 + m.factors.w * (sampleMaterialTexture(u_occlusionTexture, m, ML_SLOT_OCCLUSION, c).r - 1.0);
+#endif
+    s.emissive = vec3(0.0);
+#if ML_HAS(ML_FEATURE_EMISSIVE)
+    s.emissive = m.emissiveCutoff.rgb;
+#if ML_HAS(ML_FEATURE_EMISSIVE_MAP)
+    if (hasTexture(m, ML_SLOT_EMISSIVE)) s.emissive *= sampleMaterialTexture(u_emissiveTexture, m, ML_SLOT_EMISSIVE, c).rgb;
+#endif
+#endif
+    deriveShadingTerms(s);
     return s;
 }

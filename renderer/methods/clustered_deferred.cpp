@@ -13,11 +13,12 @@ gl::Program lightingProgram(Resolve resolve, const shaders::Defines& defines) {
 }
 }  // namespace
 
-ClusteredDeferred::ClusteredDeferred(const ClusteringSettings& settings, Resolve resolve, GBufferFormat gbuffer)
+ClusteredDeferred::ClusteredDeferred(const ClusteringSettings& settings, Resolve resolve, GBufferFormat gbuffer,
+                                     std::uint32_t materialFeatures)
     : resolve_(resolve),
-      gbuffer_(gbuffer),
+      gbuffer_(gbuffer, materialFeatures),
       gbufferProgram_("deferred.gbuffer", {{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "gbuffer.frag"}},
-                      gbuffer_.defines()),
+                      materialFeatures, RasterProgram::Reads::Material, gbuffer_.defines()),
       lightingProgram_(lightingProgram(resolve, deferredLightingDefines(settings, gbuffer_))),
       clustering_(settings, gbuffer_.defines()) {
     GLuint vao = 0;
@@ -38,8 +39,7 @@ void ClusteredDeferred::render(const FrameContext& ctx) {
         glEnable(GL_DEPTH_TEST);
         glDepthFunc(GL_LESS);
         glDepthMask(GL_TRUE);
-        gbufferProgram_.use();
-        ctx.scene.draw();
+        ctx.scene.draw(gbufferProgram_);
         glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
     }
     clustering_.build(ctx, &gbuffer_);

@@ -7,12 +7,13 @@
 #include "renderer/gl/program.h"
 #include "renderer/methods/gbuffer.h"
 #include "renderer/methods/shading_method.h"
+#include "renderer/raster_program.h"
 
 namespace ml {
 
 class ClusteredDeferred final : public ShadingMethod {
 public:
-    ClusteredDeferred(const ClusteringSettings& settings, Resolve resolve, GBufferFormat gbuffer);
+    ClusteredDeferred(const ClusteringSettings& settings, Resolve resolve, GBufferFormat gbuffer, std::uint32_t materialFeatures);
     std::string name() const override { return "deferred"; }
     void render(const FrameContext& ctx) override;
     const ClusteredLighting* clustering() const override { return &clustering_; }
@@ -21,7 +22,7 @@ public:
 private:
     Resolve resolve_;
     GBuffer gbuffer_;
-    gl::Program gbufferProgram_;
+    RasterProgram gbufferProgram_;
     gl::Program lightingProgram_;
     gl::Handle<gl::VertexArrayDeleter> emptyVao_;
     ClusteredLighting clustering_;

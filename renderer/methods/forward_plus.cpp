@@ -19,11 +19,12 @@ ClusteringSettings clusteringFor(ClusteringSettings settings, bool prepass) {
 }
 }  // namespace
 
-ForwardPlus::ForwardPlus(const ClusteringSettings& settings, bool prepass)
+ForwardPlus::ForwardPlus(const ClusteringSettings& settings, bool prepass, std::uint32_t materialFeatures)
     : prepass_(prepass),
-      depthProgram_("forward-plus.depth", {{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "depth_only.frag"}}),
+      depthProgram_("forward-plus.depth", {{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "depth_only.frag"}},
+                    materialFeatures, RasterProgram::Reads::CoverageOnly),
       shadeProgram_("forward-plus.shade", {{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "forward_plus.frag"}},
-                   lightListDefines(settings)),
+                    materialFeatures, RasterProgram::Reads::Material, lightListDefines(settings)),
       clustering_(clusteringFor(settings, prepass)) {}
 
 void ForwardPlus::render(const FrameContext& ctx) {
@@ -49,18 +50,16 @@ void ForwardPlus::render(const FrameContext& ctx) {
         clustering_.build(ctx);
         auto pass = ctx.timer.pass("forward+.shade");
         clearTargets();
-        shadeProgram_.use();
         ctx.lights.animated().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_LIGHTS);
         clustering_.bindForShading();
-        ctx.scene.draw();
+        ctx.scene.draw(shadeProgram_);
         return;
     }
     {
         auto pass = ctx.timer.pass("forward+.depth-prepass");
         clearTargets();
         glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-        depthProgram_.use();
-        ctx.scene.drawUntextured();
+        ctx.scene.draw(depthProgram_);
         glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
         glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
     }
@@ -76,10 +75,9 @@ void ForwardPlus::render(const FrameContext& ctx) {
         glEnable(GL_STENCIL_TEST);
         glStencilFunc(GL_EQUAL, 0, 0xFF);
         glStencilOp(GL_KEEP, GL_KEEP, GL_INCR);
-        shadeProgram_.use();
         ctx.lights.animated().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_LIGHTS);
         clustering_.bindForShading();
-        ctx.scene.draw();
+        ctx.scene.draw(shadeProgram_);
         glDisable(GL_STENCIL_TEST);
         glDepthFunc(GL_LESS);
         glDepthMask(GL_TRUE);

@@ -5,14 +5,14 @@
 #pragma once
 
 #include "renderer/clustering/clustered_lighting.h"
-#include "renderer/gl/program.h"
+#include "renderer/raster_program.h"
 #include "renderer/methods/shading_method.h"
 
 namespace ml {
 
 class ForwardPlus final : public ShadingMethod {
 public:
-    ForwardPlus(const ClusteringSettings& settings, bool prepass);
+    ForwardPlus(const ClusteringSettings& settings, bool prepass, std::uint32_t materialFeatures);
     std::string name() const override { return "forward-plus"; }
     void render(const FrameContext& ctx) override;
     const ClusteredLighting* clustering() const override { return &clustering_; }
@@ -21,8 +21,8 @@ public:
 
 private:
     bool prepass_;
-    gl::Program depthProgram_;
-    gl::Program shadeProgram_;
+    RasterProgram depthProgram_;
+    RasterProgram shadeProgram_;
     ClusteredLighting clustering_;
 };
 

@@ -3,6 +3,7 @@
 #include <string>
 
 #include "glsl/include/bindings.h"
+#include "renderer/material_features.h"
 
 namespace ml {
 
@@ -17,7 +18,11 @@ int glslFormat(GBufferFormat format) {
 }
 }  // namespace
 
-shaders::Defines GBuffer::defines() const { return {{"ML_GBUFFER_FORMAT", std::to_string(glslFormat(format_))}}; }
+shaders::Defines GBuffer::defines() const {
+    shaders::Defines defines = materialFeatureDefines(materialFeatures_);
+    defines.emplace_back("ML_GBUFFER_FORMAT", std::to_string(glslFormat(format_)));
+    return defines;
+}
 
 const gl::Framebuffer& GBuffer::prepare(const FrameTargets& frame) {
     if (frame.width() != width_ || frame.height() != height_ || frame.depth().id() != depthId_) {

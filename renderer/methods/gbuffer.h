@@ -2,6 +2,7 @@
 // layouts (gbuffer_format.h), plus the frame's depth; position comes back from depth.
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include "renderer/frame_targets.h"
@@ -14,9 +15,11 @@ namespace ml {
 
 class GBuffer {
 public:
-    explicit GBuffer(GBufferFormat format = GBufferFormat::Packed) : format_(format) {}
+    explicit GBuffer(GBufferFormat format = GBufferFormat::Packed, std::uint32_t materialFeatures = 0)
+        : format_(format), materialFeatures_(materialFeatures) {}
     GBufferFormat format() const { return format_; }
-    // ML_GBUFFER_FORMAT for the shaders that write or read this layout.
+    // ML_GBUFFER_FORMAT and ML_MATERIAL_FEATURES (what is stored: emissive only where the scene
+    // has some) for the shaders that write or read this layout.
     shaders::Defines defines() const;
     // Re-creates the targets when the frame size changed; returns the framebuffer.
     const gl::Framebuffer& prepare(const FrameTargets& frame);
@@ -29,6 +32,7 @@ public:
 
 private:
     GBufferFormat format_;
+    std::uint32_t materialFeatures_;
     int width_ = 0, height_ = 0;
     GLuint depthId_ = 0;
     std::vector<gl::Texture2D> targets_;

@@ -44,18 +44,19 @@ std::string methodName(MethodKind kind) {
     return "?";
 }
 
-std::unique_ptr<ShadingMethod> createMethod(const MethodSettings& settings) {
+std::unique_ptr<ShadingMethod> createMethod(const MethodSettings& settings, std::uint32_t materialFeatures) {
     switch (settings.kind) {
-    case MethodKind::Naive: return std::make_unique<NaiveForward>();
+    case MethodKind::Naive: return std::make_unique<NaiveForward>(materialFeatures);
     case MethodKind::ForwardPlus: {
         // Forward+ shades before any normal is known: no normal bins (the flag is refused by
         // `render` and greyed out in `view`; here it is ignored).
         ClusteringSettings clustering = settings.clustering;
         clustering.normalCones = false;
-        return std::make_unique<ForwardPlus>(clustering, settings.prepass);
+        return std::make_unique<ForwardPlus>(clustering, settings.prepass, materialFeatures);
     }
-    case MethodKind::Deferred: return std::make_unique<ClusteredDeferred>(settings.clustering, settings.resolve, settings.gbuffer);
-    case MethodKind::Visibility: return std::make_unique<VisibilityBuffer>(settings.clustering, settings.gbuffer);
+    case MethodKind::Deferred:
+        return std::make_unique<ClusteredDeferred>(settings.clustering, settings.resolve, settings.gbuffer, materialFeatures);
+    case MethodKind::Visibility: return std::make_unique<VisibilityBuffer>(settings.clustering, settings.gbuffer, materialFeatures);
     }
     throw std::invalid_argument("unhandled method");
 }

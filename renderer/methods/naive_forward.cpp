@@ -4,8 +4,9 @@
 
 namespace ml {
 
-NaiveForward::NaiveForward()
-    : program_("naive_forward", {{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "naive_forward.frag"}}) {}
+NaiveForward::NaiveForward(std::uint32_t materialFeatures)
+    : program_("naive_forward", {{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "naive_forward.frag"}}, materialFeatures,
+               RasterProgram::Reads::Material) {}
 
 void NaiveForward::render(const FrameContext& ctx) {
     auto pass = ctx.timer.pass("naive.shade");
@@ -18,9 +19,8 @@ void NaiveForward::render(const FrameContext& ctx) {
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDepthMask(GL_TRUE);
-    program_.use();
     ctx.lights.animated().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_LIGHTS);
-    ctx.scene.draw();
+    ctx.scene.draw(program_);
 }
 
 }  // namespace ml

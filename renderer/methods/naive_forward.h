@@ -2,19 +2,19 @@
 // O(fragments x lights), and exact: the reference every other method is held to.
 #pragma once
 
-#include "renderer/gl/program.h"
+#include "renderer/raster_program.h"
 #include "renderer/methods/shading_method.h"
 
 namespace ml {
 
 class NaiveForward final : public ShadingMethod {
 public:
-    NaiveForward();
+    explicit NaiveForward(std::uint32_t materialFeatures);
     std::string name() const override { return "naive"; }
     void render(const FrameContext& ctx) override;
 
 private:
-    gl::Program program_;
+    RasterProgram program_;
 };
 
 }  // namespace ml

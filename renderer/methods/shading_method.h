@@ -66,6 +66,7 @@ const std::vector<std::string>& methodNames();
 MethodKind parseMethod(const std::string& text);
 std::string methodName(MethodKind kind);
 
-std::unique_ptr<ShadingMethod> createMethod(const MethodSettings& settings);
+// materialFeatures: SceneGpu::materialFeatures() of the scene the method will draw.
+std::unique_ptr<ShadingMethod> createMethod(const MethodSettings& settings, std::uint32_t materialFeatures);
 
 }  // namespace ml

@@ -5,9 +5,10 @@
 
 namespace ml {
 
-VisibilityBuffer::VisibilityBuffer(const ClusteringSettings& settings, GBufferFormat gbuffer)
-    : gbuffer_(gbuffer),
-      rasterProgram_("visibility.raster", {{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "visibility.frag"}}),
+VisibilityBuffer::VisibilityBuffer(const ClusteringSettings& settings, GBufferFormat gbuffer, std::uint32_t materialFeatures)
+    : gbuffer_(gbuffer, materialFeatures),
+      rasterProgram_("visibility.raster", {{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "visibility.frag"}},
+                     materialFeatures, RasterProgram::Reads::CoverageOnly),
       resolveProgram_(gl::Program::compute("visibility_resolve.comp", gbuffer_.defines())),
       lightingProgram_(gl::Program::compute("deferred_lighting.comp", deferredLightingDefines(settings, gbuffer_))),
       clustering_(settings, gbuffer_.defines()) {}
@@ -35,8 +36,7 @@ void VisibilityBuffer::render(const FrameContext& ctx) {
         glEnable(GL_DEPTH_TEST);
         glDepthFunc(GL_LESS);
         glDepthMask(GL_TRUE);
-        rasterProgram_.use();
-        ctx.scene.drawUntextured();
+        ctx.scene.draw(rasterProgram_);
         glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
     }
     {
@@ -47,12 +47,14 @@ void VisibilityBuffer::render(const FrameContext& ctx) {
         glBindTextureUnit(ML_TEX_VISIBILITY, triangleIds_.id());
         const GLuint groupsX = gl::groupsFor(ctx.targets.width(), ML_SCREEN_TILE);
         const GLuint groupsY = gl::groupsFor(ctx.targets.height(), ML_SCREEN_TILE);
-        // One dispatch per base-colour texture, and one for untextured materials.
-        for (int group = -1; group < static_cast<int>(ctx.scene.textureCount()); ++group) {
-            if (group >= 0) ctx.scene.bindTexture(static_cast<std::size_t>(group), ML_TEX_BASE_COLOR);
-            resolveProgram_.set("u_textureGroup", group);
+        // One dispatch per texture set, and one for untextured materials.
+        for (int set = -1; set < static_cast<int>(ctx.scene.textureSetCount()); ++set) {
+            ctx.scene.bindTextureSet(set);
+            resolveProgram_.set("u_textureSet", set);
             glDispatchCompute(groupsX, groupsY, 1);
         }
+        for (GLuint unit : {ML_TEX_BASE_COLOR, ML_TEX_METALLIC_ROUGHNESS, ML_TEX_NORMAL, ML_TEX_OCCLUSION, ML_TEX_EMISSIVE})
+            glBindSampler(unit, 0);
         glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     }
     clustering_.build(ctx, &gbuffer_);

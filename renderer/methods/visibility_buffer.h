@@ -11,12 +11,13 @@
 #include "renderer/gl/texture.h"
 #include "renderer/methods/gbuffer.h"
 #include "renderer/methods/shading_method.h"
+#include "renderer/raster_program.h"
 
 namespace ml {
 
 class VisibilityBuffer final : public ShadingMethod {
 public:
-    VisibilityBuffer(const ClusteringSettings& settings, GBufferFormat gbuffer);
+    VisibilityBuffer(const ClusteringSettings& settings, GBufferFormat gbuffer, std::uint32_t materialFeatures);
     std::string name() const override { return "visibility"; }
     void render(const FrameContext& ctx) override;
     const ClusteredLighting* clustering() const override { return &clustering_; }
@@ -26,7 +27,7 @@ private:
     void prepareTargets(const FrameTargets& frame);
 
     GBuffer gbuffer_;
-    gl::Program rasterProgram_;
+    RasterProgram rasterProgram_;
     gl::Program resolveProgram_;
     gl::Program lightingProgram_;
     int width_ = 0, height_ = 0;

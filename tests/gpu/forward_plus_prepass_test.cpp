@@ -62,7 +62,7 @@ TEST_F(ForwardPlusPrepass, CoplanarTiesResolveAsInNaiveWithAndWithoutThePrepass)
 TEST_F(ForwardPlusPrepass, ActiveOnlyWithoutThePrepassIsRefused) {
     MethodSettings m = forwardPlus(false);
     m.clustering.activeOnly = true;
-    EXPECT_THROW(createMethod(m), std::invalid_argument);
+    EXPECT_THROW(createMethod(m, 0), std::invalid_argument);
 }
 
 TEST(PrepassCommand, TimeShowsOnlyTheShadingPassAndBadValuesAreRefused) {

@@ -124,7 +124,10 @@ Scene singleTriangle() {
     scene.vertices = {{{-2, 0, -2}, {0, 1, 0}, {0, 0}}, {{2, 0, -2}, {0, 1, 0}, {1, 0}}, {{0, 0, 2}, {0, 1, 0}, {0, 1}}};
     // Clockwise seen from above in these coordinates: wind it counter-clockwise.
     scene.indices = {0, 2, 1};
-    scene.materials.push_back(Material{"white", glm::vec4(0.8f, 0.8f, 0.8f, 1.0f)});
+    Material white;
+    white.name = "white";
+    white.baseColorFactor = glm::vec4(0.8f, 0.8f, 0.8f, 1.0f);
+    scene.materials.push_back(white);
     scene.draws.push_back(DrawRange{0, 3, 0});
     computeBounds(scene);
     scene.suggestedView = CameraPose{{0.0f, 3.0f, 4.0f}, {0.0f, 0.0f, 0.0f}, 60.0f};

@@ -1,0 +1,67 @@
+// The fragment side of scene.vert: its outputs, and the material's surface at this fragment.
+// Needs material.glsl. With ML_ALPHA_TEST (the program variant for alpha-tested draw ranges,
+// renderer/raster_program.h) fragments outside the material's coverage are discarded; opaque
+// ranges are drawn without it and keep early depth testing.
+#ifndef ML_ALPHA_TEST
+#define ML_ALPHA_TEST 0
+#endif
+
+layout(location = 0) in vec3 v_worldPos;
+layout(location = 1) in vec3 v_worldNormal;
+layout(location = 2) in vec2 v_uv;
+layout(location = 3) flat in uint v_materialIndex;
+layout(location = 4) flat in uint v_firstTriangle;  // the draw range's first triangle
+#if ML_HAS(ML_FEATURE_NORMAL_MAP)
+layout(location = 5) in vec4 v_tangent;
+#endif
+#if ML_HAS(ML_FEATURE_UV1)
+layout(location = 6) in vec2 v_uv1;
+#endif
+#if ML_HAS(ML_FEATURE_VERTEX_COLOR)
+layout(location = 7) in vec4 v_color;
+#endif
+
+MaterialCoords fragmentCoords() {
+    MaterialCoords c;
+    c.uv[0] = v_uv;
+#if ML_HAS(ML_FEATURE_UV1)
+    c.uv[1] = v_uv1;
+#else
+    c.uv[1] = v_uv;
+#endif
+    return c;
+}
+
+vec4 fragmentVertexColor() {
+#if ML_HAS(ML_FEATURE_VERTEX_COLOR)
+    return v_color;
+#else
+    return vec4(1.0);
+#endif
+}
+
+vec4 fragmentTangent() {
+#if ML_HAS(ML_FEATURE_NORMAL_MAP)
+    return v_tangent;
+#else
+    return vec4(1.0, 0.0, 0.0, 1.0);
+#endif
+}
+
+// Coverage only, for passes that write no colour (depth pre-pass, visibility raster).
+void alphaTestFragment() {
+#if ML_ALPHA_TEST
+    Material m = materials[v_materialIndex];
+    if (!alphaCovered(m, materialBaseColor(m, fragmentCoords(), fragmentVertexColor()).a)) discard;
+#endif
+}
+
+SurfacePoint fragmentSurface() {
+    Material m = materials[v_materialIndex];
+    MaterialCoords c = fragmentCoords();
+    vec4 base = materialBaseColor(m, c, fragmentVertexColor());
+#if ML_ALPHA_TEST
+    if (!alphaCovered(m, base.a)) discard;
+#endif
+    return surfaceFromMaterial(m, v_worldPos, v_worldNormal, fragmentTangent(), base, c);
+}
