@@ -1,0 +1,95 @@
+// glTF meshes into triangles: which accessors each primitive reads (planMesh), and how each mesh
+// instance's vertices and indices land in the scene in world space (SceneBuilder). Internal to
+// scenes/gltf_*.cpp.
+#pragma once
+
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <glm/glm.hpp>
+#include <tiny_gltf.h>
+
+#include "scenes/gltf_accessors.h"
+#include "scenes/gltf_materials.h"
+#include "scenes/gltf_nodes.h"
+#include "scenes/scene.h"
+
+namespace ml::gltf {
+
+// Counts of what was skipped or repaired, each reported once as a warning.
+struct Skipped {
+    std::map<int, std::size_t> primitiveModes;  // mode -> primitives
+    std::size_t withoutPosition = 0;
+    std::size_t emptyPrimitives = 0;
+    std::size_t morphedMeshes = 0;
+    std::size_t vertexColours = 0;
+    std::size_t regeneratedNormals = 0;  // primitives whose NORMAL held NaN or infinity
+    std::size_t repairedTexcoords = 0;
+};
+
+// Primitives that share their vertex attributes (one big vertex buffer drawn in several material
+// runs) share one block of vertices per instance rather than each copying all of it.
+struct VertexGroup {
+    int position = -1, normal = -1, texcoord = -1;  // accessors; -1 where absent
+    int firstPrimitive = 0;                          // names the group in messages
+};
+
+struct PrimitivePlan {
+    int primitive;
+    std::size_t group;
+    int indices;   // accessor, or -1
+    int material;  // glTF material, or -1
+};
+
+// How one glTF mesh becomes triangles, worked out once however many nodes instance it, so that a
+// mesh with a million empty primitives costs one pass, not one per instance.
+struct MeshPlan {
+    std::vector<VertexGroup> groups;
+    std::vector<PrimitivePlan> primitives;
+};
+MeshPlan planMesh(const std::string& path, const tinygltf::Model& model, std::size_t meshIndex, Skipped& skipped);
+
+// Builds the scene from mesh instances: vertices in world space, materials through the converter.
+class SceneBuilder {
+public:
+    SceneBuilder(const std::string& path, const tinygltf::Model& model, Scene& scene, Skipped& skipped,
+                 MaterialConverter& materials)
+        : path_(path),
+          model_(model),
+          scene_(scene),
+          skipped_(skipped),
+          materials_(materials),
+          reader_(path, model, std::find(model.extensionsUsed.begin(), model.extensionsUsed.end(),
+                                         "KHR_mesh_quantization") != model.extensionsUsed.end()) {}
+
+    void addInstance(const MeshInstance& instance, const MeshPlan& plan);
+
+    // One draw range per material (instances append in node order, so a material recurs).
+    void finish();
+
+private:
+    struct Block {
+        std::uint32_t base = 0;
+        std::uint32_t count = 0;
+        bool generateNormals = false;
+    };
+
+    Block appendVertices(const MeshInstance& instance, const VertexGroup& group, const glm::dmat3& normalMatrix);
+    void appendTriangles(const MeshInstance& instance, const PrimitivePlan& prim, const Block& block, bool mirrored);
+    void generateNormals(const Block& block, const std::vector<std::pair<std::size_t, std::size_t>>& ranges);
+
+    const std::string& path_;
+    const tinygltf::Model& model_;
+    Scene& scene_;
+    Skipped& skipped_;
+    MaterialConverter& materials_;
+    AccessorReader reader_;
+    std::vector<DrawRange> runs_;  // per primitive instance, before grouping
+};
+
+}  // namespace ml::gltf

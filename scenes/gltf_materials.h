@@ -1,0 +1,52 @@
+// glTF materials and their textures into the scene model's Material and Image (README, "Shading
+// model"). Internal to scenes/gltf_*.cpp; kept apart from geometry so that the material mapping
+// can change without touching the rest of the loader.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <tiny_gltf.h>
+
+#include "scenes/gltf_common.h"
+#include "scenes/scene.h"
+
+namespace ml::gltf {
+
+// Converts materials on first use and appends them (and the images they read) to the scene.
+class MaterialConverter {
+public:
+    MaterialConverter(const std::string& path, const tinygltf::Model& model, Scene& scene)
+        : path_(path),
+          model_(model),
+          scene_(scene),
+          materialSlots_(model.materials.size(), -1),
+          imageSlots_(model.images.size(), -1) {}
+
+    // The Scene::materials index for a glTF material; -1 (no material) is glTF's default, white.
+    // The index was checked by the caller.
+    std::uint32_t materialFor(int gltfMaterial);
+
+    // One line per kind of material feature the scene model does not hold, or that was repaired.
+    std::vector<std::string> warnings() const;
+
+private:
+    Material convertMaterial(std::size_t index);
+    int imageFor(std::size_t index);
+
+    const std::string& path_;
+    const tinygltf::Model& model_;
+    Scene& scene_;
+    std::vector<int> materialSlots_;  // glTF material -> Scene::materials index
+    std::vector<int> imageSlots_;     // glTF image -> Scene::images index
+    std::optional<std::uint32_t> defaultMaterial_;
+    std::uint64_t texelBudget_ = kMaxImageTexels;
+    // Counts of what was skipped, each reported once as a warning.
+    std::size_t baseColorOnOtherTexcoord_ = 0;
+    std::size_t texturesWithoutSource_ = 0;
+    std::vector<std::string> failedImages_;
+};
+
+}  // namespace ml::gltf

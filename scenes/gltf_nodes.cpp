@@ -1,0 +1,105 @@
+#include "scenes/gltf_nodes.h"
+
+#include <cmath>
+#include <cstdint>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include "scenes/gltf_common.h"
+
+namespace ml::gltf {
+namespace {
+
+glm::dmat4 localTransform(const std::string& path, const tinygltf::Node& node, std::size_t index) {
+    const auto badLength = [&](const char* what, std::size_t got, const char* expected) {
+        fail(path, named("nodes", index, node.name) + ": " + what + " has " + std::to_string(got) +
+                       " numbers, expected " + expected);
+    };
+    if (!node.matrix.empty()) {
+        if (node.matrix.size() != 16) badLength("matrix", node.matrix.size(), "16");
+        return glm::make_mat4(node.matrix.data());  // glTF and glm are both column-major
+    }
+    if (!node.translation.empty() && node.translation.size() != 3) badLength("translation", node.translation.size(), "3");
+    if (!node.rotation.empty() && node.rotation.size() != 4) badLength("rotation", node.rotation.size(), "4");
+    if (!node.scale.empty() && node.scale.size() != 3) badLength("scale", node.scale.size(), "3");
+
+    glm::dmat4 m(1.0);
+    if (!node.translation.empty()) m = glm::translate(m, glm::make_vec3(node.translation.data()));
+    if (!node.rotation.empty()) {
+        const auto& r = node.rotation;  // glTF stores x, y, z, w
+        const glm::dquat q(r[3], r[0], r[1], r[2]);
+        const double length = glm::length(q);
+        if (!(length > 0.0) || !std::isfinite(length))
+            fail(path, named("nodes", index, node.name) + ": rotation quaternion has zero or non-finite length");
+        m *= glm::mat4_cast(q / length);
+    }
+    if (!node.scale.empty()) m = glm::scale(m, glm::make_vec3(node.scale.data()));
+    return m;
+}
+
+}  // namespace
+
+std::vector<MeshInstance> flattenNodes(const std::string& path, const tinygltf::Model& model) {
+    if (model.scenes.empty()) fail(path, "no scene: the file defines no scenes");
+    std::size_t sceneIndex = 0;
+    if (model.defaultScene >= 0) {
+        sceneIndex = static_cast<std::size_t>(model.defaultScene);
+        if (sceneIndex >= model.scenes.size())
+            fail(path, "scene index " + std::to_string(sceneIndex) + " out of range (" +
+                           std::to_string(model.scenes.size()) + " scenes)");
+    }
+    const tinygltf::Scene& scene = model.scenes[sceneIndex];
+    const std::string sceneName = named("scenes", sceneIndex, scene.name);
+    if (scene.nodes.empty()) fail(path, sceneName + " is empty: it lists no nodes");
+
+    const std::size_t nodeCount = model.nodes.size();
+    enum class Mark : std::uint8_t { unvisited, onPath, done };
+    std::vector<Mark> marks(nodeCount, Mark::unvisited);
+    std::vector<glm::dmat4> world(nodeCount);
+    struct Step {
+        std::size_t node;
+        std::ptrdiff_t parent;  // -1 for a scene root
+        bool leaving;           // pops the node off the current path
+    };
+    std::vector<Step> stack;
+    const auto push = [&](int child, std::ptrdiff_t parent, const std::string& from) {
+        if (child < 0 || static_cast<std::size_t>(child) >= nodeCount)
+            fail(path, from + ": node index " + std::to_string(child) + " out of range (" + std::to_string(nodeCount) +
+                           " nodes)");
+        stack.push_back({static_cast<std::size_t>(child), parent, false});
+    };
+    for (auto it = scene.nodes.rbegin(); it != scene.nodes.rend(); ++it) push(*it, -1, sceneName);
+
+    std::vector<MeshInstance> instances;
+    while (!stack.empty()) {
+        const Step step = stack.back();
+        stack.pop_back();
+        if (step.leaving) {
+            marks[step.node] = Mark::done;
+            continue;
+        }
+        const tinygltf::Node& node = model.nodes[step.node];
+        const std::string name = named("nodes", step.node, node.name);
+        if (marks[step.node] == Mark::onPath) fail(path, "node cycle: " + name + " is its own ancestor");
+        if (marks[step.node] == Mark::done)
+            fail(path, name + " is reached twice (more than one parent, or listed twice); glTF nodes must form trees");
+        marks[step.node] = Mark::onPath;
+
+        const glm::dmat4 parentWorld = step.parent < 0 ? glm::dmat4(1.0) : world[static_cast<std::size_t>(step.parent)];
+        world[step.node] = parentWorld * localTransform(path, node, step.node);
+        if (node.mesh >= 0) {
+            if (static_cast<std::size_t>(node.mesh) >= model.meshes.size())
+                fail(path, name + ": mesh index " + std::to_string(node.mesh) + " out of range (" +
+                               std::to_string(model.meshes.size()) + " meshes)");
+            instances.push_back({step.node, static_cast<std::size_t>(node.mesh), world[step.node]});
+        }
+        stack.push_back({step.node, step.parent, true});
+        for (auto it = node.children.rbegin(); it != node.children.rend(); ++it)
+            push(*it, static_cast<std::ptrdiff_t>(step.node), name);
+    }
+    return instances;
+}
+
+}  // namespace ml::gltf
