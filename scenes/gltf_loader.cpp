@@ -29,7 +29,9 @@ using namespace gltf;
 // --- Warnings ------------------------------------------------------------------------------------
 
 // Extensions this loader reads (or whose absence changes nothing it reads).
-bool isHandledExtension(const std::string& name) { return name == "KHR_mesh_quantization"; }
+bool isHandledExtension(const std::string& name) {
+    return name == "KHR_mesh_quantization" || name == "KHR_texture_transform" || name == "KHR_materials_emissive_strength";
+}
 
 // One line per kind of thing the scene model does not hold (materials report their own).
 std::vector<std::string> unmodelledFeatures(const tinygltf::Model& model, const Skipped& skipped) {

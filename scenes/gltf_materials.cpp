@@ -1,16 +1,20 @@
 #include "scenes/gltf_materials.h"
 
 #include <algorithm>
+#include <cmath>
+#include <initializer_list>
+#include <sstream>
+#include <tuple>
 
 // The implementation lives in Debian's libtinygltf.so (built with stb), so no
-// TINYGLTF_IMPLEMENTATION anywhere; stb_image is used directly to decode base-colour images.
+// TINYGLTF_IMPLEMENTATION anywhere; stb_image is used directly to decode the images materials use.
 #include <stb_image.h>
 
 namespace ml::gltf {
 namespace {
 
 // Decodes to RGBA8, rows top to bottom (stb's order, as long as no one turns on its vertical
-// flip). The colour bytes stay sRGB-encoded, as glTF stores base colour.
+// flip). The bytes stay as stored: sRGB for colour textures, linear for data textures.
 bool decodeRgba8(const std::vector<unsigned char>& encoded, Image& out, std::uint64_t& texelBudget, std::string& why) {
     if (encoded.empty()) {
         why = "no image data (external file missing or unreadable)";
@@ -70,57 +74,201 @@ std::uint32_t MaterialConverter::materialFor(int gltfMaterial) {
     return static_cast<std::uint32_t>(slot);
 }
 
+namespace {
+
+bool finite(double v) { return std::isfinite(v); }
+
+std::string number(double v) {
+    std::ostringstream out;
+    out << v;
+    return out.str();
+}
+
+// A tinygltf::Value that must be an array of `n` finite numbers.
+bool readNumbers(const tinygltf::Value& v, std::size_t n, double* out) {
+    if (!v.IsArray() || v.ArrayLen() != n) return false;
+    for (std::size_t i = 0; i < n; ++i) {
+        const tinygltf::Value& e = v.Get(static_cast<int>(i));
+        if (!e.IsNumber() && !e.IsInt()) return false;
+        out[i] = e.GetNumberAsDouble();
+        if (!finite(out[i])) return false;
+    }
+    return true;
+}
+
+bool isOneOf(int value, std::initializer_list<int> options) {
+    return std::find(options.begin(), options.end(), value) != options.end();
+}
+
+}  // namespace
+
 Material MaterialConverter::convertMaterial(std::size_t index) {
     const tinygltf::Material& source = model_.materials[index];
     const std::string what = named("materials", index, source.name);
+    const auto factor = [&](double v, const char* name, double lo, double hi) {
+        // The spec bounds each factor; a value outside is clamped (a stray value must not blow out
+        // shading), a value that is not a number cannot be used at all.
+        if (!finite(v)) fail(path_, what + ": " + name + " " + number(v) + " is not a finite number");
+        return static_cast<float>(std::clamp(v, lo, hi));
+    };
     Material m;
     m.name = source.name.empty() ? "material " + std::to_string(index) : source.name;
-    const std::vector<double>& f = source.pbrMetallicRoughness.baseColorFactor;
-    if (f.size() != 4)
-        fail(path_, what + ": baseColorFactor has " + std::to_string(f.size()) + " numbers, expected 4");
-    // The spec bounds each factor to [0, 1]; clamping keeps a stray value from blowing out shading.
-    m.baseColorFactor = glm::clamp(glm::vec4(glm::dvec4(f[0], f[1], f[2], f[3])), 0.0f, 1.0f);
+    const tinygltf::PbrMetallicRoughness& pbr = source.pbrMetallicRoughness;
+    const std::vector<double>& f = pbr.baseColorFactor;
+    if (f.size() != 4) fail(path_, what + ": baseColorFactor has " + std::to_string(f.size()) + " numbers, expected 4");
+    for (int c = 0; c < 4; ++c) m.baseColorFactor[c] = factor(f[c], "baseColorFactor", 0.0, 1.0);
+    m.metallic = factor(pbr.metallicFactor, "metallicFactor", 0.0, 1.0);
+    m.roughness = factor(pbr.roughnessFactor, "roughnessFactor", 0.0, 1.0);
     m.doubleSided = source.doubleSided;
-    m.metallic = static_cast<float>(std::clamp(source.pbrMetallicRoughness.metallicFactor, 0.0, 1.0));
-    m.roughness = static_cast<float>(std::clamp(source.pbrMetallicRoughness.roughnessFactor, 0.0, 1.0));
 
-    const tinygltf::TextureInfo& info = source.pbrMetallicRoughness.baseColorTexture;
-    if (info.index < 0) return m;
-    if (static_cast<std::size_t>(info.index) >= model_.textures.size())
-        fail(path_, what + ": baseColorTexture index " + std::to_string(info.index) + " out of range (" +
-                        std::to_string(model_.textures.size()) + " textures)");
-    if (info.texCoord != 0) {
-        ++baseColorOnOtherTexcoord_;  // only UV0 is modelled
-        return m;
+    if (source.alphaMode == "MASK") {
+        m.alphaMode = AlphaMode::Mask;
+    } else if (source.alphaMode == "BLEND") {
+        m.alphaMode = AlphaMode::Blend;
+        ++blendMaterials_;
+    } else if (source.alphaMode != "OPAQUE") {
+        fail(path_, what + ": alphaMode '" + clip(source.alphaMode, 40) + "' is not OPAQUE, MASK or BLEND");
     }
-    const int image = model_.textures[static_cast<std::size_t>(info.index)].source;
-    if (image < 0) {
-        ++texturesWithoutSource_;  // the image comes through an extension (KTX2, WebP...)
-        return m;
+    if (!finite(source.alphaCutoff) || source.alphaCutoff < 0.0)
+        fail(path_, what + ": alphaCutoff " + number(source.alphaCutoff) + " is not a number >= 0");
+    m.alphaCutoff = static_cast<float>(source.alphaCutoff);
+
+    m.baseColorTexture = textureRef(what + " baseColorTexture", pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord,
+                                    pbr.baseColorTexture.extensions, true);
+    m.metallicRoughnessTexture = textureRef(what + " metallicRoughnessTexture", pbr.metallicRoughnessTexture.index,
+                                            pbr.metallicRoughnessTexture.texCoord, pbr.metallicRoughnessTexture.extensions, false);
+    const tinygltf::NormalTextureInfo& normal = source.normalTexture;
+    m.normalTexture = textureRef(what + " normalTexture", normal.index, normal.texCoord, normal.extensions, false);
+    if (!finite(normal.scale)) fail(path_, what + ": normalTexture.scale " + number(normal.scale) + " is not a finite number");
+    m.normalScale = static_cast<float>(normal.scale);
+    const tinygltf::OcclusionTextureInfo& occlusion = source.occlusionTexture;
+    m.occlusionTexture = textureRef(what + " occlusionTexture", occlusion.index, occlusion.texCoord, occlusion.extensions, false);
+    if (!finite(occlusion.strength) || occlusion.strength < 0.0 || occlusion.strength > 1.0)
+        fail(path_, what + ": occlusionTexture.strength " + number(occlusion.strength) + " is outside [0, 1]");
+    m.occlusionStrength = static_cast<float>(occlusion.strength);
+
+    const std::vector<double>& e = source.emissiveFactor;
+    if (e.size() != 3) fail(path_, what + ": emissiveFactor has " + std::to_string(e.size()) + " numbers, expected 3");
+    for (int c = 0; c < 3; ++c) m.emissive[c] = factor(e[c], "emissiveFactor", 0.0, 1.0);
+    // KHR_materials_emissive_strength: a multiplier past the factor's [0, 1], for HDR glow.
+    const auto strength = source.extensions.find("KHR_materials_emissive_strength");
+    if (strength != source.extensions.end() && strength->second.Has("emissiveStrength")) {
+        const tinygltf::Value& v = strength->second.Get("emissiveStrength");
+        const double s = v.IsNumber() || v.IsInt() ? v.GetNumberAsDouble() : -1.0;
+        if (!finite(s) || s < 0.0 || s > 1e6)
+            fail(path_, what + ": KHR_materials_emissive_strength emissiveStrength is not a number in [0, 1e6]");
+        m.emissive *= static_cast<float>(s);
     }
-    if (static_cast<std::size_t>(image) >= model_.images.size())
-        fail(path_, named("textures", static_cast<std::size_t>(info.index), model_.textures[static_cast<std::size_t>(info.index)].name) +
-                        ": source image index " + std::to_string(image) + " out of range (" +
-                        std::to_string(model_.images.size()) + " images)");
-    m.baseColorTexture.image = imageFor(static_cast<std::size_t>(image));
+    m.emissiveTexture = textureRef(what + " emissiveTexture", source.emissiveTexture.index, source.emissiveTexture.texCoord,
+                                   source.emissiveTexture.extensions, true);
     return m;
 }
 
-int MaterialConverter::imageFor(std::size_t index) {
-    int& slot = imageSlots_[index];
-    if (slot >= 0) return slot;
-    const tinygltf::Image& source = model_.images[index];
-    Image image;
-    image.name = !source.name.empty() ? source.name : !source.uri.empty() ? source.uri : "image " + std::to_string(index);
-    std::string why;
-    if (!decodeRgba8(source.image, image, texelBudget_, why)) {
-        // One bad image should not cost the whole scene: a white texel leaves the factor alone.
-        failedImages_.push_back(named("images", index, source.name.empty() ? source.uri : source.name) + " (" +
-                                        why + ")");
-        image.width = 1;
-        image.height = 1;
-        image.rgba8 = {255, 255, 255, 255};
+TextureRef MaterialConverter::textureRef(const std::string& what, int textureIndex, int texCoord,
+                                         const tinygltf::ExtensionMap& extensions, bool srgb) {
+    TextureRef ref;
+    if (textureIndex < 0) return ref;
+    if (static_cast<std::size_t>(textureIndex) >= model_.textures.size())
+        fail(path_, what + ": texture index " + std::to_string(textureIndex) + " out of range (" +
+                        std::to_string(model_.textures.size()) + " textures)");
+    ref.texCoord = texCoord;
+    // KHR_texture_transform: offset, rotation, scale, and a texCoord that overrides the textureInfo's.
+    const auto transform = extensions.find("KHR_texture_transform");
+    if (transform != extensions.end()) {
+        const tinygltf::Value& t = transform->second;
+        const auto bad = [&](const char* field) {
+            fail(path_, what + ": KHR_texture_transform " + field + " is not valid (expected finite numbers)");
+        };
+        double pair[2];
+        if (t.Has("offset")) {
+            if (!readNumbers(t.Get("offset"), 2, pair)) bad("offset");
+            ref.transform.offset = glm::vec2(static_cast<float>(pair[0]), static_cast<float>(pair[1]));
+        }
+        if (t.Has("scale")) {
+            if (!readNumbers(t.Get("scale"), 2, pair)) bad("scale");
+            ref.transform.scale = glm::vec2(static_cast<float>(pair[0]), static_cast<float>(pair[1]));
+        }
+        if (t.Has("rotation")) {
+            const tinygltf::Value& r = t.Get("rotation");
+            if (!(r.IsNumber() || r.IsInt()) || !finite(r.GetNumberAsDouble())) bad("rotation");
+            ref.transform.rotation = static_cast<float>(r.GetNumberAsDouble());
+        }
+        if (t.Has("texCoord")) {
+            const tinygltf::Value& c = t.Get("texCoord");
+            if (!c.IsInt()) bad("texCoord");
+            ref.texCoord = c.GetNumberAsInt();
+        }
     }
+    if (ref.texCoord != 0 && ref.texCoord != 1)
+        fail(path_, what + ": texCoord " + std::to_string(ref.texCoord) + " is not supported (TEXCOORD_0 and TEXCOORD_1 are)");
+
+    const tinygltf::Texture& texture = model_.textures[static_cast<std::size_t>(textureIndex)];
+    if (texture.sampler >= 0) {
+        if (static_cast<std::size_t>(texture.sampler) >= model_.samplers.size())
+            fail(path_, named("textures", static_cast<std::size_t>(textureIndex), texture.name) + ": sampler index " +
+                            std::to_string(texture.sampler) + " out of range (" + std::to_string(model_.samplers.size()) +
+                            " samplers)");
+        ref.sampler = samplerFor(static_cast<std::size_t>(texture.sampler));
+    }
+    const int image = texture.source;
+    if (image < 0) {
+        ++texturesWithoutSource_;  // the image comes through an extension (KTX2, WebP...)
+        return TextureRef{};
+    }
+    if (static_cast<std::size_t>(image) >= model_.images.size())
+        fail(path_, named("textures", static_cast<std::size_t>(textureIndex), texture.name) + ": source image index " +
+                        std::to_string(image) + " out of range (" + std::to_string(model_.images.size()) + " images)");
+    ref.image = imageFor(static_cast<std::size_t>(image), srgb);
+    return ref;
+}
+
+int MaterialConverter::samplerFor(std::size_t index) {
+    int& slot = samplerSlots_[index];
+    if (slot >= 0) return slot;
+    const tinygltf::Sampler& source = model_.samplers[index];
+    const std::string what = named("samplers", index, source.name);
+    // glTF uses GL's enum values; -1 is "not given" (then the viewer chooses: ours is trilinear, repeat).
+    Sampler s;
+    if (source.magFilter != -1) {
+        if (!isOneOf(source.magFilter, {0x2600, 0x2601})) fail(path_, what + ": magFilter " + std::to_string(source.magFilter) + " is not NEAREST or LINEAR");
+        s.magFilter = source.magFilter;
+    }
+    if (source.minFilter != -1) {
+        if (!isOneOf(source.minFilter, {0x2600, 0x2601, 0x2700, 0x2701, 0x2702, 0x2703}))
+            fail(path_, what + ": minFilter " + std::to_string(source.minFilter) + " is not a glTF minification filter");
+        s.minFilter = source.minFilter;
+    }
+    for (const auto& [wrap, name, out] : {std::tuple{source.wrapS, "wrapS", &s.wrapS}, std::tuple{source.wrapT, "wrapT", &s.wrapT}}) {
+        if (!isOneOf(wrap, {0x812F, 0x8370, 0x2901}))
+            fail(path_, what + ": " + name + " " + std::to_string(wrap) + " is not CLAMP_TO_EDGE, MIRRORED_REPEAT or REPEAT");
+        *out = wrap;
+    }
+    slot = static_cast<int>(scene_.samplers.size());
+    scene_.samplers.push_back(s);
+    return slot;
+}
+
+int MaterialConverter::imageFor(std::size_t index, bool srgb) {
+    int& slot = imageSlots_[srgb ? 1 : 0][index];
+    if (slot >= 0) return slot;
+    // Decoded once: an image read both as colour and as data is held twice, in two colour spaces.
+    const int other = imageSlots_[srgb ? 0 : 1][index];
+    Image image;
+    if (other >= 0) {
+        image = scene_.images[static_cast<std::size_t>(other)];
+    } else {
+        const tinygltf::Image& source = model_.images[index];
+        image.name = !source.name.empty() ? source.name : !source.uri.empty() ? source.uri : "image " + std::to_string(index);
+        std::string why;
+        if (!decodeRgba8(source.image, image, texelBudget_, why)) {
+            // One bad image should not cost the whole scene: a white texel leaves the factor alone.
+            failedImages_.push_back(named("images", index, source.name.empty() ? source.uri : source.name) + " (" + why + ")");
+            image.width = 1;
+            image.height = 1;
+            image.rgba8 = {255, 255, 255, 255};
+        }
+    }
+    image.srgb = srgb;
     slot = static_cast<int>(scene_.images.size());
     scene_.images.push_back(std::move(image));
     return slot;
@@ -131,34 +279,11 @@ std::vector<std::string> MaterialConverter::warnings() const {
     const auto note = [&](std::size_t n, const std::string& text) {
         if (n > 0) lines.push_back(text);
     };
-    const tinygltf::Model& model = model_;
 
-    std::size_t normal = 0, occlusion = 0, emissive = 0, metallicRoughness = 0, alpha = 0, emissiveFactor = 0;
-    for (const tinygltf::Material& m : model.materials) {
-        normal += m.normalTexture.index >= 0;
-        occlusion += m.occlusionTexture.index >= 0;
-        emissive += m.emissiveTexture.index >= 0;
-        metallicRoughness += m.pbrMetallicRoughness.metallicRoughnessTexture.index >= 0;
-        alpha += m.alphaMode != "OPAQUE";
-        emissiveFactor += std::any_of(m.emissiveFactor.begin(), m.emissiveFactor.end(), [](double v) { return v != 0.0; });
-    }
-    if (normal + occlusion + emissive + metallicRoughness > 0) {
-        std::string kinds;
-        const auto kind = [&](std::size_t n, const char* name) {
-            if (n > 0) kinds += std::string(kinds.empty() ? "" : ", ") + name + " x" + std::to_string(n);
-        };
-        kind(normal, "normal");
-        kind(occlusion, "occlusion");
-        kind(emissive, "emissive");
-        kind(metallicRoughness, "metallicRoughness");
-        lines.push_back("textures other than baseColor skipped (not modelled): " + kinds);
-    }
-    note(baseColorOnOtherTexcoord_, "baseColor textures of " + counted(baseColorOnOtherTexcoord_, "material", "materials") +
-                                               " skipped: they use a texCoord other than 0 (only UV0 is modelled)");
-    note(texturesWithoutSource_, counted(texturesWithoutSource_, "baseColor texture", "baseColor textures") +
-                                            " skipped: no PNG/JPEG source (the image needs an extension)");
-    note(alpha, "alphaMode of " + counted(alpha, "material", "materials") + " ignored (not modelled; drawn opaque)");
-    note(emissiveFactor, "emissiveFactor of " + counted(emissiveFactor, "material", "materials") + " ignored (not modelled)");
+    note(texturesWithoutSource_, counted(texturesWithoutSource_, "texture", "textures") +
+                                     " skipped: no PNG/JPEG source (the image needs an extension)");
+    note(blendMaterials_, "alphaMode BLEND of " + counted(blendMaterials_, "material", "materials") +
+                              " drawn as MASK at alphaCutoff 0.5 (blended transparency is not built yet)");
     if (!failedImages_.empty()) {
         std::string list;
         for (std::size_t i = 0; i < failedImages_.size() && i < 3; ++i) list += (i ? "; " : "") + failedImages_[i];

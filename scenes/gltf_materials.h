@@ -23,7 +23,8 @@ public:
           model_(model),
           scene_(scene),
           materialSlots_(model.materials.size(), -1),
-          imageSlots_(model.images.size(), -1) {}
+          imageSlots_{std::vector<int>(model.images.size(), -1), std::vector<int>(model.images.size(), -1)},
+          samplerSlots_(model.samplers.size(), -1) {}
 
     // The Scene::materials index for a glTF material; -1 (no material) is glTF's default, white.
     // The index was checked by the caller.
@@ -34,18 +35,24 @@ public:
 
 private:
     Material convertMaterial(std::size_t index);
-    int imageFor(std::size_t index);
+    // A textureInfo's texture as the scene holds it; `what` names it in messages
+    // ("materials[2] 'Leaves' normalTexture"). `srgb`: a colour texture (base colour, emissive).
+    TextureRef textureRef(const std::string& what, int textureIndex, int texCoord, const tinygltf::ExtensionMap& extensions,
+                          bool srgb);
+    int imageFor(std::size_t index, bool srgb);
+    int samplerFor(std::size_t index);
 
     const std::string& path_;
     const tinygltf::Model& model_;
     Scene& scene_;
     std::vector<int> materialSlots_;  // glTF material -> Scene::materials index
-    std::vector<int> imageSlots_;     // glTF image -> Scene::images index
+    std::vector<int> imageSlots_[2];  // glTF image -> Scene::images index, [0] linear, [1] sRGB
+    std::vector<int> samplerSlots_;   // glTF sampler -> Scene::samplers index
     std::optional<std::uint32_t> defaultMaterial_;
     std::uint64_t texelBudget_ = kMaxImageTexels;
-    // Counts of what was skipped, each reported once as a warning.
-    std::size_t baseColorOnOtherTexcoord_ = 0;
+    // Counts of what was skipped or approximated, each reported once as a warning.
     std::size_t texturesWithoutSource_ = 0;
+    std::size_t blendMaterials_ = 0;
     std::vector<std::string> failedImages_;
 };
 
