@@ -61,9 +61,6 @@ std::string componentTypeName(int componentType) {
     }
 }
 
-bool isOneOf(int value, std::initializer_list<int> options) {
-    return std::find(options.begin(), options.end(), value) != options.end();
-}
 
 }  // namespace
 
@@ -97,6 +94,19 @@ const Format kTexcoordFormat{
             isOneOf(a.componentType, {TINYGLTF_COMPONENT_TYPE_BYTE, TINYGLTF_COMPONENT_TYPE_SHORT});
         return (unsignedType && a.normalized) || (quantized && (unsignedType || signedType));
     }};
+const Format kTangentFormat{TINYGLTF_TYPE_VEC4, "VEC4 FLOAT", [](const tinygltf::Accessor& a, bool quantized) {
+                                return a.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT ||
+                                       (quantized && a.normalized &&
+                                        isOneOf(a.componentType,
+                                                {TINYGLTF_COMPONENT_TYPE_BYTE, TINYGLTF_COMPONENT_TYPE_SHORT}));
+                            }};
+const Format kColorFormat{TINYGLTF_TYPE_VEC4, "VEC3 or VEC4: FLOAT, or normalized UNSIGNED_BYTE or UNSIGNED_SHORT",
+                          [](const tinygltf::Accessor& a, bool) {
+                              return a.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT ||
+                                     (a.normalized && isOneOf(a.componentType, {TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
+                                                                                TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT}));
+                          },
+                          TINYGLTF_TYPE_VEC3};
 const Format kIndexFormat{TINYGLTF_TYPE_SCALAR, "SCALAR UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT",
                           [](const tinygltf::Accessor& a, bool) {
                               return isOneOf(a.componentType, {TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
@@ -183,7 +193,7 @@ void AccessorReader::failAt(int index, const Use& use, const std::string& fault)
 
 const tinygltf::Accessor& AccessorReader::checked(int index, const Use& use, const Format& format, std::size_t maxCount) const {
     const tinygltf::Accessor& a = model_.accessors[static_cast<std::size_t>(index)];  // index checked by the plan
-    if (a.type != format.type || !format.allows(a, quantized_))
+    if ((a.type != format.type && a.type != format.otherType) || !format.allows(a, quantized_))
         failAt(index, use,
                "type " + typeName(a.type) + " with componentType " + componentTypeName(a.componentType) +
                    (a.normalized ? " (normalized)" : "") + " is not valid for " + use.attribute + " (expected " +

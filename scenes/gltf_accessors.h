@@ -28,11 +28,14 @@ struct Format {
     int type;
     const char* expected;  // for messages
     bool (*allows)(const tinygltf::Accessor&, bool quantized);
+    int otherType = -1;    // a second accepted type (COLOR_0 is VEC3 or VEC4)
 };
 
 extern const Format kPositionFormat;
 extern const Format kNormalFormat;
 extern const Format kTexcoordFormat;
+extern const Format kTangentFormat;
+extern const Format kColorFormat;
 extern const Format kIndexFormat;
 
 // Reads accessors for one file: every index and byte range is checked before it is used.

@@ -2,9 +2,11 @@
 // one-line messages it fails and warns with. Internal to scenes/gltf_*.cpp.
 #pragma once
 
+#include <algorithm>
 #include <climits>
 #include <cstddef>
 #include <cstdint>
+#include <initializer_list>
 #include <string>
 #include <string_view>
 
@@ -44,6 +46,10 @@ std::string named(const char* kind, std::size_t index, const std::string& name);
 
 // "1 mesh", "3 meshes".
 std::string counted(std::size_t n, const char* singular, const char* plural);
+
+inline bool isOneOf(int value, std::initializer_list<int> options) {
+    return std::find(options.begin(), options.end(), value) != options.end();
+}
 
 inline bool startsWith(std::string_view s, std::string_view prefix) { return s.substr(0, prefix.size()) == prefix; }
 inline bool contains(std::string_view s, std::string_view part) { return s.find(part) != std::string_view::npos; }

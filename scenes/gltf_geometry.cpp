@@ -1,9 +1,11 @@
 #include "scenes/gltf_geometry.h"
 
+#include <array>
 #include <cmath>
 #include <tuple>
 
 #include "scenes/gltf_common.h"
+#include "scenes/tangent_frames.h"
 
 namespace ml::gltf {
 namespace {
@@ -19,14 +21,14 @@ glm::vec3 safeNormalize(const glm::vec3& v) {
 MeshPlan planMesh(const std::string& path, const tinygltf::Model& model, std::size_t meshIndex, Skipped& skipped) {
     const tinygltf::Mesh& mesh = model.meshes[meshIndex];
     MeshPlan plan;
-    std::map<std::tuple<int, int, int>, std::size_t> groupOf;
+    std::map<std::tuple<int, int, int, int, int, int>, std::size_t> groupOf;
     bool morphed = false;
     for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {
         const tinygltf::Primitive& prim = mesh.primitives[p];
         // Built only for a message: a mesh may have a million primitives.
         const auto where = [&] { return named("meshes", meshIndex, mesh.name) + " primitive " + std::to_string(p); };
         morphed = morphed || !prim.targets.empty();
-        if (prim.mode != TINYGLTF_MODE_TRIANGLES) {
+        if (!isOneOf(prim.mode, {TINYGLTF_MODE_TRIANGLES, TINYGLTF_MODE_TRIANGLE_STRIP, TINYGLTF_MODE_TRIANGLE_FAN})) {
             ++skipped.primitiveModes[prim.mode];
             continue;
         }
@@ -43,9 +45,6 @@ MeshPlan planMesh(const std::string& path, const tinygltf::Model& model, std::si
             ++skipped.withoutPosition;
             continue;
         }
-        const int normal = attribute("NORMAL");
-        const int texcoord = attribute("TEXCOORD_0");
-        if (prim.attributes.count("COLOR_0") != 0) ++skipped.vertexColours;
         if (prim.indices >= 0 && static_cast<std::size_t>(prim.indices) >= model.accessors.size())
             fail(path, where() + ": indices accessor index " + std::to_string(prim.indices) + " out of range (" +
                            std::to_string(model.accessors.size()) + " accessors)");
@@ -53,10 +52,32 @@ MeshPlan planMesh(const std::string& path, const tinygltf::Model& model, std::si
             fail(path, where() + ": material index " + std::to_string(prim.material) + " out of range (" +
                            std::to_string(model.materials.size()) + " materials)");
 
-        const auto key = std::make_tuple(position, normal, texcoord);
+        PrimitivePlan planned{static_cast<int>(p), 0, prim.indices, prim.material, prim.mode};
+        const int texcoord1 = attribute("TEXCOORD_1");
+        if (prim.material >= 0) {
+            const std::size_t m = static_cast<std::size_t>(prim.material);
+            const tinygltf::Material& material = model.materials[m];
+            checkTexCoords(path, model, m);
+            planned.readsTexcoord1 = usesTexCoord1(material);
+            planned.normalMapped = hasNormalTexture(material);
+            planned.normalTexCoord = normalTextureTexCoord(material);
+            if (planned.readsTexcoord1 && texcoord1 < 0) {
+                for (const MaterialTexture& texture : texturesOf(material))
+                    if (texture.texCoord == 1.0)
+                        fail(path, named("materials", m, material.name) + ": " + texture.slot + " reads TEXCOORD_1, which " +
+                                       where() + " does not have");
+            }
+        }
+        const int normal = attribute("NORMAL"), texcoord = attribute("TEXCOORD_0"), color = attribute("COLOR_0"),
+                  tangent = attribute("TANGENT");
+        const auto key = std::make_tuple(position, normal, texcoord, texcoord1, color, tangent);
         auto [it, added] = groupOf.try_emplace(key, plan.groups.size());
-        if (added) plan.groups.push_back({position, normal, texcoord, static_cast<int>(p)});
-        plan.primitives.push_back({static_cast<int>(p), it->second, prim.indices, prim.material});
+        if (added) plan.groups.push_back({position, normal, texcoord, texcoord1, color, tangent, static_cast<int>(p)});
+        VertexGroup& group = plan.groups[it->second];
+        group.readsTexcoord1 = group.readsTexcoord1 || planned.readsTexcoord1;
+        group.needsTangents = group.needsTangents || planned.normalMapped;
+        planned.group = it->second;
+        plan.primitives.push_back(planned);
     }
     if (morphed) ++skipped.morphedMeshes;
     return plan;
@@ -77,9 +98,10 @@ void SceneBuilder::addInstance(const MeshInstance& instance, const MeshPlan& pla
 
     std::vector<Block> blocks;
     blocks.reserve(plan.groups.size());
-    for (const VertexGroup& group : plan.groups) blocks.push_back(appendVertices(instance, group, normalMatrix));
+    for (const VertexGroup& group : plan.groups) blocks.push_back(appendVertices(instance, group, normalMatrix, mirrored));
 
-    std::vector<std::vector<std::pair<std::size_t, std::size_t>>> generated(plan.groups.size());
+    std::vector<Ranges> normalRanges(plan.groups.size());
+    std::vector<std::array<Ranges, 2>> tangentRanges(plan.groups.size());  // by UV set
     for (const PrimitivePlan& prim : plan.primitives) {
         const Block& block = blocks[prim.group];
         const std::size_t first = scene_.indices.size();
@@ -90,14 +112,52 @@ void SceneBuilder::addInstance(const MeshInstance& instance, const MeshPlan& pla
             continue;
         }
         runs_.push_back({static_cast<std::uint32_t>(first), static_cast<std::uint32_t>(count), materials_.materialFor(prim.material)});
-        if (block.generateNormals) generated[prim.group].emplace_back(first, count);
+        colorsDrawn_ = colorsDrawn_ || plan.groups[prim.group].color >= 0;
+        uv1Drawn_ = uv1Drawn_ || prim.readsTexcoord1;
+        tangentsDrawn_ = tangentsDrawn_ || prim.normalMapped;
+        if (block.generateNormals) normalRanges[prim.group].emplace_back(first, count);
+        if (block.generateTangents && prim.normalMapped) tangentRanges[prim.group][prim.normalTexCoord].emplace_back(first, count);
     }
-    for (std::size_t g = 0; g < blocks.size(); ++g)
-        if (blocks[g].generateNormals) generateNormals(blocks[g], generated[g]);
+    for (std::size_t g = 0; g < blocks.size(); ++g) {
+        // Tangents are made orthogonal to the normals, so those come first.
+        if (blocks[g].generateNormals) generateNormals(blocks[g], normalRanges[g]);
+        for (int set = 0; set < 2; ++set)
+            if (!tangentRanges[g][set].empty()) generateTangents(scene_, tangentRanges[g][set], set);
+    }
+}
+
+// Reads a vertex attribute whose NaN or infinite components are a shading fault, not a geometry
+// one: they become `replacement`, counted once per primitive group in `repairs`.
+std::vector<float> SceneBuilder::readRepaired(const VertexGroup& group, const MeshInstance& instance, int accessor,
+                                              const char* attribute, const Format& format, std::size_t count,
+                                              float replacement, std::size_t& repairs) const {
+    const Use use{attribute, static_cast<int>(instance.mesh), group.firstPrimitive};
+    if (reader_.count(accessor) != count)
+        fail(path_, describe(model_, accessor, use) + ": count " + std::to_string(reader_.count(accessor)) +
+                        " differs from the POSITION count " + std::to_string(count));
+    std::vector<float> values = reader_.floats(accessor, use, format, count);
+    bool repaired = false;
+    for (float& f : values) {
+        if (!std::isfinite(f)) {
+            f = replacement;
+            repaired = true;
+        }
+    }
+    if (repaired) ++repairs;
+    return values;
+}
+
+template <class T>
+void SceneBuilder::appendToStream(std::vector<T>& stream, const std::vector<T>& values, std::size_t base,
+                                  std::size_t count, const T& defaultValue) {
+    if (values.empty() && stream.empty()) return;
+    if (stream.empty()) stream.assign(base, defaultValue);
+    if (values.empty()) stream.insert(stream.end(), count, defaultValue);
+    else stream.insert(stream.end(), values.begin(), values.end());
 }
 
 SceneBuilder::Block SceneBuilder::appendVertices(const MeshInstance& instance, const VertexGroup& group,
-                                                 const glm::dmat3& normalMatrix) {
+                                                 const glm::dmat3& normalMatrix, bool mirrored) {
     const Use positionUse{"POSITION", static_cast<int>(instance.mesh), group.firstPrimitive};
     const std::size_t room = kMaxVertices - scene_.vertices.size();
     const std::vector<float> positions = reader_.floats(group.position, positionUse, kPositionFormat, room);
@@ -107,44 +167,37 @@ SceneBuilder::Block SceneBuilder::appendVertices(const MeshInstance& instance, c
             fail(path_, describe(model_, group.position, positionUse) + ": non-finite position (NaN or infinity) at element " +
                             std::to_string(i / 3));
 
-    const auto sameCount = [&](int accessor, const Use& use) {
-        if (reader_.count(accessor) != count)
-            fail(path_, describe(model_, accessor, use) + ": count " + std::to_string(reader_.count(accessor)) +
-                            " differs from the POSITION count " + std::to_string(count));
-    };
     Block block;
     block.base = static_cast<std::uint32_t>(scene_.vertices.size());
     block.count = static_cast<std::uint32_t>(count);
 
+    // Broken normals (and tangents) are a shading fault, not a geometry one: generate them instead.
+    std::size_t brokenNormals = 0, brokenTangents = 0;
     std::vector<float> normals;
-    if (group.normal >= 0) {
-        const Use use{"NORMAL", static_cast<int>(instance.mesh), group.firstPrimitive};
-        sameCount(group.normal, use);
-        normals = reader_.floats(group.normal, use, kNormalFormat, count);
-        // Broken normals are a shading fault, not a geometry one: generate them instead.
-        if (!std::all_of(normals.begin(), normals.end(), [](float f) { return std::isfinite(f); })) {
-            ++skipped_.regeneratedNormals;
-            normals.clear();
-        }
+    if (group.normal >= 0) normals = readRepaired(group, instance, group.normal, "NORMAL", kNormalFormat, count, NAN, brokenNormals);
+    if (brokenNormals > 0) {
+        ++skipped_.regeneratedNormals;
+        normals.clear();
     }
     block.generateNormals = normals.empty();
 
-    std::vector<float> uvs;
-    if (group.texcoord >= 0) {
-        const Use use{"TEXCOORD_0", static_cast<int>(instance.mesh), group.firstPrimitive};
-        sameCount(group.texcoord, use);
-        uvs = reader_.floats(group.texcoord, use, kTexcoordFormat, count);
-        bool repaired = false;
-        for (float& f : uvs) {
-            if (!std::isfinite(f)) {
-                f = 0.0f;
-                repaired = true;
-            }
-        }
-        if (repaired) ++skipped_.repairedTexcoords;
+    std::vector<float> uvs, uvs1, colors, fileTangents;
+    if (group.texcoord >= 0)
+        uvs = readRepaired(group, instance, group.texcoord, "TEXCOORD_0", kTexcoordFormat, count, 0.0f, skipped_.repairedTexcoords);
+    if (group.texcoord1 >= 0 && group.readsTexcoord1)
+        uvs1 = readRepaired(group, instance, group.texcoord1, "TEXCOORD_1", kTexcoordFormat, count, 0.0f, skipped_.repairedTexcoords);
+    if (group.color >= 0)
+        colors = readRepaired(group, instance, group.color, "COLOR_0", kColorFormat, count, 1.0f, skipped_.repairedColours);
+    if (group.tangent >= 0 && group.needsTangents)
+        fileTangents = readRepaired(group, instance, group.tangent, "TANGENT", kTangentFormat, count, NAN, brokenTangents);
+    if (brokenTangents > 0) {
+        ++skipped_.regeneratedTangents;
+        fileTangents.clear();
     }
+    block.generateTangents = group.needsTangents && fileTangents.empty();
 
     const glm::dmat4& m = instance.world;
+    const glm::dmat3 linear(m);
     scene_.vertices.reserve(scene_.vertices.size() + count);
     for (std::size_t i = 0; i < count; ++i) {
         Vertex v;
@@ -159,8 +212,57 @@ SceneBuilder::Block SceneBuilder::appendVertices(const MeshInstance& instance, c
         if (!uvs.empty()) v.uv = glm::vec2(uvs[2 * i], uvs[2 * i + 1]);
         scene_.vertices.push_back(v);
     }
+
+    std::vector<glm::vec2> uv1Stream;
+    for (std::size_t i = 0; i < uvs1.size() / 2; ++i) uv1Stream.emplace_back(uvs1[2 * i], uvs1[2 * i + 1]);
+    std::vector<glm::vec4> colorStream;
+    const std::size_t colorComponents = count > 0 ? colors.size() / count : 0;  // 3 or 4
+    for (std::size_t i = 0; i < count && !colors.empty(); ++i) {
+        const float* c = &colors[i * colorComponents];
+        colorStream.emplace_back(c[0], c[1], c[2], colorComponents == 4 ? c[3] : 1.0f);
+    }
+    // A tangent is a direction in the surface: it transforms by the linear part itself (not the
+    // inverse transpose, as normals do). Under a mirror the bitangent cross(n, t) turns around
+    // while the texture's v direction does not, so w changes sign.
+    std::vector<glm::vec4> tangentStream;
+    for (std::size_t i = 0; i < fileTangents.size() / 4; ++i) {
+        const float* t = &fileTangents[4 * i];
+        const glm::vec3 direction = glm::vec3(linear * glm::dvec3(t[0], t[1], t[2]));
+        const float length = glm::length(direction);
+        // A singular transform (a zero scale) leaves no direction; any unit vector will do there.
+        const glm::vec3 unit = length > 0.0f && std::isfinite(length) ? direction / length : glm::vec3(1.0f, 0.0f, 0.0f);
+        const float w = (t[3] < 0.0f ? -1.0f : 1.0f) * (mirrored ? -1.0f : 1.0f);
+        tangentStream.emplace_back(unit, w);
+    }
+    if (block.generateTangents) tangentStream.assign(count, glm::vec4(1.0f, 0.0f, 0.0f, 1.0f));  // generated later
+    appendToStream(scene_.uv1, uv1Stream, block.base, count, glm::vec2(0.0f));
+    appendToStream(scene_.colors, colorStream, block.base, count, glm::vec4(1.0f));
+    appendToStream(scene_.tangents, tangentStream, block.base, count, glm::vec4(1.0f, 0.0f, 0.0f, 1.0f));
     return block;
 }
+
+namespace {
+
+// glTF's triangle modes as a triangle list, winding kept (glTF 2.0, "3.7.2.1 Overview" of meshes):
+// strip triangle i is (i, i+1+i%2, i+2-i%2), fan triangle i is (i+1, i+2, 0). Fewer than three
+// vertices make no triangle.
+std::vector<std::uint32_t> asTriangleList(int mode, std::vector<std::uint32_t> vertices) {
+    if (vertices.size() < 3) return {};
+    if (mode == TINYGLTF_MODE_TRIANGLES) return vertices;
+    std::vector<std::uint32_t> triangles;
+    triangles.reserve(3 * (vertices.size() - 2));
+    for (std::size_t i = 0; i + 2 < vertices.size(); ++i) {
+        if (mode == TINYGLTF_MODE_TRIANGLE_STRIP) {
+            const std::size_t odd = i % 2;
+            triangles.insert(triangles.end(), {vertices[i], vertices[i + 1 + odd], vertices[i + 2 - odd]});
+        } else {
+            triangles.insert(triangles.end(), {vertices[i + 1], vertices[i + 2], vertices[0]});
+        }
+    }
+    return triangles;
+}
+
+}  // namespace
 
 void SceneBuilder::appendTriangles(const MeshInstance& instance, const PrimitivePlan& prim, const Block& block,
                                    bool mirrored) {
@@ -182,11 +284,15 @@ void SceneBuilder::appendTriangles(const MeshInstance& instance, const Primitive
         local.resize(block.count);
         for (std::uint32_t i = 0; i < block.count; ++i) local[i] = i;
     }
-    if (local.size() % 3 != 0) {
+    if (prim.mode == TINYGLTF_MODE_TRIANGLES && local.size() % 3 != 0) {
         const std::string what = prim.indices >= 0 ? describe(model_, prim.indices, use) : where();
         fail(path_, what + ": " + std::to_string(local.size()) + (prim.indices >= 0 ? " indices" : " vertices") +
                         " do not make whole triangles (not a multiple of 3)");
     }
+    // A strip or fan of n vertices makes 3 (n - 2) indices, up to three times what it reads.
+    if (prim.mode != TINYGLTF_MODE_TRIANGLES && local.size() > 2 && 3 * (local.size() - 2) > room)
+        fail(path_, where() + ": too many triangles to draw (index limit)");
+    local = asTriangleList(prim.mode, std::move(local));
     for (std::size_t t = 0; t < local.size(); t += 3) {
         scene_.indices.push_back(block.base + local[t]);
         scene_.indices.push_back(block.base + local[t + (mirrored ? 2 : 1)]);
@@ -197,7 +303,7 @@ void SceneBuilder::appendTriangles(const MeshInstance& instance, const Primitive
 // Per-vertex normals from the triangles that use the vertices, each face weighted by its area
 // (the cross product of two edges is twice the area). Positions are already in world space and
 // winding already corrected, so the result needs no transform.
-void SceneBuilder::generateNormals(const Block& block, const std::vector<std::pair<std::size_t, std::size_t>>& ranges) {
+void SceneBuilder::generateNormals(const Block& block, const Ranges& ranges) {
     std::vector<glm::dvec3> sums(block.count, glm::dvec3(0.0));
     for (const auto& [first, count] : ranges) {
         for (std::size_t t = first; t < first + count; t += 3) {
@@ -224,6 +330,10 @@ void SceneBuilder::finish() {
         cursor[run.material] += run.indexCount;
     }
     scene_.indices.swap(grouped);
+    // A stream only a skipped or empty primitive asked for is not part of the scene.
+    if (!colorsDrawn_) scene_.colors.clear();
+    if (!uv1Drawn_) scene_.uv1.clear();
+    if (!tangentsDrawn_) scene_.tangents.clear();
     scene_.draws.clear();
     for (std::size_t m = 0; m + 1 < offsets.size(); ++m)
         if (offsets[m + 1] > offsets[m])

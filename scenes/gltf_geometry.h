@@ -23,20 +23,26 @@ namespace ml::gltf {
 
 // Counts of what was skipped or repaired, each reported once as a warning.
 struct Skipped {
-    std::map<int, std::size_t> primitiveModes;  // mode -> primitives
+    std::map<int, std::size_t> primitiveModes;  // POINTS, LINES, LINE_LOOP, LINE_STRIP (or unknown) -> primitives
     std::size_t withoutPosition = 0;
     std::size_t emptyPrimitives = 0;
     std::size_t morphedMeshes = 0;
-    std::size_t vertexColours = 0;
-    std::size_t regeneratedNormals = 0;  // primitives whose NORMAL held NaN or infinity
-    std::size_t repairedTexcoords = 0;
+    std::size_t regeneratedNormals = 0;   // primitives whose NORMAL held NaN or infinity
+    std::size_t regeneratedTangents = 0;  // primitives whose TANGENT held NaN or infinity
+    std::size_t repairedTexcoords = 0;    // TEXCOORD_0 or TEXCOORD_1 with NaN or infinity
+    std::size_t repairedColours = 0;
+    std::size_t orthographicCameras = 0;
 };
 
 // Primitives that share their vertex attributes (one big vertex buffer drawn in several material
 // runs) share one block of vertices per instance rather than each copying all of it.
 struct VertexGroup {
-    int position = -1, normal = -1, texcoord = -1;  // accessors; -1 where absent
-    int firstPrimitive = 0;                          // names the group in messages
+    // Accessors; -1 where absent.
+    int position = -1, normal = -1, texcoord = -1, texcoord1 = -1, color = -1, tangent = -1;
+    int firstPrimitive = 0;  // names the group in messages
+    // What the group's primitives' materials ask for: a stream is read only when one does.
+    bool readsTexcoord1 = false;
+    bool needsTangents = false;
 };
 
 struct PrimitivePlan {
@@ -44,6 +50,10 @@ struct PrimitivePlan {
     std::size_t group;
     int indices;   // accessor, or -1
     int material;  // glTF material, or -1
+    int mode;      // TRIANGLES, TRIANGLE_STRIP or TRIANGLE_FAN
+    bool readsTexcoord1 = false;
+    bool normalMapped = false;
+    int normalTexCoord = 0;  // the UV set tangents are generated from
 };
 
 // How one glTF mesh becomes triangles, worked out once however many nodes instance it, so that a
@@ -69,7 +79,8 @@ public:
 
     void addInstance(const MeshInstance& instance, const MeshPlan& plan);
 
-    // One draw range per material (instances append in node order, so a material recurs).
+    // One draw range per material (instances append in node order, so a material recurs), and
+    // the optional streams dropped where no drawn primitive asked for them.
     void finish();
 
 private:
@@ -77,11 +88,23 @@ private:
         std::uint32_t base = 0;
         std::uint32_t count = 0;
         bool generateNormals = false;
+        bool generateTangents = false;
     };
+    using Ranges = std::vector<std::pair<std::size_t, std::size_t>>;
 
-    Block appendVertices(const MeshInstance& instance, const VertexGroup& group, const glm::dmat3& normalMatrix);
+    Block appendVertices(const MeshInstance& instance, const VertexGroup& group, const glm::dmat3& normalMatrix,
+                         bool mirrored);
+    std::vector<float> readRepaired(const VertexGroup& group, const MeshInstance& instance, int accessor,
+                                    const char* attribute, const Format& format, std::size_t count, float replacement,
+                                    std::size_t& repairs) const;
     void appendTriangles(const MeshInstance& instance, const PrimitivePlan& prim, const Block& block, bool mirrored);
-    void generateNormals(const Block& block, const std::vector<std::pair<std::size_t, std::size_t>>& ranges);
+    void generateNormals(const Block& block, const Ranges& ranges);
+
+    // Optional streams (Scene::colors, uv1, tangents): once a stream exists, every vertex appended
+    // gets an element, its own or the default.
+    template <class T>
+    void appendToStream(std::vector<T>& stream, const std::vector<T>& values, std::size_t base, std::size_t count,
+                        const T& defaultValue);
 
     const std::string& path_;
     const tinygltf::Model& model_;
@@ -90,6 +113,8 @@ private:
     MaterialConverter& materials_;
     AccessorReader reader_;
     std::vector<DrawRange> runs_;  // per primitive instance, before grouping
+    // Whether a drawn primitive asked for each optional stream.
+    bool colorsDrawn_ = false, uv1Drawn_ = false, tangentsDrawn_ = false;
 };
 
 }  // namespace ml::gltf

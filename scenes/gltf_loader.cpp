@@ -7,6 +7,7 @@
 //   gltf_geometry    plan each mesh's primitives once and append each instance's triangles in
 //                    world space, reading through gltf_accessors (which checks every byte range);
 //   gltf_materials   convert materials and their images on first use;
+//   gltf_cameras     place the perspective cameras the node trees hold;
 // and here, the warnings for what the scene model does not hold. gltf_common holds the limits
 // and the one-line messages all of them use.
 #include "scenes/gltf_loader.h"
@@ -15,6 +16,7 @@
 #include <new>
 #include <optional>
 
+#include "scenes/gltf_cameras.h"
 #include "scenes/gltf_common.h"
 #include "scenes/gltf_container.h"
 #include "scenes/gltf_geometry.h"
@@ -27,6 +29,23 @@ namespace {
 using namespace gltf;
 
 // --- Warnings ------------------------------------------------------------------------------------
+
+std::size_t skippedPrimitives(const Skipped& skipped) {
+    std::size_t total = 0;
+    for (const auto& entry : skipped.primitiveModes) total += entry.second;
+    return total;
+}
+
+// "3 LINES primitives, 1 POINTS primitive".
+std::string skippedModes(const Skipped& skipped) {
+    static const char* const kModeNames[] = {"POINTS", "LINES", "LINE_LOOP", "LINE_STRIP"};
+    std::string modes;
+    for (const auto& [mode, n] : skipped.primitiveModes) {
+        const std::string name = mode >= 0 && mode < 4 ? kModeNames[mode] : "mode " + std::to_string(mode);
+        modes += (modes.empty() ? "" : ", ") + std::to_string(n) + " " + name + (n == 1 ? " primitive" : " primitives");
+    }
+    return modes;
+}
 
 // Extensions this loader reads (or whose absence changes nothing it reads).
 bool isHandledExtension(const std::string& name) {
@@ -41,7 +60,8 @@ std::vector<std::string> unmodelledFeatures(const tinygltf::Model& model, const 
     };
     note(model.skins.size(), counted(model.skins.size(), "skin", "skins") + " skipped (not modelled; skinned meshes are drawn unposed)");
     note(model.animations.size(), counted(model.animations.size(), "animation", "animations") + " skipped (not modelled)");
-    note(model.cameras.size(), counted(model.cameras.size(), "camera", "cameras") + " skipped (not modelled)");
+    note(skipped.orthographicCameras, counted(skipped.orthographicCameras, "orthographic camera", "orthographic cameras") +
+                                          " skipped (only perspective cameras are modelled)");
     note(skipped.morphedMeshes, "morph targets of " + counted(skipped.morphedMeshes, "mesh", "meshes") + " skipped (not modelled)");
 
     // tinygltf reads KHR_lights_punctual's lights, so those can be counted.
@@ -52,25 +72,20 @@ std::vector<std::string> unmodelledFeatures(const tinygltf::Model& model, const 
         if (!(countedLights && ext == "KHR_lights_punctual") && !isHandledExtension(ext))
             lines.push_back("extension " + clip(ext, 80) + " skipped (not modelled)");
 
-    if (!skipped.primitiveModes.empty()) {
-        static const char* const kModeNames[] = {"POINTS", "LINES", "LINE_LOOP", "LINE_STRIP", "TRIANGLES",
-                                                 "TRIANGLE_STRIP", "TRIANGLE_FAN"};
-        std::size_t total = 0;
-        std::string modes;
-        for (const auto& [mode, n] : skipped.primitiveModes) {
-            total += n;
-            const std::string name = mode >= 0 && mode < 7 ? kModeNames[mode] : "mode " + std::to_string(mode);
-            modes += std::string(modes.empty() ? "" : ", ") + name + " x" + std::to_string(n);
-        }
-        lines.push_back(counted(total, "primitive", "primitives") + " with a non-triangle mode skipped (only TRIANGLES is modelled): " + modes);
-    }
+    if (!skipped.primitiveModes.empty())
+        lines.push_back(counted(skippedPrimitives(skipped), "primitive", "primitives") +
+                        " skipped (points and lines are not drawn): " + skippedModes(skipped));
     note(skipped.withoutPosition, counted(skipped.withoutPosition, "primitive", "primitives") + " without POSITION skipped");
     note(skipped.emptyPrimitives, counted(skipped.emptyPrimitives, "empty primitive", "empty primitives") + " skipped (no triangles)");
-    note(skipped.vertexColours, "vertex colours (COLOR_0) of " + counted(skipped.vertexColours, "primitive", "primitives") + " ignored (not modelled)");
     note(skipped.regeneratedNormals, "NORMAL of " + counted(skipped.regeneratedNormals, "primitive", "primitives") +
                                          " held NaN or infinity; normals generated instead");
-    note(skipped.repairedTexcoords, "TEXCOORD_0 of " + counted(skipped.repairedTexcoords, "primitive", "primitives") +
+    note(skipped.regeneratedTangents, "TANGENT of " + counted(skipped.regeneratedTangents, "primitive", "primitives") +
+                                          " held NaN or infinity; tangents generated instead");
+    note(skipped.repairedTexcoords, "texture coordinates (TEXCOORD_0 or TEXCOORD_1) of " +
+                                        counted(skipped.repairedTexcoords, "primitive", "primitives") +
                                         " held NaN or infinity; those set to 0");
+    note(skipped.repairedColours, "COLOR_0 of " + counted(skipped.repairedColours, "primitive", "primitives") +
+                                      " held NaN or infinity; those set to 1");
     return lines;
 }
 
@@ -84,13 +99,17 @@ Scene loadChecked(const std::string& path, std::vector<std::string>& warnings) {
     MaterialConverter materials(path, model, scene);
     SceneBuilder builder(path, model, scene, skipped, materials);
     std::vector<std::optional<MeshPlan>> plans(model.meshes.size());
-    for (const MeshInstance& instance : flattenNodes(path, model)) {
+    const FlatScene flat = flattenNodes(path, model);
+    for (const MeshInstance& instance : flat.meshes) {
         std::optional<MeshPlan>& plan = plans[instance.mesh];
         if (!plan) plan = planMesh(path, model, instance.mesh, skipped);
         builder.addInstance(instance, *plan);
     }
-    if (scene.indices.empty()) fail(path, "the scene has no triangles to draw (empty scene)");
+    if (scene.indices.empty())
+        fail(path, "the scene has no triangles to draw " +
+                       (skipped.primitiveModes.empty() ? std::string("(empty scene)") : "(skipped: " + skippedModes(skipped) + ")"));
     builder.finish();
+    scene.cameras = convertCameras(path, model, flat.cameras, skipped.orthographicCameras);
     computeBounds(scene);
 
     for (const std::string& line : unmodelledFeatures(model, skipped)) warnings.push_back(path + ": " + line);

@@ -96,10 +96,6 @@ bool readNumbers(const tinygltf::Value& v, std::size_t n, double* out) {
     return true;
 }
 
-bool isOneOf(int value, std::initializer_list<int> options) {
-    return std::find(options.begin(), options.end(), value) != options.end();
-}
-
 }  // namespace
 
 Material MaterialConverter::convertMaterial(std::size_t index) {
@@ -292,6 +288,58 @@ std::vector<std::string> MaterialConverter::warnings() const {
                         " could not be decoded; a 1x1 white texture stands in: " + list);
     }
     return lines;
+}
+
+// --- What a material asks of the geometry --------------------------------------------------------
+
+namespace {
+
+// KHR_texture_transform may name the UV set instead of the textureInfo (its texCoord wins).
+double effectiveTexCoord(int texCoord, const tinygltf::ExtensionMap& extensions) {
+    const auto it = extensions.find("KHR_texture_transform");
+    if (it == extensions.end() || !it->second.IsObject() || !it->second.Has("texCoord")) return texCoord;
+    const tinygltf::Value& value = it->second.Get("texCoord");
+    // Not a number: a value no UV set has, so that checkTexCoords names it.
+    return value.IsNumber() ? value.GetNumberAsDouble() : -1.0;
+}
+
+template <class Info>
+void addIfPresent(std::vector<MaterialTexture>& out, const char* slot, const Info& info) {
+    if (info.index >= 0) out.push_back({slot, effectiveTexCoord(info.texCoord, info.extensions)});
+}
+
+}  // namespace
+
+std::vector<MaterialTexture> texturesOf(const tinygltf::Material& material) {
+    std::vector<MaterialTexture> out;
+    addIfPresent(out, "baseColorTexture", material.pbrMetallicRoughness.baseColorTexture);
+    addIfPresent(out, "metallicRoughnessTexture", material.pbrMetallicRoughness.metallicRoughnessTexture);
+    addIfPresent(out, "normalTexture", material.normalTexture);
+    addIfPresent(out, "occlusionTexture", material.occlusionTexture);
+    addIfPresent(out, "emissiveTexture", material.emissiveTexture);
+    return out;
+}
+
+bool hasNormalTexture(const tinygltf::Material& material) { return material.normalTexture.index >= 0; }
+
+int normalTextureTexCoord(const tinygltf::Material& material) {
+    if (!hasNormalTexture(material)) return 0;
+    return effectiveTexCoord(material.normalTexture.texCoord, material.normalTexture.extensions) == 1.0 ? 1 : 0;
+}
+
+bool usesTexCoord1(const tinygltf::Material& material) {
+    const std::vector<MaterialTexture> textures = texturesOf(material);
+    return std::any_of(textures.begin(), textures.end(), [](const MaterialTexture& t) { return t.texCoord == 1.0; });
+}
+
+void checkTexCoords(const std::string& path, const tinygltf::Model& model, std::size_t material) {
+    for (const MaterialTexture& texture : texturesOf(model.materials[material]))
+        if (texture.texCoord != 0.0 && texture.texCoord != 1.0) {
+            std::ostringstream value;
+            value << texture.texCoord;
+            fail(path, named("materials", material, model.materials[material].name) + ": " + texture.slot +
+                           " reads texCoord " + value.str() + " (only TEXCOORD_0 and TEXCOORD_1 are supported)");
+        }
 }
 
 }  // namespace ml::gltf

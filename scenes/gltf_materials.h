@@ -56,4 +56,26 @@ private:
     std::vector<std::string> failedImages_;
 };
 
+// --- What a material asks of the geometry --------------------------------------------------------
+// The vertex streams a primitive needs follow from its material: TEXCOORD_1 where a texture reads
+// UV set 1, tangents where there is a normal texture.
+
+// A texture a material reads, and the UV set it reads it through.
+struct MaterialTexture {
+    const char* slot;  // "baseColorTexture", "normalTexture", ...
+    double texCoord;   // the textureInfo's texCoord, or KHR_texture_transform's override
+};
+
+// The textureInfos of a material that name a texture (index >= 0).
+std::vector<MaterialTexture> texturesOf(const tinygltf::Material& material);
+
+bool hasNormalTexture(const tinygltf::Material& material);
+// The UV set the normal texture reads (0 without a normal texture).
+int normalTextureTexCoord(const tinygltf::Material& material);
+bool usesTexCoord1(const tinygltf::Material& material);
+
+// Throws "<path>: materials[i] 'name': normalTexture reads texCoord 2 ..." for a texture that
+// reads a UV set other than 0 or 1 (the scene model holds two).
+void checkTexCoords(const std::string& path, const tinygltf::Model& model, std::size_t material);
+
 }  // namespace ml::gltf

@@ -41,7 +41,7 @@ glm::dmat4 localTransform(const std::string& path, const tinygltf::Node& node, s
 
 }  // namespace
 
-std::vector<MeshInstance> flattenNodes(const std::string& path, const tinygltf::Model& model) {
+FlatScene flattenNodes(const std::string& path, const tinygltf::Model& model) {
     if (model.scenes.empty()) fail(path, "no scene: the file defines no scenes");
     std::size_t sceneIndex = 0;
     if (model.defaultScene >= 0) {
@@ -72,7 +72,7 @@ std::vector<MeshInstance> flattenNodes(const std::string& path, const tinygltf::
     };
     for (auto it = scene.nodes.rbegin(); it != scene.nodes.rend(); ++it) push(*it, -1, sceneName);
 
-    std::vector<MeshInstance> instances;
+    FlatScene flat;
     while (!stack.empty()) {
         const Step step = stack.back();
         stack.pop_back();
@@ -93,13 +93,19 @@ std::vector<MeshInstance> flattenNodes(const std::string& path, const tinygltf::
             if (static_cast<std::size_t>(node.mesh) >= model.meshes.size())
                 fail(path, name + ": mesh index " + std::to_string(node.mesh) + " out of range (" +
                                std::to_string(model.meshes.size()) + " meshes)");
-            instances.push_back({step.node, static_cast<std::size_t>(node.mesh), world[step.node]});
+            flat.meshes.push_back({step.node, static_cast<std::size_t>(node.mesh), world[step.node]});
+        }
+        if (node.camera >= 0) {
+            if (static_cast<std::size_t>(node.camera) >= model.cameras.size())
+                fail(path, name + ": cameras[" + std::to_string(node.camera) + "] out of range (" +
+                               std::to_string(model.cameras.size()) + " cameras)");
+            flat.cameras.push_back({step.node, static_cast<std::size_t>(node.camera), world[step.node]});
         }
         stack.push_back({step.node, step.parent, true});
         for (auto it = node.children.rbegin(); it != node.children.rend(); ++it)
             push(*it, static_cast<std::ptrdiff_t>(step.node), name);
     }
-    return instances;
+    return flat;
 }
 
 }  // namespace ml::gltf

@@ -17,10 +17,22 @@ struct MeshInstance {
     glm::dmat4 world;
 };
 
-// The default scene's mesh instances with their world transforms. Nodes are walked with an
-// explicit stack (a 100,000-deep chain must not recurse), and each node may be entered once:
-// glTF nodes form disjoint trees, and re-entering would loop on a cycle or multiply a shared
-// subtree exponentially.
-std::vector<MeshInstance> flattenNodes(const std::string& path, const tinygltf::Model& model);
+struct CameraInstance {
+    std::size_t node;
+    std::size_t camera;  // checked against model.cameras
+    glm::dmat4 world;
+};
+
+// What the default scene places, in node-walk order (depth first, children in their order).
+struct FlatScene {
+    std::vector<MeshInstance> meshes;
+    std::vector<CameraInstance> cameras;
+};
+
+// The default scene's mesh and camera instances with their world transforms. Nodes are walked
+// with an explicit stack (a 100,000-deep chain must not recurse), and each node may be entered
+// once: glTF nodes form disjoint trees, and re-entering would loop on a cycle or multiply a
+// shared subtree exponentially.
+FlatScene flattenNodes(const std::string& path, const tinygltf::Model& model);
 
 }  // namespace ml::gltf

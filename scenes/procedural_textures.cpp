@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <functional>
+#include <vector>
 
 #include <glm/gtc/constants.hpp>
 
@@ -92,20 +93,77 @@ float smoothstep(float e0, float e1, float x) {
     return t * t * (3.0f - 2.0f * t);
 }
 
+// A tangent-space normal map (linear RGBA8, glTF's encoding n * 0.5 + 0.5) of a tileable height
+// field given in pixels of height per pixel: x follows +u, y follows +v (down the image rows),
+// z out of the surface.
+Image normalMapFromHeight(const char* name, int size, const std::function<float(float, float)>& height) {
+    Image img;
+    img.name = name;
+    img.width = size;
+    img.height = size;
+    img.srgb = false;
+    img.rgba8.resize(std::size_t(size) * std::size_t(size) * 4);
+    std::vector<float> h(std::size_t(size) * std::size_t(size));
+    for (int y = 0; y < size; ++y)
+        for (int x = 0; x < size; ++x) h[std::size_t(y) * std::size_t(size) + std::size_t(x)] = height(float(x) + 0.5f, float(y) + 0.5f);
+    const auto at = [&](int x, int y) { return h[std::size_t(wrap(y, size)) * std::size_t(size) + std::size_t(wrap(x, size))]; };
+    for (int y = 0; y < size; ++y) {
+        for (int x = 0; x < size; ++x) {
+            const float dx = 0.5f * (at(x + 1, y) - at(x - 1, y));
+            const float dy = 0.5f * (at(x, y + 1) - at(x, y - 1));
+            const glm::vec3 n = glm::normalize(glm::vec3(-dx, -dy, 1.0f));
+            std::uint8_t* p = &img.rgba8[(std::size_t(y) * std::size_t(size) + std::size_t(x)) * 4];
+            for (int c = 0; c < 3; ++c) p[c] = static_cast<std::uint8_t>(std::lround((n[c] * 0.5f + 0.5f) * 255.0f));
+            p[3] = 255;
+        }
+    }
+    return img;
+}
+
+// Where a pixel centre falls in a pattern of rectangular cells: the cell and the distance to its
+// nearest edge, in pixels.
+struct CellHit {
+    int column = 0, row = 0;
+    float edge = 0.0f;
+};
+
+// floorTiles' 8 x 8 tiles.
+CellHit floorTileAt(float px, float py, float cell) {
+    CellHit h;
+    h.column = int(px / cell);
+    h.row = int(py / cell);
+    const float lx = px - float(h.column) * cell, ly = py - float(h.row) * cell;
+    h.edge = std::min(std::min(lx, cell - lx), std::min(ly, cell - ly));
+    return h;
+}
+
+// stoneBlocks' running bond: each row shifted by half a block from the one above.
+CellHit stoneBlockAt(float px, float py, float bw, float bh, int perRow) {
+    CellHit h;
+    h.row = int(py / bh);
+    const float shifted = px + ((h.row % 2) ? 0.5f * bw : 0.0f);
+    h.column = int(shifted / bw) % perRow;
+    const float lx = std::fmod(shifted, bw), ly = py - float(h.row) * bh;
+    h.edge = std::min(std::min(lx, bw - lx), std::min(ly, bh - ly));
+    return h;
+}
+
+constexpr int kFloorTiles = 8;
+constexpr int kBlocksPerRow = 4, kBlockRows = 8;
+
 }  // namespace
 
 Image floorTiles(int size) {
-    const int tiles = 8;
-    const float cell = float(size) / float(tiles);
+    const float cell = float(size) / float(kFloorTiles);
     const float mortar = std::max(1.0f, cell / 40.0f);  // half-width in pixels
     const glm::vec3 cream{0.58f, 0.49f, 0.35f};
     const glm::vec3 rose{0.36f, 0.20f, 0.13f};
     const glm::vec3 mortarColour{0.10f, 0.09f, 0.08f};
     return makeImage("floor_tiles", size, [&](int x, int y) {
         const float px = float(x) + 0.5f, py = float(y) + 0.5f;
-        const int tx = int(px / cell), ty = int(py / cell);
-        const float lx = px - float(tx) * cell, ly = py - float(ty) * cell;
-        const float edge = std::min(std::min(lx, cell - lx), std::min(ly, cell - ly));
+        const CellHit tile = floorTileAt(px, py, cell);
+        const int tx = tile.column, ty = tile.row;
+        const float edge = tile.edge;
         glm::vec3 stone = ((tx + ty) % 2 == 0) ? cream : rose;
         stone *= 0.8f + 0.4f * hashUnit(tx, ty, 11u);                        // per-tile value
         stone *= 0.75f + 0.5f * fbm(px, py, size, 16, 4, 12u);               // grain
@@ -115,19 +173,28 @@ Image floorTiles(int size) {
     });
 }
 
+Image floorTilesNormal(int size) {
+    const float cell = float(size) / float(kFloorTiles);
+    const float mortar = std::max(1.0f, cell / 40.0f);
+    return normalMapFromHeight("floor_tiles_normal", size, [&](float px, float py) {
+        const CellHit tile = floorTileAt(px, py, cell);
+        // Tiles stand 2 px proud of the mortar with rounded edges; a little surface grain.
+        const float bevel = smoothstep(mortar - 0.5f, mortar + cell * 0.06f, tile.edge);
+        return 2.0f * bevel + 0.6f * fbm(px, py, size, 32, 3, 13u);
+    });
+}
+
 Image stoneBlocks(int size) {
-    const int perRow = 4, rows = 8;
+    const int perRow = kBlocksPerRow, rows = kBlockRows;
     const float bw = float(size) / float(perRow), bh = float(size) / float(rows);
     const float mortar = std::max(1.0f, bh / 24.0f);
     const glm::vec3 sand{0.47f, 0.39f, 0.28f};
     const glm::vec3 mortarColour{0.30f, 0.28f, 0.24f};
     return makeImage("stone_blocks", size, [&](int x, int y) {
         const float px = float(x) + 0.5f, py = float(y) + 0.5f;
-        const int row = int(py / bh);
-        const float shifted = px + ((row % 2) ? 0.5f * bw : 0.0f);
-        const int col = int(shifted / bw) % perRow;
-        const float lx = std::fmod(shifted, bw), ly = py - float(row) * bh;
-        const float edge = std::min(std::min(lx, bw - lx), std::min(ly, bh - ly));
+        const CellHit block = stoneBlockAt(px, py, bw, bh, perRow);
+        const int row = block.row, col = block.column;
+        const float edge = block.edge;
         glm::vec3 stone = sand * (0.8f + 0.35f * hashUnit(col, row, 21u));
         stone.r *= 0.95f + 0.1f * hashUnit(col, row, 22u);  // slight hue shift per block
         stone *= 0.7f + 0.6f * fbm(px, py, size, 8, 5, 23u);
@@ -135,6 +202,55 @@ Image stoneBlocks(int size) {
         const float m = smoothstep(mortar + 0.5f, mortar - 0.5f, edge);
         return glm::mix(stone, mortarColour, m);
     });
+}
+
+Image stoneBlocksNormal(int size) {
+    const float bw = float(size) / float(kBlocksPerRow), bh = float(size) / float(kBlockRows);
+    const float mortar = std::max(1.0f, bh / 24.0f);
+    return normalMapFromHeight("stone_blocks_normal", size, [&](float px, float py) {
+        const CellHit block = stoneBlockAt(px, py, bw, bh, kBlocksPerRow);
+        // Rough-hewn faces: deep mortar joints, chamfered edges, a rough face per block.
+        const float chamfer = smoothstep(mortar - 0.5f, mortar + 3.0f, block.edge);
+        return 2.5f * chamfer + 2.0f * chamfer * fbm(px, py, size, 8, 5, 24u);
+    });
+}
+
+Image foliage(int size) {
+    Image img;
+    img.name = "foliage";
+    img.width = size;
+    img.height = size;
+    img.rgba8.assign(std::size_t(size) * std::size_t(size) * 4, 0);
+    // Leaves: ellipses scattered over a bush's silhouette (wider at the bottom), each its own shade;
+    // alpha is 1 on a leaf and 0 between them, for alphaMode MASK.
+    const int leaves = 420;
+    const float s = float(size);
+    for (int i = 0; i < leaves; ++i) {
+        const float v = 0.08f + 0.9f * std::sqrt(hashUnit(i, 0, 71u));  // denser towards the bottom
+        const float halfWidth = 0.12f + 0.36f * v;
+        const float cx = s * (0.5f + halfWidth * (2.0f * hashUnit(i, 1, 71u) - 1.0f)), cy = s * v;
+        const float angle = glm::two_pi<float>() * hashUnit(i, 2, 71u);
+        const float length = s * (0.035f + 0.03f * hashUnit(i, 3, 71u)), width = length * 0.45f;
+        const glm::vec3 green = glm::mix(glm::vec3(0.05f, 0.16f, 0.03f), glm::vec3(0.20f, 0.42f, 0.08f), hashUnit(i, 4, 71u));
+        const float ca = std::cos(angle), sa = std::sin(angle);
+        const int r = int(length) + 1;
+        for (int y = std::max(0, int(cy) - r); y <= std::min(size - 1, int(cy) + r); ++y) {
+            for (int x = std::max(0, int(cx) - r); x <= std::min(size - 1, int(cx) + r); ++x) {
+                const float dx = float(x) + 0.5f - cx, dy = float(y) + 0.5f - cy;
+                const float along = (dx * ca + dy * sa) / length, across = (-dx * sa + dy * ca) / width;
+                const float d = along * along + across * across;
+                if (d > 1.0f) continue;
+                // Lighter towards the tip, darker at the rim.
+                const glm::vec3 c = green * (0.75f + 0.25f * (1.0f - d)) * (0.8f + 0.2f * along);
+                std::uint8_t* p = &img.rgba8[(std::size_t(y) * std::size_t(size) + std::size_t(x)) * 4];
+                p[0] = encodeSrgb(c.r);
+                p[1] = encodeSrgb(c.g);
+                p[2] = encodeSrgb(c.b);
+                p[3] = 255;
+            }
+        }
+    }
+    return img;
 }
 
 Image marble(int size) {
