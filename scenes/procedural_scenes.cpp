@@ -11,6 +11,7 @@
 
 #include "scenes/mesh_builder.h"
 #include "scenes/procedural_textures.h"
+#include "scenes/tangent_frames.h"
 
 namespace ml {
 
@@ -74,10 +75,23 @@ enum AtriumMaterial : std::uint32_t {
     kPolishedMarble,
     kGlazedOchre,
     kDarkStone,
+    kFoliage,      // alpha-tested (MASK) leaves on cross quads in the planters
+    kLanternGlow,  // emissive lantern globes on bronze posts
     kAtriumMaterialCount
 };
 
-enum AtriumImage : int { kImgFloor, kImgStone, kImgMarble, kImgPlaster, kImgFabric, kImgWood };
+enum AtriumImage : int {
+    kImgFloor,
+    kImgStone,
+    kImgMarble,
+    kImgPlaster,
+    kImgFabric,
+    kImgWood,
+    kImgFloorNormal,
+    kImgStoneNormal,
+    kImgFoliage,
+    kAtriumImageCount
+};
 
 constexpr float kEndInner = 17.4f;   // end walls, inner face
 constexpr float kEndOuter = 18.0f;
@@ -537,6 +551,44 @@ void addCourtyardObjects(MeshBuilder& mb, const Tess& tess) {
     }
 }
 
+// Planters in the courtyard's corners: a stone trough with a bush of three alpha-tested quads
+// crossed at 60 degrees. Leaf normals lean up, so both faces of a quad light like foliage.
+void addPlanters(MeshBuilder& mb) {
+    const unsigned noBottom = 0x3fu & ~0x4u;
+    for (float x : {-15.2f, 15.2f}) {
+        for (float z : {-3.6f, 3.6f}) {
+            mb.addBox(kDarkStone, glm::vec3(x - 0.5f, 0.0f, z - 0.5f), glm::vec3(x + 0.5f, 0.6f, z + 0.5f), noBottom);
+            const float halfWidth = 0.75f, bottom = 0.45f, top = 2.1f;
+            for (int k = 0; k < 3; ++k) {
+                const float yaw = kPi / 3.0f * float(k) + 0.3f;
+                const glm::vec3 across(std::cos(yaw), 0.0f, std::sin(yaw));
+                const glm::vec3 facing(-across.z, 0.0f, across.x);
+                const glm::vec3 n = glm::normalize(0.5f * facing + glm::vec3(0.0f, 1.0f, 0.0f));
+                const glm::vec3 c(x, 0.0f, z);
+                // The texture's v = 0 is the bush's top (uvScale 1 for this material: uv = uvMetres).
+                const std::uint32_t a = mb.addVertex(kFoliage, c - halfWidth * across + glm::vec3(0, bottom, 0), n, {0.0f, 1.0f});
+                const std::uint32_t b = mb.addVertex(kFoliage, c + halfWidth * across + glm::vec3(0, bottom, 0), n, {1.0f, 1.0f});
+                const std::uint32_t d = mb.addVertex(kFoliage, c + halfWidth * across + glm::vec3(0, top, 0), n, {1.0f, 0.0f});
+                const std::uint32_t e = mb.addVertex(kFoliage, c - halfWidth * across + glm::vec3(0, top, 0), n, {0.0f, 0.0f});
+                mb.addTriangle(kFoliage, a, b, d);
+                mb.addTriangle(kFoliage, a, d, e);
+            }
+        }
+    }
+}
+
+// Lantern posts along the courtyard: bronze shafts with glowing globes. The globes are emissive:
+// they glow in every method but light nothing (only the scene's point lights do).
+void addLanterns(MeshBuilder& mb, const Tess& tess) {
+    const int segments = tess.sq(16.0f, 8);
+    for (float x : {-10.0f, -2.0f, 6.0f, 14.0f}) {
+        for (float z : {-4.2f, 4.2f}) {
+            mb.addCylinder(kBronze, frameAlong(glm::vec3(x, 0.0f, z), glm::vec3(0.0f, 1.0f, 0.0f)), 0.09f, 0.05f, 2.2f, segments);
+            mb.addSphere(kLanternGlow, glm::vec3(x, 2.38f, z), 0.18f, segments, segments / 2 + 2);
+        }
+    }
+}
+
 void addBanners(MeshBuilder& mb, const Tess& tess) {
     const std::uint32_t colours[3] = {kFabricRed, kFabricGreen, kFabricBlue};
     int n = 0;
@@ -563,19 +615,24 @@ std::vector<MaterialSpec> atriumMaterials() {
     m[kPolishedMarble] = {"polished_marble", {1.0f, 1.0f, 1.0f, 1.0f}, kImgMarble, 0.0f, 0.38f, 1.0f};
     m[kGlazedOchre] = {"glazed_ochre", {0.80f, 0.45f, 0.08f, 1.0f}, -1, 0.0f, 0.40f, 1.0f};
     m[kDarkStone] = {"dark_stone", {0.30f, 0.29f, 0.27f, 1.0f}, kImgMarble, 0.0f, 0.45f, 1.0f};
+    m[kFoliage] = {"foliage", {1.0f, 1.0f, 1.0f, 1.0f}, kImgFoliage, 0.0f, 0.75f, 1.0f, true};
+    m[kLanternGlow] = {"lantern_glow", {0.95f, 0.85f, 0.65f, 1.0f}, -1, 0.0f, 0.3f, 1.0f};
     return m;
 }
 
 // The textures do not depend on the detail level: generated once per process (about 2.3 MB).
 const std::vector<Image>& atriumImages() {
     static const std::vector<Image> images = [] {
-        std::vector<Image> v(6);
+        std::vector<Image> v(kAtriumImageCount);
         v[kImgFloor] = proctex::floorTiles(512);
         v[kImgStone] = proctex::stoneBlocks(256);
         v[kImgMarble] = proctex::marble(256);
         v[kImgPlaster] = proctex::plaster(256);
         v[kImgFabric] = proctex::fabric(256);
         v[kImgWood] = proctex::woodPlanks(256);
+        v[kImgFloorNormal] = proctex::floorTilesNormal(512);
+        v[kImgStoneNormal] = proctex::stoneBlocksNormal(256);
+        v[kImgFoliage] = proctex::foliage(256);
         return v;
     }();
     return images;
@@ -607,6 +664,18 @@ Scene makeAtrium(float detail) {
 
     MeshBuilder mb(kAtriumMaterialCount);
     addMaterials(scene, mb, atriumMaterials());
+    // What the procedural specs do not say: normal maps (tiled as their colour maps), the
+    // foliage's cut-out (clamped, so the bush's edges do not wrap), the lanterns' glow.
+    scene.materials[kFloor].normalTexture.image = kImgFloorNormal;
+    scene.materials[kStone].normalTexture.image = kImgStoneNormal;
+    Sampler clamped;
+    clamped.wrapS = clamped.wrapT = 0x812F;  // GL_CLAMP_TO_EDGE
+    scene.samplers.push_back(clamped);
+    Material& foliage = scene.materials[kFoliage];
+    foliage.alphaMode = AlphaMode::Mask;
+    foliage.alphaCutoff = 0.5f;
+    foliage.baseColorTexture.sampler = 0;
+    scene.materials[kLanternGlow].emissive = glm::vec3(1.0f, 0.62f, 0.28f) * 4.0f;
 
     // The courtyard and gallery floor.
     mb.addFlatQuad(kFloor, {-kEndInner, 0.0f, -kBackInner}, {kEndInner, 0.0f, -kBackInner},
@@ -621,9 +690,15 @@ Scene makeAtrium(float detail) {
     for (float end : {-1.0f, 1.0f}) addEndWall(mb, tess, end);
     addFountain(mb, tess, glm::vec3(0.0f));
     addCourtyardObjects(mb, tess);
+    addPlanters(mb);
+    addLanterns(mb, tess);
     addBanners(mb, tess);
 
     finish(scene, mb);
+    IndexRanges normalMapped;
+    for (const DrawRange& d : scene.draws)
+        if (scene.materials[d.material].normalTexture.present()) normalMapped.emplace_back(d.firstIndex, d.indexCount);
+    generateTangents(scene, normalMapped, 0);
     // From the x = -17 end, above the ground-floor arches, down the length of the courtyard.
     scene.suggestedView = CameraPose{glm::vec3(-16.6f, 6.6f, 0.0f), glm::vec3(16.0f, 2.6f, 0.0f), 60.0f};
     return scene;
