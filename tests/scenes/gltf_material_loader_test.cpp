@@ -1,0 +1,127 @@
+// The glTF loader's materials: what a file's material says reaches the scene model, once and in
+// the right colour space, and every bad value is refused in one line that names it.
+#include <string>
+#include <vector>
+
+#include "tests/scenes/gltf_test_files.h"
+
+namespace ml {
+namespace {
+
+using namespace gltf_test;
+
+// One triangle drawn with `material`, with a 1x1 white PNG as texture 0 (sampler 0 when given).
+Gltf withMaterial(const json& material, const json& sampler = json()) {
+    Gltf g;
+    g.add("images", {{"uri", "data:image/png;base64," + base64(encodePng(1, 1, {255, 255, 255, 255}))}});
+    json texture = {{"source", 0}};
+    if (!sampler.is_null()) texture["sampler"] = g.add("samplers", sampler);
+    g.add("textures", texture);
+    g.add("materials", material);
+    json p = trianglePrimitive(g, true, 0);
+    p["attributes"]["TEXCOORD_0"] = g.vec2({{0, 0}, {1, 0}, {0, 1}});
+    g.scene({g.node({{"mesh", g.mesh({p})}})});
+    return g;
+}
+
+TEST(GltfMaterials, EveryFactorAndTextureReachesTheSceneModel) {
+    const json material = {
+        {"pbrMetallicRoughness",
+         {{"baseColorFactor", {0.5, 0.25, 1.0, 0.75}},
+          {"metallicFactor", 0.3},
+          {"roughnessFactor", 0.6},
+          {"baseColorTexture", {{"index", 0}}},
+          {"metallicRoughnessTexture",
+           {{"index", 0},
+            {"extensions", {{"KHR_texture_transform", {{"offset", {0.5, 0.25}}, {"rotation", 0.5}, {"scale", {2.0, 3.0}}}}}}}}}},
+        {"normalTexture", {{"index", 0}, {"scale", 0.5}}},
+        {"occlusionTexture", {{"index", 0}, {"strength", 0.25}}},
+        {"emissiveFactor", {1.0, 0.5, 0.0}},
+        {"emissiveTexture", {{"index", 0}}},
+        {"extensions", {{"KHR_materials_emissive_strength", {{"emissiveStrength", 4.0}}}}},
+        {"alphaMode", "MASK"},
+        {"alphaCutoff", 0.3},
+        {"doubleSided", true}};
+    Gltf g = withMaterial(material, {{"magFilter", 9728}, {"minFilter", 9984}, {"wrapS", 33071}, {"wrapT", 33648}});
+    g.doc["extensionsUsed"] = {"KHR_texture_transform", "KHR_materials_emissive_strength"};
+    std::vector<std::string> warnings;
+    const Scene s = load(g.writeGltf(testDir(), "material"), warnings);
+    EXPECT_TRUE(warnings.empty()) << warnings.front();
+    ASSERT_EQ(s.materials.size(), 1u);
+    const Material& m = s.materials[0];
+    EXPECT_EQ(m.baseColorFactor, glm::vec4(0.5f, 0.25f, 1.0f, 0.75f));
+    EXPECT_FLOAT_EQ(m.metallic, 0.3f);
+    EXPECT_FLOAT_EQ(m.roughness, 0.6f);
+    EXPECT_FLOAT_EQ(m.normalScale, 0.5f);
+    EXPECT_FLOAT_EQ(m.occlusionStrength, 0.25f);
+    expectNear(m.emissive, {4.0f, 2.0f, 0.0f});
+    EXPECT_EQ(m.alphaMode, AlphaMode::Mask);
+    EXPECT_FLOAT_EQ(m.alphaCutoff, 0.3f);
+    EXPECT_TRUE(m.doubleSided);
+    EXPECT_EQ(m.metallicRoughnessTexture.transform.offset, glm::vec2(0.5f, 0.25f));
+    EXPECT_EQ(m.metallicRoughnessTexture.transform.scale, glm::vec2(2.0f, 3.0f));
+    EXPECT_FLOAT_EQ(m.metallicRoughnessTexture.transform.rotation, 0.5f);
+    EXPECT_TRUE(m.baseColorTexture.transform.isIdentity());
+    // One image, read as colour (base colour, emissive) and as data (the rest): held once per colour space.
+    ASSERT_EQ(s.images.size(), 2u);
+    EXPECT_EQ(m.baseColorTexture.image, m.emissiveTexture.image);
+    EXPECT_TRUE(s.images[static_cast<std::size_t>(m.baseColorTexture.image)].srgb);
+    EXPECT_EQ(m.normalTexture.image, m.metallicRoughnessTexture.image);
+    EXPECT_EQ(m.normalTexture.image, m.occlusionTexture.image);
+    EXPECT_FALSE(s.images[static_cast<std::size_t>(m.normalTexture.image)].srgb);
+    ASSERT_EQ(s.samplers.size(), 1u);
+    EXPECT_EQ(s.samplers[0].magFilter, 9728);
+    EXPECT_EQ(s.samplers[0].minFilter, 9984);
+    EXPECT_EQ(s.samplers[0].wrapS, 33071);
+    EXPECT_EQ(s.samplers[0].wrapT, 33648);
+    EXPECT_EQ(m.baseColorTexture.sampler, 0);
+    // A normal map asks for tangents: generated here, one per vertex.
+    EXPECT_EQ(s.tangents.size(), s.vertices.size());
+}
+
+TEST(GltfMaterials, GltfDefaultsAreMetallicAndRough) {
+    const Scene s = load(withMaterial(json::object()).writeGltf(testDir(), "defaults"));
+    const Material& m = s.materials.at(0);
+    EXPECT_EQ(m.metallic, 1.0f);  // glTF's defaults, not the procedural scenes'
+    EXPECT_EQ(m.roughness, 1.0f);
+    EXPECT_EQ(m.alphaMode, AlphaMode::Opaque);
+    EXPECT_TRUE(s.tangents.empty()) << "no normal map, no tangent stream";
+    EXPECT_TRUE(s.images.empty()) << "no texture read, no image decoded";
+}
+
+TEST(GltfMaterials, BlendIsDrawnAsMaskWithOneWarning) {
+    std::vector<std::string> warnings;
+    const fs::path file = withMaterial({{"alphaMode", "BLEND"}}).writeGltf(testDir(), "blend");
+    const Scene s = load(file, warnings);
+    EXPECT_EQ(s.materials.at(0).alphaMode, AlphaMode::Blend);
+    EXPECT_TRUE(s.materials.at(0).alphaTested());
+    ASSERT_EQ(warnings.size(), 1u);
+    EXPECT_NE(warnings[0].find("BLEND"), std::string::npos) << warnings[0];
+    EXPECT_NE(warnings[0].find("MASK at alphaCutoff 0.5"), std::string::npos) << warnings[0];
+    expectOneLineWarnings(warnings, file);
+}
+
+TEST(GltfMaterials, BadValuesAreNamedInOneLine) {
+    const fs::path dir = testDir();
+    const auto refused = [&](const char* name, const json& material, std::initializer_list<const char*> keywords,
+                             const json& sampler = json()) {
+        SCOPED_TRACE(name);
+        expectFault(withMaterial(material, sampler).writeGltf(dir, name), keywords);
+    };
+    refused("cutoff_negative", {{"alphaMode", "MASK"}, {"alphaCutoff", -0.5}}, {"materials[0]", "alphaCutoff"});
+    refused("alpha_mode", {{"alphaMode", "GLASS"}}, {"materials[0]", "alphaMode", "GLASS"});
+    refused("normal_texture", {{"normalTexture", {{"index", 7}}}}, {"materials[0]", "normalTexture", "index 7"});
+    refused("occlusion_strength", {{"occlusionTexture", {{"index", 0}, {"strength", 3.0}}}}, {"occlusionTexture.strength", "3"});
+    refused("texture_index", {{"emissiveTexture", {{"index", 7}}}}, {"materials[0]", "emissiveTexture", "index 7", "1 textures"});
+    refused("texcoord_set", {{"normalTexture", {{"index", 0}, {"texCoord", 3}}}}, {"normalTexture", "texCoord 3"});
+    refused("transform", {{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}, {"extensions", {{"KHR_texture_transform", {{"scale", {1.0}}}}}}}}}}},
+            {"baseColorTexture", "KHR_texture_transform scale"});
+    refused("emissive_strength", {{"extensions", {{"KHR_materials_emissive_strength", {{"emissiveStrength", -1.0}}}}}},
+            {"materials[0]", "emissiveStrength"});
+    refused("min_filter", {{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}, {"samplers[0]", "minFilter 1234"},
+            {{"minFilter", 1234}});
+    refused("wrap", {{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}, {"samplers[0]", "wrapT 5"}, {{"wrapT", 5}});
+}
+
+}  // namespace
+}  // namespace ml
