@@ -110,7 +110,7 @@ BenchRow configColumns(const BenchPoint& p, int index, std::uint32_t frame, cons
     row["frame_index"] = frame;
     row["warmup_frames"] = run.warmupFrames;
     row["timed_frames"] = run.timedFrames;
-    row["clock"] = clock == TimingClock::GpuQueries ? "gpu-timer-queries" : "wall-clock-after-glfinish";
+    row["clock"] = clockColumnValue(clock);
     row["renderer"] = info.renderer;
     return row;
 }
