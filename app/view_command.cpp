@@ -57,9 +57,13 @@ void addViewCommand(CLI::App& app, int& exitCode) {
     cmd->add_flag("--no-vsync", options->noVsync, "start with vsync off");
     cmd->add_option("--render-scale", options->renderScale,
                     "draw at this fraction of the window's size, scaled up to fill it, 0.1 to 1 (default: 1, or a "
-                    "scale that keeps a software GL renderer such as llvmpipe under 320x180 pixels)");
+                    "scale that keeps a software GL renderer such as llvmpipe under 320x180 pixels, with 8 tiles across unless "
+                    "--tiles-x is given)");
     cmd->add_flag("--hide-panel", options->hidePanel, "start with the panel hidden (F1 or H shows it)");
-    cmd->callback([options, &exitCode] { exitCode = runView(*options); });
+    cmd->callback([options, cmd, &exitCode] {
+        options->tilesGiven = cmd->count("--tiles-x") > 0;
+        exitCode = runView(*options);
+    });
 }
 
 }  // namespace ml::app

@@ -115,9 +115,16 @@ void ViewSession::chooseRenderScale() {
     const int w = frame_.settings.width, h = frame_.settings.height;
     settings_.renderScale = softwareRenderScale(w, h);
     if (settings_.renderScale >= 1.0f) return;
+    std::string tiles;
+    ClusterGridConfig& grid = frame_.settings.method.clustering.grid;
+    if (!options_.tilesGiven && grid.tilesX > kSoftwareTilesX) {
+        grid.tilesX = kSoftwareTilesX;
+        tiles = ", " + std::to_string(kSoftwareTilesX) + " tiles across";
+    }
     char note[256];
-    std::snprintf(note, sizeof note, "software GL renderer: drawn at %.2f scale (%dx%d), scaled up to the window",
-                  settings_.renderScale, scaledSide(w, settings_.renderScale), scaledSide(h, settings_.renderScale));
+    std::snprintf(note, sizeof note, "software GL renderer: drawn at %.2f scale (%dx%d%s), scaled up to the window",
+                  settings_.renderScale, scaledSide(w, settings_.renderScale), scaledSide(h, settings_.renderScale),
+                  tiles.c_str());
     stats_.renderScaleNote = note;
     std::fprintf(stderr, "notice: %s (%s); --render-scale 1 for full resolution\n", note, info_.renderer.c_str());
 }

@@ -26,6 +26,7 @@ struct ViewOptions {
     bool noVsync = false;
     bool hidePanel = false;
     std::optional<float> renderScale;  // unset: automatic (render_scale.h)
+    bool tilesGiven = false;           // --tiles-x on the command line: the automatic scale keeps it
 
     // Scripted: render frames up to --frames, write the screenshots, exit; user input is ignored.
     bool scripted() const { return frame.frames > 0 || !screenshot.empty() || !screenshotWindow.empty(); }
