@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "app/camera_track.h"
 #include "app/sample_spread.h"
 #include "renderer/clustering/clustered_lighting.h"
 #include "renderer/clustering/cull_accuracy.h"
@@ -110,7 +111,7 @@ BenchRow configColumns(const BenchPoint& p, int index, std::uint32_t frame, cons
     row["frame_index"] = frame;
     row["warmup_frames"] = run.warmupFrames;
     row["timed_frames"] = run.timedFrames;
-    row["clock"] = clock == TimingClock::GpuQueries ? "gpu-timer-queries" : "wall-clock-after-glfinish";
+    row["clock"] = clockColumnValue(clock);
     row["renderer"] = info.renderer;
     return row;
 }
@@ -202,6 +203,8 @@ void BenchRunner::measureInto(BenchRow& row, const BenchPoint& point) {
         renderer_ = std::make_unique<FrameRenderer>(f.scene, f.lights, f.settings);
         frameKey_ = key;
     }
+    // A reused renderer holds the last camera of the previous point's orbit.
+    renderer_->setCamera(f.settings.camera);
 
     // The reference: naive forward on the same frame (same lights, same animation step).
     const std::string referenceKey = key + "@frame" + std::to_string(first);
@@ -220,15 +223,22 @@ void BenchRunner::measureInto(BenchRow& row, const BenchPoint& point) {
     renderer_->render(first);  // applies it, so the scene reports its draw calls
     row["draw_calls"] = renderer_->scene().drawCallsPerPass();
 
+    // An orbit moves the camera with the frame index, as in `render --camera orbit:...`.
+    const CameraTrack track = CameraTrack::fromOptions(o, f, std::nullopt);
+    auto renderFrame = [&](std::uint32_t frame) {
+        renderer_->setCamera(track.at(frame));
+        return renderer_->render(frame);
+    };
+
     // Warm-up: shader compilation (llvmpipe compiles on first draw) and first-use allocation.
-    for (int i = 0; i < run_.warmupFrames; ++i) renderer_->render(first + static_cast<std::uint32_t>(i));
+    for (int i = 0; i < run_.warmupFrames; ++i) renderFrame(first + static_cast<std::uint32_t>(i));
 
     // Timed frames, the lights moving on by one animation step each.
     std::vector<double> totals, walls;
     std::vector<std::pair<std::string, std::vector<double>>> passes;
     for (int i = 0; i < run_.timedFrames; ++i) {
         const auto t0 = std::chrono::steady_clock::now();
-        const std::vector<PassTime> times = renderer_->render(first + static_cast<std::uint32_t>(i));
+        const std::vector<PassTime> times = renderFrame(first + static_cast<std::uint32_t>(i));
         glFinish();
         walls.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
         totals.push_back(totalMilliseconds(times));
@@ -257,7 +267,7 @@ void BenchRunner::measureInto(BenchRow& row, const BenchPoint& point) {
     }
 
     // Accuracy on the first timed frame, rendered again now that the timing is done.
-    renderer_->render(first);
+    renderFrame(first);
     FloatImage hdr = renderer_->readHdr();
     RgbaImage ldr = renderer_->readLdr();
     if (naive && !reference) {

@@ -10,6 +10,7 @@
 #include <set>
 #include <stdexcept>
 
+#include "app/camera_spec.h"
 #include "renderer/camera.h"
 #include "renderer/clustering/clustering_settings.h"
 #include "renderer/methods/shading_method.h"
@@ -118,11 +119,12 @@ const std::vector<AxisDef>& axisDefs() {
              if (!(d > 0.0 && d <= 16.0)) throw std::invalid_argument("must be in (0, 16]");
              p.frame.detail = static_cast<float>(d);
          }},
-        {{"camera", "--camera", "px,py,pz,tx,ty,tz,fovy_deg, or \"default\" (the scene's view); the flag separates cameras by ';'"}, ValueKind::Text,
+        {{"camera", "--camera", "px,py,pz,tx,ty,tz,fovy_deg, \"default\" (the scene's view), or orbit:... (the timed frames follow the turntable, app/camera_spec.h); the flag separates cameras by ';'"}, ValueKind::Text,
          Applies::Always,
          [](BenchPoint& p, const json& v) {
              const std::string s = asText(v);
-             if (s != "default") (void)parseCamera(s);
+             if (isOrbitSpec(s)) (void)parseOrbitSpec(s);
+             else if (s != "default") (void)parseCamera(s);
              p.frame.camera = s == "default" ? "" : s;
          }},
         {{"near", "--near", "near clip plane, or \"auto\" (fits the scene)"}, ValueKind::NumberOrAuto, Applies::Always,

@@ -69,6 +69,10 @@ std::string passColumn(const std::string& passName) {
     return out + "_ms";
 }
 
+const char* clockColumnValue(TimingClock clock) {
+    return clock == TimingClock::GpuQueries ? "gpu-timer-queries" : "wall-clock-after-glfinish";
+}
+
 void BenchTable::add(BenchRow row) {
     for (const auto& [key, value] : row.items()) {
         if (isFixed(key)) continue;

@@ -9,6 +9,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "renderer/pass_timer.h"
+
 namespace ml::app {
 
 using BenchRow = nlohmann::ordered_json;  // column -> number, string, or null (an empty cell)
@@ -16,6 +18,9 @@ using BenchRow = nlohmann::ordered_json;  // column -> number, string, or null (
 // "deferred.lighting-compute" -> "pass_deferred_lighting_compute_ms", "forward+.shade" ->
 // "pass_forward_plus_shade_ms": '.', '-' and '+' become '_' ('+' as "_plus").
 std::string passColumn(const std::string& passName);
+
+// The `clock` column: "gpu-timer-queries" or "wall-clock-after-glfinish".
+const char* clockColumnValue(TimingClock clock);
 
 class BenchTable {
 public:

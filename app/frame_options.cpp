@@ -4,6 +4,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "app/camera_spec.h"
 #include "scenes/scene_library.h"
 
 namespace ml::app {
@@ -151,7 +152,9 @@ PreparedFrame prepareFrame(const FrameOptions& o, const Scene* loaded) {
     f.scene = loaded ? *loaded : loadScene(SceneRequest{o.scene, o.detail}, f.warnings);
     if (f.scene.indices.empty()) throw SceneError(o.scene + ": the scene has no triangles");
 
-    Camera camera = o.camera.empty() ? cameraFromPose(f.scene.suggestedView.value_or(framingView(f.scene.bounds)))
+    if (isOrbitSpec(o.camera)) f.orbit = orbitAround(parseOrbitSpec(o.camera), f.scene);
+    Camera camera = f.orbit ? f.orbit->at(f.frameIndex)
+                  : o.camera.empty() ? cameraFromPose(f.scene.suggestedView.value_or(framingView(f.scene.bounds)))
                                      : parseCamera(o.camera);
     fitClipPlanes(camera, f.scene.bounds);
     if (o.nearPlane) camera.nearPlane = *o.nearPlane;

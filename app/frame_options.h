@@ -8,6 +8,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "renderer/camera_orbit.h"
 #include "renderer/context/gl_context.h"
 #include "renderer/frame_renderer.h"
 #include "renderer/light_set.h"
@@ -66,6 +67,7 @@ struct PreparedFrame {
     std::vector<PointLight> lights;
     FrameSettings settings;
     std::uint32_t frameIndex = 0;
+    std::optional<CameraOrbit> orbit;  // --camera orbit:...; settings.camera is its pose at frameIndex
     ContextOptions context;
     std::vector<std::string> warnings;
 };

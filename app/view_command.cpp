@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <memory>
 
+#include "app/render_scale.h"
 #include "app/report.h"
 #include "app/view_session.h"
 
@@ -12,6 +13,7 @@ namespace {
 
 int runView(const ViewOptions& o) {
     // Flags and files first: a bad one is reported before a window opens.
+    if (o.renderScale) validateRenderScale(*o.renderScale);
     PreparedFrame frame = prepareFrame(o.frame);
     for (const std::string& w : frame.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
     std::optional<CameraPath> path;
@@ -53,8 +55,15 @@ void addViewCommand(CLI::App& app, int& exitCode) {
                     "\"fovy\": deg}, ...]}, linear between keyframes")
         ->check(CLI::ExistingFile);
     cmd->add_flag("--no-vsync", options->noVsync, "start with vsync off");
+    cmd->add_option("--render-scale", options->renderScale,
+                    "draw at this fraction of the window's size, scaled up to fill it, 0.1 to 1 (default: 1, or a "
+                    "scale that keeps a software GL renderer such as llvmpipe under 320x180 pixels, with 8 tiles across unless "
+                    "--tiles-x is given)");
     cmd->add_flag("--hide-panel", options->hidePanel, "start with the panel hidden (F1 or H shows it)");
-    cmd->callback([options, &exitCode] { exitCode = runView(*options); });
+    cmd->callback([options, cmd, &exitCode] {
+        options->tilesGiven = cmd->count("--tiles-x") > 0;
+        exitCode = runView(*options);
+    });
 }
 
 }  // namespace ml::app

@@ -5,6 +5,7 @@
 
 #include <imgui.h>
 
+#include "app/render_scale.h"
 #include "renderer/clustering/cluster_grid.h"
 #include "renderer/debug_view.h"
 
@@ -182,6 +183,16 @@ void cameraSection(ViewSettings& s, const ViewStatistics& stats, PanelEdits& edi
     if (ImGui::Checkbox("vsync", &s.vsync)) edits.vsync = true;
     ImGui::SameLine();
     if (ImGui::Button("screenshot (F12)")) edits.screenshot = true;
+    // On the same line: the panel must stay short enough to leave the lower window to the scene.
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(60.0f);
+    ImGui::SliderFloat("render scale", &s.renderScale, kMinRenderScale, 1.0f, "%.2f");
+    if (ImGui::IsItemDeactivatedAfterEdit()) edits.renderScale = true;
+    if (!stats.renderScaleNote.empty()) {
+        ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + kItemWidth + 80.0f);
+        ImGui::TextColored(kDim, "%s", stats.renderScaleNote.c_str());
+        ImGui::PopTextWrapPos();
+    }
 }
 
 void statisticsSection(const ViewStatistics& st) {

@@ -28,6 +28,7 @@ struct ViewSettings {
     bool specular = true;
     BloomSettings bloom;
     bool vsync = true;
+    float renderScale = 1.0f;  // the renderer's size over the window's (app/render_scale.h)
     CameraMode cameraMode = CameraMode::Fly;
 };
 
@@ -45,7 +46,8 @@ struct ViewStatistics {
     std::optional<GBufferFormat> gbuffer;    // the layout, where the method has a G-buffer
     std::optional<std::size_t> gpuUsedBytes; // the whole GPU, where GL_NVX_gpu_memory_info says
     std::string glRenderer, glVersion;
-    int width = 0, height = 0;
+    int width = 0, height = 0;                // the renderer's (the window's times the render scale)
+    std::string renderScaleNote;             // why the scale is what it is, when chosen automatically
     std::size_t lights = 0;
     bool lightsFromFile = false;
     float sceneSize = 1.0f;                  // bounds' diagonal: the radius slider's scale
@@ -58,6 +60,7 @@ struct PanelEdits {
     bool method = false;      // method, grid, assignment, resolve or debug view
     bool lights = false;      // count or radius (applied when the slider is let go)
     bool vsync = false;
+    bool renderScale = false;  // applied when the slider is let go
     bool cameraMode = false;
     bool resetCamera = false;
     bool screenshot = false;

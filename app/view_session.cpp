@@ -10,6 +10,7 @@
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
+#include "app/render_scale.h"
 #include "app/report.h"
 #include "app/window_capture.h"
 #include "renderer/clustering/clustered_lighting.h"
@@ -70,6 +71,9 @@ ViewSession::ViewSession(const ViewOptions& options, PreparedFrame frame, std::o
         frame_.settings.width = w;
         frame_.settings.height = h;
     }
+    chooseRenderScale();
+    frame_.settings.width = scaledSide(frame_.settings.width, settings_.renderScale);
+    frame_.settings.height = scaledSide(frame_.settings.height, settings_.renderScale);
     frame_.settings.timing = true;
     frame_.settings.clock = info_.software ? TimingClock::WallClockAfterFinish : TimingClock::GpuQueries;
     frame_.settings.readback = TimingReadback::Latest;
@@ -99,6 +103,30 @@ ViewSession::~ViewSession() {
     // GL objects go while the context is still current.
     renderer_.reset();
     imgui_.reset();
+}
+
+void ViewSession::chooseRenderScale() {
+    if (options_.renderScale) {
+        settings_.renderScale = *options_.renderScale;
+        return;
+    }
+    // --screenshot promises render's pixels at --size: a scripted screenshot keeps full size.
+    if (!info_.software || !options_.screenshot.empty()) return;
+    const int w = frame_.settings.width, h = frame_.settings.height;
+    settings_.renderScale = softwareRenderScale(w, h);
+    if (settings_.renderScale >= 1.0f) return;
+    std::string tiles;
+    ClusterGridConfig& grid = frame_.settings.method.clustering.grid;
+    if (!options_.tilesGiven && grid.tilesX > kSoftwareTilesX) {
+        grid.tilesX = kSoftwareTilesX;
+        tiles = ", " + std::to_string(kSoftwareTilesX) + " tiles across";
+    }
+    char note[256];
+    std::snprintf(note, sizeof note, "software GL renderer: drawn at %.2f scale (%dx%d%s), scaled up to the window",
+                  settings_.renderScale, scaledSide(w, settings_.renderScale), scaledSide(h, settings_.renderScale),
+                  tiles.c_str());
+    stats_.renderScaleNote = note;
+    std::fprintf(stderr, "notice: %s (%s); --render-scale 1 for full resolution\n", note, info_.renderer.c_str());
 }
 
 Camera ViewSession::fitted(Camera camera) const {
@@ -179,6 +207,7 @@ void ViewSession::applyEdits(const PanelEdits& edits) {
     if (edits.method) setMethodOrExplain(settings_.method);
     if (edits.lights) regenerateLights();
     if (edits.vsync) window_.setVsync(settings_.vsync);
+    if (edits.renderScale) stats_.renderScaleNote.clear();  // the user's choice now, not ours
     if (edits.cameraMode) controller_.setMode(settings_.cameraMode);
     if (edits.resetCamera) {
         followPath_ = false;
@@ -260,7 +289,10 @@ int ViewSession::run() {
         const double seconds = std::min(elapsed, kMaxFrameSeconds);
         previous = now;
         if (framesShown > 0) history_.addFrame(elapsed * 1000.0);
-        if (width != renderer_->settings().width || height != renderer_->settings().height) renderer_->resize(width, height);
+        const int renderWidth = scaledSide(width, settings_.renderScale);
+        const int renderHeight = scaledSide(height, settings_.renderScale);
+        if (renderWidth != renderer_->settings().width || renderHeight != renderer_->settings().height)
+            renderer_->resize(renderWidth, renderHeight);
 
         const bool panelHasFocus = showPanel_ && !scripted;
         FrameInput input = input_.collect(controller_.mode(), panelHasFocus && imgui_->wantsMouse(),
@@ -299,8 +331,10 @@ int ViewSession::run() {
         refreshStatistics(scripted, rendered);
 
         // The renderer's image fills the window; the panel is drawn over it.
-        glBlitNamedFramebuffer(renderer_->targets().ldrFramebuffer().id(), 0, 0, 0, width, height, 0, 0, width, height,
-                               GL_COLOR_BUFFER_BIT, GL_NEAREST);
+        const int drawnWidth = renderer_->settings().width, drawnHeight = renderer_->settings().height;
+        const bool scaled = drawnWidth != width || drawnHeight != height;
+        glBlitNamedFramebuffer(renderer_->targets().ldrFramebuffer().id(), 0, 0, 0, drawnWidth, drawnHeight, 0, 0, width,
+                               height, GL_COLOR_BUFFER_BIT, scaled ? GL_LINEAR : GL_NEAREST);
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
         glViewport(0, 0, width, height);
         // ImGui's backend saves and restores the current program and vertex array; after a

@@ -25,6 +25,8 @@ struct ViewOptions {
     std::string cameraPath;
     bool noVsync = false;
     bool hidePanel = false;
+    std::optional<float> renderScale;  // unset: automatic (render_scale.h)
+    bool tilesGiven = false;           // --tiles-x on the command line: the automatic scale keeps it
 
     // Scripted: render frames up to --frames, write the screenshots, exit; user input is ignored.
     bool scripted() const { return frame.frames > 0 || !screenshot.empty() || !screenshotWindow.empty(); }
@@ -53,6 +55,8 @@ private:
     void applyEdits(const PanelEdits& edits);
     void regenerateLights();
     void setMethodOrExplain(const MethodSettings& method);
+    // Chooses the starting render scale and says why; needs info_.
+    void chooseRenderScale();
     void writeWindowScreenshot(const std::string& path, int width, int height);
     int finishScript();
 

@@ -38,7 +38,8 @@ TEST_P(DrawSubmissionTest, IndirectEqualsDirectForEveryMethod) {
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(Scenes, DrawSubmissionTest, ::testing::Values("atrium", "boxes", "plane"));
+INSTANTIATE_TEST_SUITE_P(Scenes, DrawSubmissionTest, ::testing::Values("atrium", "boxes", "plane"),
+                         [](const auto& info) { return testNameOf(info.param); });
 
 TEST(DrawSubmissionFlag, BadValueIsOneLine) {
     std::string output;

@@ -35,7 +35,8 @@ TEST_P(PrepassOff, MatchesNaiveOnEverySlicing) {
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(Scenes, PrepassOff, ::testing::Values("atrium", "boxes"));
+INSTANTIATE_TEST_SUITE_P(Scenes, PrepassOff, ::testing::Values("atrium", "boxes"),
+                         [](const auto& info) { return testNameOf(info.param); });
 
 class ForwardPlusPrepass : public GpuTest {};
 

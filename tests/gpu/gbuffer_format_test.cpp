@@ -44,7 +44,8 @@ TEST_P(PackedGBuffer, MatchesStandardAndNaive) {
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(Scenes, PackedGBuffer, ::testing::Values("atrium", "boxes"));
+INSTANTIATE_TEST_SUITE_P(Scenes, PackedGBuffer, ::testing::Values("atrium", "boxes"),
+                         [](const auto& info) { return testNameOf(info.param); });
 
 class GBufferLayouts : public GpuTest {};
 

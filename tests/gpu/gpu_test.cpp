@@ -1,6 +1,7 @@
 #include "gpu_test.h"
 
 #include <array>
+#include <cctype>
 #include <cstdio>
 #include <cstdlib>
 #include <sys/wait.h>
@@ -159,6 +160,17 @@ NaiveReferenceScene::NaiveReferenceScene(const char* scene, std::uint32_t lights
       frame(frameIndex) {
     renderer.render(frame);
     reference = readReference(renderer);
+}
+
+std::string testNameOf(const std::string& text) {
+    std::string name;
+    for (char c : text) {
+        const bool word = std::isalnum(static_cast<unsigned char>(c)) != 0;
+        if (word) name += c;
+        else if (!name.empty() && name.back() != '_') name += '_';
+    }
+    while (!name.empty() && name.back() == '_') name.pop_back();
+    return name.empty() ? "empty" : name;
 }
 
 int runManylights(const std::string& args, std::string& output, const std::string& workingDir, const std::string& wrapper) {

@@ -109,6 +109,10 @@ std::vector<MethodError> clusteredErrors(const Scene& scene, const std::vector<P
 // Every method within the accuracy contract (design.md): 1/255 on 8 bits, 50 dB on floats.
 void expectWithinContract(const std::vector<MethodError>& errors, const std::string& label);
 
+// A parameter as a test name CTest lists readably: "--size 0x10" -> "size_0x10",
+// "forward-plus" -> "forward_plus" (GoogleTest allows letters, digits and '_' only).
+std::string testNameOf(const std::string& text);
+
 // Runs the manylights executable with `args` (a shell-quoted string) in `workingDir` (if not
 // empty), behind `wrapper` if given (e.g. "xvfb-run -a", "env -u DISPLAY"); returns the exit
 // status, output (stdout and stderr together) in `output`.

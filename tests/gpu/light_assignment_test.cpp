@@ -126,7 +126,13 @@ INSTANTIATE_TEST_SUITE_P(Grids, LightAssignment,
                       AssignmentCase{"atrium", 200, 24, 16, Slicing::Fitted, false, CullMode::Cone, AssignMode::Capped},
                       AssignmentCase{"atrium", 200, 24, 16, Slicing::Fitted, false, CullMode::Aabb, AssignMode::PerCluster},
                       AssignmentCase{"boxes", 64, 7, 5, Slicing::Log, false, CullMode::Sphere, AssignMode::PerCluster},
-                      AssignmentCase{"atrium", 200, 13, 9, Slicing::Fitted, true, CullMode::Cone, AssignMode::PerCluster}));
+                      AssignmentCase{"atrium", 200, 13, 9, Slicing::Fitted, true, CullMode::Cone, AssignMode::PerCluster}),
+    [](const auto& info) {
+        const AssignmentCase& c = info.param;
+        return testNameOf(std::string(c.scene) + "_" + std::to_string(c.lights) + "_lights_" + std::to_string(c.tilesX) + "x" +
+                          std::to_string(c.slices) + "_" + slicingName(c.slicing) + "_" + cullModeName(c.cull) + "_" +
+                          assignModeName(c.assign) + (c.activeOnly ? "_active_only" : ""));
+    });
 
 // The list sort on each of its paths: short lists by rank sort (up to ML_SORT_RANK_MAX) and
 // bitonic (up to ML_SORT_SHORT_MAX), long ones bitonic in shared memory (up to
@@ -166,7 +172,8 @@ INSTANTIATE_TEST_SUITE_P(Sort, LongLists,
                       LongListCase{AssignMode::Exact, 100}, LongListCase{AssignMode::Exact, ML_SORT_RANK_MAX + 1},
                       LongListCase{AssignMode::Exact, ML_SORT_SHORT_MAX}, LongListCase{AssignMode::Exact, ML_SORT_SHORT_MAX + 1},
                       LongListCase{AssignMode::Exact, ML_SORT_SHARED_CAPACITY},
-                      LongListCase{AssignMode::Capped, 1500}));
+                      LongListCase{AssignMode::Capped, 1500}),
+    [](const auto& info) { return std::string(assignModeName(info.param.assign)) + "_" + std::to_string(info.param.lights) + "_lights"; });
 
 }  // namespace
 }  // namespace ml::test

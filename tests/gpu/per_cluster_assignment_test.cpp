@@ -48,7 +48,8 @@ TEST_P(PerClusterAssignment, ListsEqualThePerLightListsAsSets) {
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(Scenes, PerClusterAssignment, ::testing::Values("atrium", "boxes"));
+INSTANTIATE_TEST_SUITE_P(Scenes, PerClusterAssignment, ::testing::Values("atrium", "boxes"),
+                         [](const auto& info) { return testNameOf(info.param); });
 
 }  // namespace
 }  // namespace ml::test

@@ -36,7 +36,8 @@ TEST_P(PrefixSumTest, MatchesTheCpuExclusiveScan) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Sizes, PrefixSumTest,
-    ::testing::Values(0u, 1u, 7u, 255u, 256u, 511u, 512u, 513u, 1000u, 4097u, 262143u, 262144u, 262145u, 300001u));
+    ::testing::Values(0u, 1u, 7u, 255u, 256u, 511u, 512u, 513u, 1000u, 4097u, 262143u, 262144u, 262145u, 300001u),
+    [](const auto& info) { return std::to_string(info.param) + "_values"; });
 
 }  // namespace
 }  // namespace ml::test

@@ -110,7 +110,8 @@ INSTANTIATE_TEST_SUITE_P(Flags, RenderCommandBadFlag,
                       BadFlag{"--method forward-plus --normal-cones", "--normal-cones"},
                       BadFlag{"--method naive --normal-cones", "--normal-cones"},
                       BadFlag{"--assign capped --normal-cones", "--normal-cones"}, BadFlag{"--method naive --view light-count", "--view"},
-                      BadFlag{"--scene boxes --size 320x180 --assign capped --tiles-x 64", "GL_MAX_SHADER_STORAGE_BLOCK_SIZE"}));
+                      BadFlag{"--scene boxes --size 320x180 --assign capped --tiles-x 64", "GL_MAX_SHADER_STORAGE_BLOCK_SIZE"}),
+    [](const auto& info) { return testNameOf(info.param.args); });
 
 }  // namespace
 }  // namespace ml::test

@@ -37,7 +37,8 @@ TEST_P(SpecularOff, EveryMethodMatchesNaive) {
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(Scenes, SpecularOff, ::testing::Values("atrium", "boxes"));
+INSTANTIATE_TEST_SUITE_P(Scenes, SpecularOff, ::testing::Values("atrium", "boxes"),
+                         [](const auto& info) { return testNameOf(info.param); });
 
 class SpecularSwitch : public GpuTest {};
 

@@ -55,6 +55,27 @@ TEST(ViewCommand, ScreenshotMatchesRenderForEveryMethod) {
     EXPECT_GT(compareImages(readPng(dir + "/view_naive.png"), readPng(dir + "/render_11.png")).maxAbs, kMaxAbs);
 }
 
+// On llvmpipe the view starts at a reduced internal resolution, says so in one line, and still
+// fills the window; --render-scale 1 turns it off.
+TEST(ViewCommand, RenderScaleEngagesOnASoftwareRenderer) {
+    REQUIRE_XVFB();
+    const std::string dir = testOutputDir().string();
+    const std::string common = "--scene boxes --detail 0.5 --size 640x360 --lights 32 --frames 2 --hide-panel";
+    std::string output;
+    ASSERT_EQ(runViewUnderXvfb(common + " --screenshot-window " + dir + "/scaled_window.png", output), 0) << output;
+    EXPECT_NE(output.find("software GL renderer: drawn at 0.50 scale (320x180, 8 tiles across)"), std::string::npos) << output;
+    const RgbaImage window = readPng(dir + "/scaled_window.png");
+    EXPECT_EQ(window.width, 640);
+    EXPECT_EQ(window.height, 360);
+    ASSERT_EQ(runViewUnderXvfb(common + " --render-scale 1 --screenshot-window " + dir + "/full_window.png", output), 0) << output;
+    EXPECT_EQ(output.find("software GL renderer"), std::string::npos) << output;
+    // An explicit scale applies to the renderer's own image too.
+    ASSERT_EQ(runViewUnderXvfb(common + " --render-scale 0.25 --screenshot " + dir + "/quarter.png", output), 0) << output;
+    EXPECT_EQ(readPng(dir + "/quarter.png").width, 160);
+    EXPECT_NE(runViewUnderXvfb(common + " --render-scale 2", output), 0);
+    EXPECT_NE(output.find("--render-scale"), std::string::npos) << output;
+}
+
 TEST(ViewCommand, CameraPathIsFollowedFrameByFrame) {
     REQUIRE_XVFB();
     const std::string dir = testOutputDir().string();
