@@ -29,6 +29,7 @@ struct ViewSettings {
     BloomSettings bloom;
     bool vsync = true;
     CameraMode cameraMode = CameraMode::Fly;
+    int sceneCamera = -1;  // the scene file's camera last chosen (Scene::cameras), -1: free camera
 };
 
 // The largest light count the slider offers.
@@ -50,6 +51,7 @@ struct ViewStatistics {
     bool lightsFromFile = false;
     float sceneSize = 1.0f;                  // bounds' diagonal: the radius slider's scale
     float flySpeed = 0.0f;
+    std::vector<std::string> sceneCameras;   // the scene file's cameras as the panel lists them
     int glErrors = 0;
     std::string error;                       // the last change that failed, and why
 };
@@ -60,6 +62,7 @@ struct PanelEdits {
     bool vsync = false;
     bool cameraMode = false;
     bool resetCamera = false;
+    bool sceneCamera = false;  // a camera of the scene file was chosen
     bool screenshot = false;
 };
 
