@@ -119,12 +119,12 @@ const std::vector<AxisDef>& axisDefs() {
              if (!(d > 0.0 && d <= 16.0)) throw std::invalid_argument("must be in (0, 16]");
              p.frame.detail = static_cast<float>(d);
          }},
-        {{"camera", "--camera", "px,py,pz,tx,ty,tz,fovy_deg, \"default\" (the scene's view), or orbit:... (the timed frames follow the turntable, app/camera_spec.h); the flag separates cameras by ';'"}, ValueKind::Text,
+        {{"camera", "--camera", "px,py,pz,tx,ty,tz,fovy_deg, gltf:N (the file's Nth camera), \"default\" (the scene's view), or orbit:... (the timed frames follow the turntable, app/camera_spec.h); the flag separates cameras by ';'"}, ValueKind::Text,
          Applies::Always,
          [](BenchPoint& p, const json& v) {
              const std::string s = asText(v);
              if (isOrbitSpec(s)) (void)parseOrbitSpec(s);
-             else if (s != "default") (void)parseCamera(s);
+             else if (s != "default" && !namesSceneCamera(s)) (void)parseCamera(s);  // gltf:N is checked with the scene
              p.frame.camera = s == "default" ? "" : s;
          }},
         {{"near", "--near", "near clip plane, or \"auto\" (fits the scene)"}, ValueKind::NumberOrAuto, Applies::Always,

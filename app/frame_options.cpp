@@ -54,7 +54,8 @@ void addFrameOptions(CLI::App& cmd, FrameOptions& o) {
     cmd.add_option("--lights-file", o.lightsFile, "load an exact light set from JSON (overrides --lights/--seed/--light-radius)");
     cmd.add_option("--save-lights", o.saveLights, "write the light set of the rendered frame (after animation) to JSON");
     cmd.add_option("--size", o.size, "output size WxH")->capture_default_str();
-    cmd.add_option("--camera", o.camera, "px,py,pz,tx,ty,tz,fovy_deg (default: the scene's suggested view)");
+    cmd.add_option("--camera", o.camera, "px,py,pz,tx,ty,tz,fovy_deg, or gltf:N for the glTF file's Nth camera (from 0; "
+                   "its clip planes unless --near/--far) (default: the scene's suggested view)");
     cmd.add_option("--near", o.nearPlane, "near clip plane (default: fits the scene's bounds)");
     cmd.add_option("--far", o.farPlane, "far clip plane (default: fits the scene's bounds)");
     cmd.add_option("--frames", o.frames, "advance the light animation this many frames (1/60 s each) first")->capture_default_str();
@@ -153,10 +154,19 @@ PreparedFrame prepareFrame(const FrameOptions& o, const Scene* loaded) {
     if (f.scene.indices.empty()) throw SceneError(o.scene + ": the scene has no triangles");
 
     if (isOrbitSpec(o.camera)) f.orbit = orbitAround(parseOrbitSpec(o.camera), f.scene);
-    Camera camera = f.orbit ? f.orbit->at(f.frameIndex)
-                  : o.camera.empty() ? cameraFromPose(f.scene.suggestedView.value_or(framingView(f.scene.bounds)))
-                                     : parseCamera(o.camera);
-    fitClipPlanes(camera, f.scene.bounds);
+    Camera camera;
+    if (f.orbit) {
+        camera = f.orbit->at(f.frameIndex);
+        fitClipPlanes(camera, f.scene.bounds);
+    } else if (namesSceneCamera(o.camera)) {
+        const SceneCamera& fileCamera = f.scene.cameras[sceneCameraIndex(o.camera, f.scene.cameras.size())];
+        camera = cameraFromSceneCamera(fileCamera);
+        fitClipPlanes(camera, f.scene.bounds, fileCamera);
+    } else {
+        camera = o.camera.empty() ? cameraFromPose(f.scene.suggestedView.value_or(framingView(f.scene.bounds)))
+                                  : parseCamera(o.camera);
+        fitClipPlanes(camera, f.scene.bounds);
+    }
     if (o.nearPlane) camera.nearPlane = *o.nearPlane;
     if (o.farPlane) camera.farPlane = *o.farPlane;
     if (!(camera.nearPlane > 0.0f && camera.farPlane > camera.nearPlane && std::isfinite(camera.farPlane)))

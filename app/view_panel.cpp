@@ -179,6 +179,19 @@ void cameraSection(ViewSettings& s, const ViewStatistics& stats, PanelEdits& edi
     s.cameraMode = static_cast<CameraMode>(mode);
     ImGui::SameLine();
     if (ImGui::Button("reset (R)")) edits.resetCamera = true;
+    if (!stats.sceneCameras.empty()) {
+        const std::string current = s.sceneCamera < 0 ? "free camera" : stats.sceneCameras[static_cast<std::size_t>(s.sceneCamera)];
+        if (ImGui::BeginCombo("view from", current.c_str())) {
+            for (int i = -1; i < static_cast<int>(stats.sceneCameras.size()); ++i) {
+                const char* label = i < 0 ? "free camera" : stats.sceneCameras[static_cast<std::size_t>(i)].c_str();
+                if (ImGui::Selectable(label, i == s.sceneCamera)) {
+                    s.sceneCamera = i;
+                    edits.sceneCamera = true;
+                }
+            }
+            ImGui::EndCombo();
+        }
+    }
     if (s.cameraMode == CameraMode::Fly) ImGui::TextColored(kDim, "fly speed %.2f units/s (scroll)", stats.flySpeed);
     if (ImGui::Checkbox("vsync", &s.vsync)) edits.vsync = true;
     ImGui::SameLine();

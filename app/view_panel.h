@@ -30,6 +30,7 @@ struct ViewSettings {
     bool vsync = true;
     float renderScale = 1.0f;  // the renderer's size over the window's (app/render_scale.h)
     CameraMode cameraMode = CameraMode::Fly;
+    int sceneCamera = -1;  // the scene file's camera last chosen (Scene::cameras), -1: free camera
 };
 
 // The largest light count the slider offers.
@@ -52,6 +53,7 @@ struct ViewStatistics {
     bool lightsFromFile = false;
     float sceneSize = 1.0f;                  // bounds' diagonal: the radius slider's scale
     float flySpeed = 0.0f;
+    std::vector<std::string> sceneCameras;   // the scene file's cameras as the panel lists them
     int glErrors = 0;
     std::string error;                       // the last change that failed, and why
 };
@@ -63,6 +65,7 @@ struct PanelEdits {
     bool renderScale = false;  // applied when the slider is let go
     bool cameraMode = false;
     bool resetCamera = false;
+    bool sceneCamera = false;  // a camera of the scene file was chosen
     bool screenshot = false;
 };
 

@@ -96,6 +96,12 @@ ViewSession::ViewSession(const ViewOptions& options, PreparedFrame frame, std::o
     stats_.glVersion = info_.version;
     stats_.clock = frame_.settings.clock;
     stats_.sceneSize = diagonal(frame_.scene.bounds);
+    for (std::size_t i = 0; i < frame_.scene.cameras.size(); ++i) {
+        const std::string& name = frame_.scene.cameras[i].name;
+        stats_.sceneCameras.push_back("gltf:" + std::to_string(i) + (name.empty() ? "" : " " + name));
+    }
+    if (namesSceneCamera(options.frame.camera))  // checked when the frame was prepared
+        settings_.sceneCamera = static_cast<int>(sceneCameraIndex(options.frame.camera, frame_.scene.cameras.size()));
     stats_.lightsFromFile = !options.frame.lightsFile.empty();
 }
 
@@ -212,6 +218,12 @@ void ViewSession::applyEdits(const PanelEdits& edits) {
     if (edits.resetCamera) {
         followPath_ = false;
         controller_.reset();
+        settings_.sceneCamera = -1;
+    }
+    // A file camera is where the free camera starts from: moving on from it is flying as usual.
+    if (edits.sceneCamera && settings_.sceneCamera >= 0) {
+        followPath_ = false;
+        controller_.jumpTo(cameraFromSceneCamera(frame_.scene.cameras[static_cast<std::size_t>(settings_.sceneCamera)]));
     }
     if (edits.screenshot) screenshotRequested_ = true;
     renderer_->setExposure(settings_.exposure);

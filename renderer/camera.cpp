@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
+#include <string_view>
 #include <vector>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -67,6 +68,39 @@ Camera cameraFromPose(const CameraPose& pose) {
     c.target = pose.target;
     c.fovyDegrees = pose.fovyDegrees;
     return c;
+}
+
+Camera cameraFromSceneCamera(const SceneCamera& sceneCamera) {
+    Camera c = cameraFromPose(sceneCamera.pose);
+    c.up = sceneCamera.up;
+    return c;
+}
+
+void fitClipPlanes(Camera& camera, const Bounds& bounds, const SceneCamera& sceneCamera) {
+    fitClipPlanes(camera, bounds);
+    camera.nearPlane = sceneCamera.nearPlane;
+    camera.farPlane = sceneCamera.farPlane > 0.0f ? sceneCamera.farPlane
+                                                  : std::max(camera.farPlane, 2.0f * sceneCamera.nearPlane);
+}
+
+namespace {
+constexpr std::string_view kSceneCameraPrefix = "gltf:";
+}  // namespace
+
+bool namesSceneCamera(const std::string& text) { return text.starts_with(kSceneCameraPrefix); }
+
+std::size_t sceneCameraIndex(const std::string& text, std::size_t cameraCount) {
+    const std::string digits = text.substr(kSceneCameraPrefix.size());
+    const std::string flag = "--camera " + text + ": ";
+    if (digits.empty() || digits.size() > 9 || digits.find_first_not_of("0123456789") != std::string::npos)
+        throw std::invalid_argument(flag + "expected gltf:N, N a camera number from 0");
+    const std::size_t index = std::stoul(digits);
+    if (cameraCount == 0) throw std::invalid_argument(flag + "the scene has no cameras");
+    if (index >= cameraCount)
+        throw std::invalid_argument(flag + "the scene has " + std::to_string(cameraCount) +
+                                    (cameraCount == 1 ? " camera" : " cameras") + " (gltf:0..gltf:" +
+                                    std::to_string(cameraCount - 1) + ")");
+    return index;
 }
 
 }  // namespace ml

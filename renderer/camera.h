@@ -1,6 +1,7 @@
 // A perspective camera: eye, target, vertical field of view, and clip planes.
 #pragma once
 
+#include <cstddef>
 #include <string>
 
 #include <glm/glm.hpp>
@@ -29,5 +30,20 @@ Camera parseCamera(const std::string& text);
 void fitClipPlanes(Camera& camera, const Bounds& bounds);
 
 Camera cameraFromPose(const CameraPose& pose);
+
+// A camera the scene file defines: its pose, up vector and field of view. Clip planes are left
+// to fitClipPlanes(camera, bounds, sceneCamera).
+Camera cameraFromSceneCamera(const SceneCamera& sceneCamera);
+
+// The file camera's clip planes: its znear, and its zfar where it gives one; where it gives none
+// (glTF's infinite far plane) the far plane fitted to the bounds, kept beyond near.
+void fitClipPlanes(Camera& camera, const Bounds& bounds, const SceneCamera& sceneCamera);
+
+// "gltf:N" names the scene file's Nth camera (0-based) where --camera takes a camera.
+bool namesSceneCamera(const std::string& text);
+
+// N of "gltf:N", checked against the scene's cameras; throws std::invalid_argument with one line
+// ("--camera gltf:5: the scene has 2 cameras (gltf:0..gltf:1)").
+std::size_t sceneCameraIndex(const std::string& text, std::size_t cameraCount);
 
 }  // namespace ml

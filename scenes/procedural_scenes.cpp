@@ -583,7 +583,8 @@ void addLanterns(MeshBuilder& mb, const Tess& tess) {
     const int segments = tess.sq(16.0f, 8);
     for (float x : {-10.0f, -2.0f, 6.0f, 14.0f}) {
         for (float z : {-4.2f, 4.2f}) {
-            mb.addCylinder(kBronze, frameAlong(glm::vec3(x, 0.0f, z), glm::vec3(0.0f, 1.0f, 0.0f)), 0.09f, 0.05f, 2.2f, segments);
+            mb.addCylinder(kBronze, frameAlong(glm::vec3(x, 0.0f, z), glm::vec3(0.0f, 1.0f, 0.0f)), 0.09f, 0.05f, 2.2f, segments,
+                           /*capBottom=*/false);
             mb.addSphere(kLanternGlow, glm::vec3(x, 2.38f, z), 0.18f, segments, segments / 2 + 2);
         }
     }

@@ -139,7 +139,7 @@ struct Scene {
     std::vector<glm::vec4> tangents;  // xyz world-space unit tangent, w the bitangent's sign (+-1)
     std::vector<glm::vec2> uv1;       // TEXCOORD_1
     std::vector<glm::vec4> colors;    // COLOR_0, linear RGBA (1 where a primitive has none)
-    std::vector<SceneCamera> cameras;        // a glTF file's cameras, in the file's order
+    std::vector<SceneCamera> cameras;        // a glTF file's cameras, in the order its default scene's nodes are walked
     Bounds bounds;                           // of all vertex positions
     std::optional<CameraPose> suggestedView; // procedural scenes set one; glTF derives from bounds
 

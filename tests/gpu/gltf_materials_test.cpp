@@ -236,7 +236,7 @@ TEST_F(GltfMaterials, TextureTransformOnTexCoord1MatchesPretransformedUvs) {
         const int texture = addTexture(g, 8, 8, colours);
         json info = {{"index", texture}, {"texCoord", transformed ? 1 : 0}};
         if (transformed) {
-            info["extensions"] = {{"KHR_texture_transform", {{"offset", {offset.x, offset.y}}, {"rotation", rotation}, {"scale", {scale.x, scale.y}}}}}};
+            info["extensions"] = {{"KHR_texture_transform", {{"offset", {offset.x, offset.y}}, {"rotation", rotation}, {"scale", {scale.x, scale.y}}}}};
             g.doc["extensionsUsed"] = {"KHR_texture_transform"};
         }
         const int material = g.add("materials", {{"pbrMetallicRoughness", {{"baseColorTexture", info}, {"metallicFactor", 0.0}}}});

@@ -57,7 +57,7 @@ fs::path writeFivePoints(const std::string& name, int mode, const std::vector<st
     const int position = g.vec3(kFivePoints);
     const int mesh = g.mesh({withMode(primitive({{"POSITION", position}}, indices.empty() ? -1 : g.indices(indices)), mode)});
     g.scene({g.node({{"mesh", mesh}, {"scale", {scale.x, scale.y, scale.z}}})});
-    return g.writeGltf(testDir(), name);
+    return g.writeGlb(testDir(), name);
 }
 
 constexpr int kPoints = 0, kLines = 1, kTriangles = 4, kStrip = 5, kFan = 6;
@@ -88,7 +88,7 @@ TEST(GltfGeometry, StripsAndFansOfFewerThanThreeVerticesAreEmpty) {
                              withMode(primitive({{"POSITION", position}}, g.indices({3})), kFan),
                              withMode(primitive({{"POSITION", position}}, g.indices({0, 1, 2})), kFan)});
     g.scene({g.node({{"mesh", mesh}})});
-    const fs::path file = g.writeGltf(testDir(), "short_strips");
+    const fs::path file = g.writeGlb(testDir(), "short_strips");
     std::vector<std::string> warnings;
     const Scene scene = load(file, warnings);
     EXPECT_EQ(scene.triangleCount(), 1u);
@@ -102,7 +102,7 @@ TEST(GltfGeometry, PointsAndLinesAreSkippedWithOneCountingWarning) {
     const json lines = withMode(primitive({{"POSITION", position}}, g.indices({0, 1, 1, 2})), kLines);
     const int mesh = g.mesh({points, lines, lines, lines, withMode(primitive({{"POSITION", position}}), kStrip)});
     g.scene({g.node({{"mesh", mesh}})});
-    const fs::path file = g.writeGltf(testDir(), "points_and_lines");
+    const fs::path file = g.writeGlb(testDir(), "points_and_lines");
     std::vector<std::string> warnings;
     const Scene scene = load(file, warnings);
     EXPECT_EQ(scene.triangleCount(), 3u);
@@ -119,7 +119,7 @@ TEST(GltfGeometry, AFileOfOnlyLinesNamesWhatWasSkipped) {
                              withMode(primitive({{"POSITION", position}}), kLines),
                              withMode(primitive({{"POSITION", position}}), kPoints)});
     g.scene({g.node({{"mesh", mesh}})});
-    expectFault(g.writeGltf(testDir(), "only_lines"),
+    expectFault(g.writeGlb(testDir(), "only_lines"),
                 {"no triangles to draw", "skipped: 1 POINTS primitive, 2 LINES primitives"});
 }
 
@@ -166,7 +166,7 @@ TEST(GltfGeometry, VertexColoursInEveryFormat) {
     for (const Case& c : cases) {
         SCOPED_TRACE(c.name);
         std::vector<std::string> warnings;
-        const Scene scene = load(colouredTriangle(c.accessor).writeGltf(testDir(), std::string("colour_") + c.name), warnings);
+        const Scene scene = load(colouredTriangle(c.accessor).writeGlb(testDir(), std::string("colour_") + c.name), warnings);
         EXPECT_TRUE(warnings.empty()) << warnings.front();
         ASSERT_EQ(scene.colors.size(), scene.vertices.size());
         ASSERT_EQ(scene.vertices.size(), 6u);
@@ -177,7 +177,7 @@ TEST(GltfGeometry, VertexColoursInEveryFormat) {
         for (int i = 3; i < 6; ++i) EXPECT_EQ(scene.colors[i], glm::vec4(1.0f));  // no COLOR_0: white
     }
     // No COLOR_0 anywhere: no stream.
-    EXPECT_TRUE(load(oneTriangle().writeGltf(testDir(), "no_colour")).colors.empty());
+    EXPECT_TRUE(load(oneTriangle().writeGlb(testDir(), "no_colour")).colors.empty());
 }
 
 TEST(GltfGeometry, VertexColoursInAnUnnormalizedByteFormatAreRefused) {
@@ -185,7 +185,7 @@ TEST(GltfGeometry, VertexColoursInAnUnnormalizedByteFormatAreRefused) {
         const std::uint8_t rgba[12] = {};
         return file.accessor(file.view(rgba, 12), kUByte, 3, "VEC4");
     });
-    expectFault(g.writeGltf(testDir(), "colour_unnormalized"), {"accessors[", "COLOR_0", "normalized"});
+    expectFault(g.writeGlb(testDir(), "colour_unnormalized"), {"accessors[", "COLOR_0", "normalized"});
 }
 
 // --- TEXCOORD_1 ------------------------------------------------------------------------------------
@@ -205,10 +205,10 @@ Gltf twoUvSets(const json& material) {
 }
 
 TEST(GltfGeometry, TexCoord1IsLoadedOnlyWhenAMaterialReadsIt) {
-    EXPECT_TRUE(load(twoUvSets(nullptr).writeGltf(testDir(), "uv1_unused")).uv1.empty());
-    EXPECT_TRUE(load(twoUvSets({{"occlusionTexture", {{"index", 0}}}}).writeGltf(testDir(), "uv1_unused_by_uv0")).uv1.empty());
+    EXPECT_TRUE(load(twoUvSets(nullptr).writeGlb(testDir(), "uv1_unused")).uv1.empty());
+    EXPECT_TRUE(load(twoUvSets({{"occlusionTexture", {{"index", 0}}}}).writeGlb(testDir(), "uv1_unused_by_uv0")).uv1.empty());
 
-    const Scene occlusion = load(twoUvSets({{"occlusionTexture", {{"index", 0}, {"texCoord", 1}}}}).writeGltf(testDir(), "uv1_occlusion"));
+    const Scene occlusion = load(twoUvSets({{"occlusionTexture", {{"index", 0}, {"texCoord", 1}}}}).writeGlb(testDir(), "uv1_occlusion"));
     ASSERT_EQ(occlusion.uv1.size(), occlusion.vertices.size());
     EXPECT_EQ(occlusion.uv1[0], glm::vec2(0.5f, 0.5f));
     EXPECT_EQ(occlusion.uv1[2], glm::vec2(0.0f, 0.75f));
@@ -218,11 +218,11 @@ TEST(GltfGeometry, TexCoord1IsLoadedOnlyWhenAMaterialReadsIt) {
                                {{"baseColorTexture", {{"index", 0}, {"extensions", {{"KHR_texture_transform", {{"texCoord", 1}}}}}}}}}};
     Gltf g = twoUvSets(transformed);
     g.doc["extensionsUsed"] = {"KHR_texture_transform"};
-    EXPECT_EQ(load(g.writeGltf(testDir(), "uv1_texture_transform")).uv1.size(), 3u);
+    EXPECT_EQ(load(g.writeGlb(testDir(), "uv1_texture_transform")).uv1.size(), 3u);
 }
 
 TEST(GltfGeometry, TexCoordOutsideTheTwoSetsIsRefused) {
-    expectFault(twoUvSets({{"name", "Rust"}, {"emissiveTexture", {{"index", 0}, {"texCoord", 2}}}}).writeGltf(testDir(), "texcoord2"),
+    expectFault(twoUvSets({{"name", "Rust"}, {"emissiveTexture", {{"index", 0}, {"texCoord", 2}}}}).writeGlb(testDir(), "texcoord2"),
                 {"materials[0] 'Rust'", "emissiveTexture", "texCoord 2"});
 }
 
@@ -231,7 +231,7 @@ TEST(GltfGeometry, TexCoord1OnAPrimitiveWithoutItIsRefused) {
     const int material = g.add("materials", {{"name", "Moss"}, {"normalTexture", {{"index", 0}, {"texCoord", 1}}}});
     g.add("textures", json::object());
     g.scene({g.node({{"mesh", g.mesh({trianglePrimitive(g, true, material)})}})});
-    expectFault(g.writeGltf(testDir(), "texcoord1_missing"),
+    expectFault(g.writeGlb(testDir(), "texcoord1_missing"),
                 {"materials[0] 'Moss'", "normalTexture", "TEXCOORD_1", "meshes[0] primitive 0"});
 }
 
@@ -274,8 +274,8 @@ void expectTangentsNear(const Scene& a, const Scene& b) {
 }
 
 TEST(GltfGeometry, GeneratedTangentsAgreeWithGivenOnesAndMirrorsFlipW) {
-    const Scene given = load(normalMappedQuad(true, glm::vec3(1)).writeGltf(testDir(), "tangents_given"));
-    const Scene generated = load(normalMappedQuad(false, glm::vec3(1)).writeGltf(testDir(), "tangents_generated"));
+    const Scene given = load(normalMappedQuad(true, glm::vec3(1)).writeGlb(testDir(), "tangents_given"));
+    const Scene generated = load(normalMappedQuad(false, glm::vec3(1)).writeGlb(testDir(), "tangents_generated"));
     expectTangentsNear(given, generated);
     for (const glm::vec4& t : given.tangents) {
         expectNear(glm::vec3(t), {0, 1, 0});
@@ -284,8 +284,8 @@ TEST(GltfGeometry, GeneratedTangentsAgreeWithGivenOnesAndMirrorsFlipW) {
 
     // Mirrored in x (and scaled: the direction is renormalised): the tangent stays +y, w flips.
     const glm::vec3 mirror(-2.0f, 3.0f, 1.0f);
-    const Scene givenMirrored = load(normalMappedQuad(true, mirror).writeGltf(testDir(), "tangents_given_mirrored"));
-    const Scene generatedMirrored = load(normalMappedQuad(false, mirror).writeGltf(testDir(), "tangents_generated_mirrored"));
+    const Scene givenMirrored = load(normalMappedQuad(true, mirror).writeGlb(testDir(), "tangents_given_mirrored"));
+    const Scene generatedMirrored = load(normalMappedQuad(false, mirror).writeGlb(testDir(), "tangents_generated_mirrored"));
     expectTangentsNear(givenMirrored, generatedMirrored);
     for (const glm::vec4& t : givenMirrored.tangents) {
         expectNear(glm::vec3(t), {0, 1, 0});
@@ -294,7 +294,7 @@ TEST(GltfGeometry, GeneratedTangentsAgreeWithGivenOnesAndMirrorsFlipW) {
 }
 
 TEST(GltfGeometry, TangentsExistOnlyForNormalMappedPrimitives) {
-    EXPECT_TRUE(load(normalMappedQuad(true, glm::vec3(1), false).writeGltf(testDir(), "tangents_unused")).tangents.empty());
+    EXPECT_TRUE(load(normalMappedQuad(true, glm::vec3(1), false).writeGlb(testDir(), "tangents_unused")).tangents.empty());
 }
 
 TEST(GltfGeometry, TangentsWithNaNAreRegeneratedWithAWarning) {
@@ -304,7 +304,7 @@ TEST(GltfGeometry, TangentsWithNaNAreRegeneratedWithAWarning) {
     const std::size_t offset = g.doc["bufferViews"][g.doc["accessors"][tangentAccessor]["bufferView"].get<int>()]["byteOffset"];
     const float nan = std::numeric_limits<float>::quiet_NaN();
     std::memcpy(&g.bin[offset], &nan, 4);
-    const fs::path file = g.writeGltf(testDir(), "tangents_nan");
+    const fs::path file = g.writeGlb(testDir(), "tangents_nan");
     std::vector<std::string> warnings;
     const Scene scene = load(file, warnings);
     EXPECT_EQ(countContaining(warnings, "TANGENT of 1 primitive held NaN"), 1u);
@@ -316,13 +316,13 @@ TEST(GltfGeometry, BadTangentAccessorsAreRefused) {
     {
         Gltf g = normalMappedQuad(false, glm::vec3(1));
         g.doc["meshes"][0]["primitives"][0]["attributes"]["TANGENT"] = g.vec3({{1, 0, 0}, {1, 0, 0}, {1, 0, 0}, {1, 0, 0}});
-        expectFault(g.writeGltf(testDir(), "tangents_vec3"), {"TANGENT", "VEC3", "expected VEC4 FLOAT"});
+        expectFault(g.writeGlb(testDir(), "tangents_vec3"), {"TANGENT", "VEC3", "expected VEC4 FLOAT"});
     }
     {
         Gltf g = normalMappedQuad(false, glm::vec3(1));
         const std::vector<glm::vec4> three(3, glm::vec4(1, 0, 0, 1));
         g.doc["meshes"][0]["primitives"][0]["attributes"]["TANGENT"] = g.accessor(g.view(three.data(), 48), kFloat, 3, "VEC4");
-        expectFault(g.writeGltf(testDir(), "tangents_count"), {"TANGENT", "count 3 differs from the POSITION count 4"});
+        expectFault(g.writeGlb(testDir(), "tangents_count"), {"TANGENT", "count 3 differs from the POSITION count 4"});
     }
 }
 
@@ -368,7 +368,7 @@ TEST(GltfCameras, CamerasAtNestedRotatedScaledNodesLandWhereTheyShould) {
     roots.push_back(parent);
     roots.push_back(rolled);
     g.doc["scenes"][0]["nodes"] = roots;
-    const fs::path file = g.writeGltf(testDir(), "cameras");
+    const fs::path file = g.writeGlb(testDir(), "cameras");
 
     std::vector<std::string> warnings;
     const Scene scene = load(file, warnings);
@@ -397,7 +397,7 @@ TEST(GltfCameras, OrthographicCamerasAreSkippedWithOneWarning) {
     g.doc["cameras"] = {ortho, perspective(1.0, 0.1)};
     g.doc["scenes"][0]["nodes"] = {0, g.node({{"camera", 0}}), g.node({{"camera", 0}}), g.node({{"camera", 1}})};
     std::vector<std::string> warnings;
-    const Scene scene = load(g.writeGltf(testDir(), "orthographic"), warnings);
+    const Scene scene = load(g.writeGlb(testDir(), "orthographic"), warnings);
     EXPECT_EQ(scene.cameras.size(), 1u);
     ASSERT_EQ(warnings.size(), 1u);
     EXPECT_NE(warnings[0].find("2 orthographic cameras skipped"), std::string::npos) << warnings[0];
@@ -421,7 +421,7 @@ TEST(GltfCameras, BadCamerasAreRefusedNamingThem) {
         Gltf g = oneTriangle();
         g.doc["cameras"] = {c.camera};
         g.doc["scenes"][0]["nodes"] = {0, g.node({{"camera", 0}})};
-        const fs::path file = g.writeGltf(testDir(), std::string("camera_") + c.name);
+        const fs::path file = g.writeGlb(testDir(), std::string("camera_") + c.name);
         std::vector<std::string> warnings;
         try {
             loadGltf(file.string(), warnings);
@@ -434,16 +434,16 @@ TEST(GltfCameras, BadCamerasAreRefusedNamingThem) {
     Gltf g = oneTriangle();
     g.doc["cameras"] = {perspective(1.0, 0.1)};
     g.doc["scenes"][0]["nodes"] = {0, g.node({{"camera", 3}})};
-    expectFault(g.writeGltf(testDir(), "camera_index"), {"nodes[1]", "cameras[3] out of range (1 cameras)"});
+    expectFault(g.writeGlb(testDir(), "camera_index"), {"nodes[1]", "cameras[3] out of range (1 cameras)"});
 
     Gltf zeroScale = oneTriangle();
     zeroScale.doc["cameras"] = {perspective(1.0, 0.1)};
     zeroScale.doc["scenes"][0]["nodes"] = {0, zeroScale.node({{"camera", 0}, {"scale", {0, 0, 0}}})};
-    expectFault(zeroScale.writeGltf(testDir(), "camera_zero_scale"), {"cameras[0]", "nodes[1]", "direction"});
+    expectFault(zeroScale.writeGlb(testDir(), "camera_zero_scale"), {"cameras[0]", "nodes[1]", "direction"});
 }
 
 TEST(GltfCameras, AFileWithoutCamerasHasNone) {
-    EXPECT_TRUE(load(oneTriangle().writeGltf(testDir(), "no_cameras")).cameras.empty());
+    EXPECT_TRUE(load(oneTriangle().writeGlb(testDir(), "no_cameras")).cameras.empty());
 }
 
 }  // namespace

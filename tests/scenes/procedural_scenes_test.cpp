@@ -215,7 +215,9 @@ TEST(AtriumTest, HasSeveralMaterialsWithProceduralTextures) {
     // Every texture is used by some material, and every material by some draw.
     std::set<int> usedImages;
     for (const Material& m : s.materials)
-        if (m.baseColorTexture.present()) usedImages.insert(m.baseColorTexture.image);
+        for (const TextureRef* t : {&m.baseColorTexture, &m.normalTexture, &m.metallicRoughnessTexture, &m.occlusionTexture,
+                                    &m.emissiveTexture})
+            if (t->present()) usedImages.insert(t->image);
     EXPECT_EQ(usedImages.size(), s.images.size());
     EXPECT_EQ(s.draws.size(), s.materials.size());
 }

@@ -60,5 +60,48 @@ TEST(Camera, RejectsBadText) {
         EXPECT_THROW(parseCamera(bad), std::invalid_argument) << bad;
 }
 
+TEST(Camera, SceneCameraNamesAreCheckedAgainstTheScene) {
+    EXPECT_TRUE(namesSceneCamera("gltf:0"));
+    EXPECT_FALSE(namesSceneCamera("1,2,3,4,5,6,45"));
+    EXPECT_EQ(sceneCameraIndex("gltf:1", 2), 1u);
+    const auto message = [](const std::string& text, std::size_t count) {
+        try {
+            (void)sceneCameraIndex(text, count);
+        } catch (const std::invalid_argument& e) {
+            return std::string(e.what());
+        }
+        return std::string("no error");
+    };
+    EXPECT_EQ(message("gltf:5", 2), "--camera gltf:5: the scene has 2 cameras (gltf:0..gltf:1)");
+    EXPECT_EQ(message("gltf:0", 0), "--camera gltf:0: the scene has no cameras");
+    for (const char* bad : {"gltf:", "gltf:-1", "gltf:x", "gltf:1.5", "gltf:99999999999999999999"})
+        EXPECT_NE(message(bad, 3).find("expected gltf:N"), std::string::npos) << bad;
+}
+
+TEST(Camera, SceneCameraKeepsItsUpAndItsClipPlanes) {
+    SceneCamera file;
+    file.pose = CameraPose{glm::vec3(1, 2, 3), glm::vec3(1, 2, 2), 40.0f};
+    file.up = {-1, 0, 0};
+    file.nearPlane = 0.25f;
+    file.farPlane = 50.0f;
+    Bounds b;
+    b.extend({-1, -1, -1});
+    b.extend({1, 1, 1});
+    Camera c = cameraFromSceneCamera(file);
+    fitClipPlanes(c, b, file);
+    EXPECT_EQ(c.eye, file.pose.eye);
+    EXPECT_EQ(c.target, file.pose.target);
+    EXPECT_EQ(c.up, file.up);
+    EXPECT_EQ(c.fovyDegrees, 40.0f);
+    EXPECT_EQ(c.nearPlane, 0.25f);
+    EXPECT_EQ(c.farPlane, 50.0f);
+
+    // No zfar in the file (infinite): the far plane is fitted to the bounds.
+    file.farPlane = 0.0f;
+    fitClipPlanes(c, b, file);
+    EXPECT_EQ(c.nearPlane, 0.25f);
+    EXPECT_GT(c.farPlane, glm::length(glm::vec3(1, 2, 3)));
+}
+
 }  // namespace
 }  // namespace ml
