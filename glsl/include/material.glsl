@@ -21,8 +21,15 @@ layout(binding = ML_TEX_NORMAL) uniform sampler2D u_normalTexture;
 layout(binding = ML_TEX_OCCLUSION) uniform sampler2D u_occlusionTexture;
 layout(binding = ML_TEX_EMISSIVE) uniform sampler2D u_emissiveTexture;
 
-// Where a point samples its material: its UV sets and, in passes without a rasterizer's 2x2
-// quads (the visibility resolve, ML_EXPLICIT_GRADIENTS), their screen-space gradients.
+// Where a point samples its material: its UV sets and, with ML_EXPLICIT_GRADIENTS, their
+// screen-space gradients. The visibility resolve has no rasterizer's 2x2 quads and builds them
+// itself. Raster passes take them from the varyings too (coarse, as the resolve does) where a
+// texture's UV depends on the material (a second UV set, a transform): a helper invocation's
+// read of the material buffer is not dependable (llvmpipe returns zeros there), so implicit
+// derivatives of a UV computed from it are garbage on triangle edges.
+#if !defined(ML_EXPLICIT_GRADIENTS) && (ML_HAS(ML_FEATURE_UV1) || ML_HAS(ML_FEATURE_TEXTURE_TRANSFORM))
+#define ML_EXPLICIT_GRADIENTS 1
+#endif
 struct MaterialCoords {
     vec2 uv[2];
 #ifdef ML_EXPLICIT_GRADIENTS

@@ -29,6 +29,13 @@ MaterialCoords fragmentCoords() {
 #else
     c.uv[1] = v_uv;
 #endif
+#ifdef ML_EXPLICIT_GRADIENTS
+    // Called in uniform control flow, before any discard.
+    c.dx[0] = dFdxCoarse(c.uv[0]);
+    c.dy[0] = dFdyCoarse(c.uv[0]);
+    c.dx[1] = dFdxCoarse(c.uv[1]);
+    c.dy[1] = dFdyCoarse(c.uv[1]);
+#endif
     return c;
 }
 

@@ -54,9 +54,18 @@ std::vector<std::uint8_t> pixels(int width, int height, const std::function<std:
 
 const json kNearest = {{"magFilter", 9728}, {"minFilter", 9728}};
 
+// Writes the file as GLB (self-contained, so the fuzzer can take it as a seed) into the test's
+// directory and loads it.
 Scene writeAndLoad(Gltf& g, const std::vector<json>& primitives, const std::string& name) {
+    static std::string currentTest;
+    static fs::path dir;
+    const std::string test = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+    if (test != currentTest) {  // testDir() empties the directory: once per test
+        currentTest = test;
+        dir = testDir();
+    }
     g.scene({g.node({{"mesh", g.mesh(primitives)}})});
-    const fs::path file = g.writeGltf(testDir(), name);
+    const fs::path file = g.writeGlb(dir, name);
     std::vector<std::string> warnings;
     Scene scene = loadGltf(file.string(), warnings);
     for (const std::string& w : warnings) std::printf("warning: %s\n", w.c_str());
