@@ -5,6 +5,8 @@
 #include <stdexcept>
 
 #include "app/camera_spec.h"
+#include "glsl/include/bindings.h"
+#include "renderer/material_features.h"
 #include "scenes/scene_library.h"
 
 namespace ml::app {
@@ -152,6 +154,10 @@ PreparedFrame prepareFrame(const FrameOptions& o, const Scene* loaded) {
 
     f.scene = loaded ? *loaded : loadScene(SceneRequest{o.scene, o.detail}, f.warnings);
     if (f.scene.indices.empty()) throw SceneError(o.scene + ": the scene has no triangles");
+    const bool gbufferMethod = f.settings.method.kind == MethodKind::Deferred || f.settings.method.kind == MethodKind::Visibility;
+    if (gbufferMethod && f.settings.method.gbuffer == GBufferFormat::TwoComponent && (materialFeatures(f.scene) & ML_FEATURE_EMISSIVE))
+        f.warnings.push_back("--gbuffer two-component has no room for emissive: the scene's emissive surfaces stay dark "
+                             "(standard and packed store it)");
 
     if (isOrbitSpec(o.camera)) f.orbit = orbitAround(parseOrbitSpec(o.camera), f.scene);
     Camera camera;

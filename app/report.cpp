@@ -7,6 +7,8 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "renderer/material_features.h"
+
 namespace ml::app {
 
 void printPassTimes(const std::vector<PassTime>& times, TimingClock clock) {
@@ -21,6 +23,7 @@ void printSceneSummary(const PreparedFrame& frame) {
     std::printf("scene: %s, %zu triangles, %zu materials, %zu textures, bounds (%.2f %.2f %.2f)-(%.2f %.2f %.2f)\n",
                 frame.scene.name.c_str(), frame.scene.triangleCount(), frame.scene.materials.size(),
                 frame.scene.images.size(), b.min.x, b.min.y, b.min.z, b.max.x, b.max.y, b.max.z);
+    std::printf("material paths compiled in: %s\n", describeMaterialFeatures(materialFeatures(frame.scene)).c_str());
     std::printf("camera: eye (%.2f %.2f %.2f) target (%.2f %.2f %.2f) fovy %.1f near %.4f far %.2f\n", c.eye.x, c.eye.y,
                 c.eye.z, c.target.x, c.target.y, c.target.z, c.fovyDegrees, c.nearPlane, c.farPlane);
     std::printf("lights: %zu\n", frame.lights.size());

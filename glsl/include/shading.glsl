@@ -29,11 +29,12 @@ struct SurfacePoint {
     float roughness;
     float occlusion;  // ambient only
     vec3 emissive;    // linear radiance, added as is
-    // Derived by deriveShadingTerms: what the light loop reads.
+    // Derived by deriveShadingTerms: what the light loop reads, and the unlit term, worked out
+    // before the loop so that the material's inputs need not stay in registers through it.
     vec3 diffuse;
-    vec3 f0;
     vec3 specular;    // f0 * (s + 8) / 8
     float shininess;
+    vec3 unlit;       // ambient * occlusion * (diffuse + f0) + emissive
 };
 
 void deriveShadingTerms(inout SurfacePoint s) {
@@ -42,8 +43,9 @@ void deriveShadingTerms(inout SurfacePoint s) {
     float alpha = r * r;
     s.shininess = clamp(2.0 / max(alpha * alpha, 1e-6) - 2.0, 1.0, 8192.0);
     s.diffuse = s.baseColor * (1.0 - m);
-    s.f0 = mix(vec3(0.04), s.baseColor, m);
-    s.specular = s.f0 * ((s.shininess + 8.0) / 8.0);
+    vec3 f0 = mix(vec3(0.04), s.baseColor, m);
+    s.specular = f0 * ((s.shininess + 8.0) / 8.0);
+    s.unlit = ambientStrength() * s.occlusion * (s.diffuse + f0) + s.emissive;
 }
 
 vec3 shadePointLight(SurfacePoint s, vec3 viewDir, vec4 positionRadius, vec3 color) {
@@ -61,4 +63,4 @@ vec3 shadePointLight(SurfacePoint s, vec3 viewDir, vec4 positionRadius, vec3 col
 }
 
 // What a surface shows with no light on it: the ambient term and its own glow.
-vec3 shadeUnlit(SurfacePoint s) { return ambientStrength() * s.occlusion * (s.diffuse + s.f0) + s.emissive; }
+vec3 shadeUnlit(SurfacePoint s) { return s.unlit; }
