@@ -85,7 +85,7 @@ TEST(LightSet, BadFilesAreRejectedWithTheIndex) {
 }
 
 TEST(LightSet, ValidationNamesTheFirstBadLight) {
-    std::vector<PointLight> lights(3);
+    std::vector<Light> lights(3);
     lights[2].position.y = std::nanf("");
     try {
         validateLights(lights, "test");
@@ -97,10 +97,10 @@ TEST(LightSet, ValidationNamesTheFirstBadLight) {
 
 TEST(LightAnimation, WrapsWithinTheVerticalExtent) {
     const LightAnimation anim{1.0f, 0.0f, 5.0f};
-    PointLight l;
+    Light l;
     l.position = {0.0f, 4.9f, 0.0f};
     for (float t : {0.0f, 0.1f, 1.0f, 10.0f, 1000.0f}) {
-        const PointLight a = animateLight(l, 7, t, anim);
+        const Light a = animateLight(l, 7, t, anim);
         EXPECT_GE(a.position.y, 0.0f);
         EXPECT_LT(a.position.y, 5.0f + 1e-4f);
         EXPECT_EQ(a.position.x, l.position.x);
