@@ -153,7 +153,8 @@ void validateLights(const std::vector<Light>& lights, const std::string& source)
         else if (l.type == LightType::Spot && !(l.innerConeAngle >= 0.0f && l.innerConeAngle <= l.outerConeAngle))
             fault = "innerConeAngle " + std::to_string(l.innerConeAngle) + " is not in [0, outerConeAngle]";
         if (!fault.empty())
-            throw std::invalid_argument(source + ": light " + std::to_string(i) + " (" + lightTypeName(l.type) + "): " + fault);
+            throw std::invalid_argument(source + ": light " + std::to_string(i) + ": " +
+                                        (l.type == LightType::Point ? "" : std::string(lightTypeName(l.type)) + " ") + fault);
     }
 }
 

@@ -21,9 +21,9 @@ json spotLight(double inner, double outer) {
     return {{"type", "spot"}, {"spot", {{"innerConeAngle", inner}, {"outerConeAngle", outer}}}};
 }
 
-void setLights(Gltf& g, const json& lights) {
+void setLights(Gltf& g, const std::vector<json>& lights) {
     g.doc["extensionsUsed"] = {"KHR_lights_punctual"};
-    g.doc["extensions"] = {{"KHR_lights_punctual", {{"lights", lights}}}};
+    g.doc["extensions"] = {{"KHR_lights_punctual", {{"lights", json(lights)}}}};
 }
 json lightOn(int light) { return {{"KHR_lights_punctual", {{"light", light}}}}; }
 

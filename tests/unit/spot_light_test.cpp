@@ -28,7 +28,7 @@ TEST(SpotAttenuation, IsZeroOutsideTheOuterConeOneInsideTheInnerAndContinuous) {
                 const float c = std::cos(angle);
                 const float a = spotAttenuation(c, cosInner, cosOuter);
                 if (c <= cosOuter) EXPECT_EQ(a, 0.0f) << outerDeg << " deg, angle " << angle;
-                if (c >= cosInner) EXPECT_EQ(a, 1.0f) << outerDeg << " deg, angle " << angle;
+                else if (c >= cosInner) EXPECT_EQ(a, 1.0f) << outerDeg << " deg, angle " << angle;
                 EXPECT_GE(a, 0.0f);
                 EXPECT_LE(a, 1.0f);
                 // Continuous: a small step in angle makes a small step in attenuation (a hard
