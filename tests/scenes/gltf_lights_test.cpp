@@ -109,16 +109,7 @@ TEST(GltfLights, BadLightsAreRefusedNamingThem) {
         Gltf g = oneTriangle();
         setLights(g, {c.light});
         g.doc["scenes"][0]["nodes"] = {0, g.node({{"extensions", lightOn(0)}})};
-        const fs::path file = g.writeGlb(testDir(), std::string("light_") + c.name);
-        std::vector<std::string> warnings;
-        try {
-            loadGltf(file.string(), warnings);
-            ADD_FAILURE() << "loaded";
-        } catch (const SceneError& e) {
-            const std::string message = e.what();
-            EXPECT_EQ(message.find('\n'), std::string::npos) << message;
-            for (const char* keyword : c.keywords) EXPECT_NE(message.find(keyword), std::string::npos) << message;
-        }
+        expectFault(g.writeGlb(testDir(), std::string("light_") + c.name), {c.keywords[0], c.keywords[1]});
     }
     Gltf index = oneTriangle();
     setLights(index, {pointLight()});
