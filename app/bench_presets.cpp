@@ -118,8 +118,21 @@ constexpr const char* kCulling = R"json({
   ]
 })json";
 
+// spots: issue 15's cost of spot lights on the GPU: half the lights spots (cones of 20 to 60
+// degrees, random directions) against points only, at the scale preset's frames and radii.
+constexpr const char* kSpots = R"json({
+  "name": "spots",
+  "description": "Half spots against points only at 65,536 and 1,048,576 lights, 2560x1440, the scale preset's overlap:32 radius; spots are culled by their cones, so they cost what their cones reach.",
+  "run": {"warmup": 3, "timed_frames": 10, "frame": 60},
+  "defaults": {"scene": "atrium", "size": "2560x1440", "radius": "overlap:32", "assign": "exact"},
+  "experiments": [
+    {"name": "spot_share", "description": "points only against half spots, deferred and the visibility buffer",
+     "method": ["deferred", "visibility"], "lights": [65536, 1048576], "spot_share": [0, 0.5]}
+  ]
+})json";
+
 constexpr Preset kPresets[] = {{"quick", kQuick},     {"seeds", kSeeds},     {"scale", kScale},
-                               {"culling", kCulling}, {"options", kOptions}};
+                               {"culling", kCulling}, {"options", kOptions}, {"spots", kSpots}};
 
 }  // namespace
 

@@ -45,7 +45,10 @@ std::string frameKeyOf(const FrameOptions& o, double radius) {
     k["near"] = o.nearPlane ? nlohmann::json(*o.nearPlane) : nlohmann::json();
     k["far"] = o.farPlane ? nlohmann::json(*o.farPlane) : nlohmann::json();
     k["size"] = o.size;
-    k["lights"] = o.lights;
+    k["lights"] = o.lights ? nlohmann::json(*o.lights) : nlohmann::json();
+    k["spot_share"] = o.spotShare;
+    k["spot_angle"] = o.spotAngle;
+    k["scene_lights"] = o.sceneLights;
     k["radius"] = radius;
     k["seed"] = o.seed;
     k["intensity"] = o.lightIntensity;
@@ -77,7 +80,8 @@ BenchRow configColumns(const BenchPoint& p, int index, std::uint32_t frame, cons
     row["point"] = index;
     row["scene"] = o.scene;
     row["method"] = o.method;
-    row["lights"] = o.lights;
+    row["lights"] = o.lights ? nlohmann::json(*o.lights) : nlohmann::json();
+    row["spot_share"] = o.spotShare;
     row["radius"] = nullptr;  // resolved against the scene when measured
     row["radius_rule"] = p.radius.text();
     row["seed"] = o.seed;
@@ -172,9 +176,9 @@ void BenchRunner::measureInto(BenchRow& row, const BenchPoint& point) {
     case RadiusSpec::Kind::SceneDefault: o.lightRadius.reset(); break;
     case RadiusSpec::Kind::Fixed: o.lightRadius = static_cast<float>(point.radius.value); break;
     case RadiusSpec::Kind::Overlap:
-        if (o.lights > 0)
+        if (const long long n = generatedLightCount(o, scene); n > 0)
             o.lightRadius = static_cast<float>(overlapRadius(volumeOf(lightVolume(scene.bounds)),
-                                                             static_cast<std::uint64_t>(o.lights), point.radius.value));
+                                                             static_cast<std::uint64_t>(n), point.radius.value));
         break;
     }
     PreparedFrame f = prepareFrame(o, &scene);

@@ -137,8 +137,14 @@ const std::vector<AxisDef>& axisDefs() {
              parseSize(asText(v), w, h);
              p.frame.size = v.get<std::string>();
          }},
-        {{"lights", "--lights", "number of point lights"}, ValueKind::Integer, Applies::Always,
+        {{"lights", "--lights", "number of generated lights"}, ValueKind::Integer, Applies::Always,
          [](BenchPoint& p, const json& v) { p.frame.lights = asInteger(v, 0, kMaxLights); }},
+        {{"spot_share", "--spot-share", "share of the generated lights that are spots, in [0, 1]"}, ValueKind::Number, Applies::Always,
+         [](BenchPoint& p, const json& v) {
+             const double x = asNumber(v);
+             if (!(x >= 0.0 && x <= 1.0)) throw std::invalid_argument("must be in [0, 1]");
+             p.frame.spotShare = static_cast<float>(x);
+         }},
         {{"radius", "--light-radius", "light radius: a number, \"default\", or \"overlap:K\" (r = cbrt(3 K V / (4 pi N)))"},
          ValueKind::Radius, Applies::Always, [](BenchPoint& p, const json& v) { p.radius = asRadius(v); }},
         {{"seed", "--seed", "seed of the light placement"}, ValueKind::Integer, Applies::Always,
@@ -308,7 +314,8 @@ std::string RadiusSpec::text() const {
 
 std::string describePoint(const BenchPoint& p) {
     const FrameOptions& o = p.frame;
-    std::string s = p.experiment + ": " + o.method + ", " + std::to_string(o.lights) + " lights";
+    std::string s = p.experiment + ": " + o.method + ", " + (o.lights ? std::to_string(*o.lights) : std::string("default")) + " lights";
+    if (o.spotShare > 0.0f) s += " (" + formatNumber(100.0 * o.spotShare) + " % spots)";
     if (p.radius.kind != RadiusSpec::Kind::SceneDefault) s += " (radius " + p.radius.text() + ")";
     s += ", " + o.size;
     if (o.scene != "atrium") s += ", " + o.scene;

@@ -6,6 +6,7 @@
 
 #include "app/camera_spec.h"
 #include "glsl/include/bindings.h"
+#include "renderer/light_buffers.h"
 #include "renderer/material_features.h"
 #include "scenes/scene_library.h"
 
@@ -49,11 +50,14 @@ void addFrameOptions(CLI::App& cmd, FrameOptions& o) {
     grid->add_option("--prepass", o.prepass, "forward-plus depth pre-pass: on, or off (one LESS pass shading overdraw; "
                      "fitted slicing falls back to log, --active-only is refused)")->capture_default_str();
     cmd.add_option("--view", o.view, "shaded, light-count, slices, clusters, overflow, albedo, normal, depth")->capture_default_str();
-    cmd.add_option("--lights", o.lights, "number of point lights")->capture_default_str();
+    cmd.add_option("--lights", o.lights, "number of generated lights, added to the scene file's own (default: 1024, or 0 for a file with lights)");
+    cmd.add_option("--spot-share", o.spotShare, "share of the generated lights that are spots, in [0, 1] (random directions)")->capture_default_str();
+    cmd.add_option("--spot-angle", o.spotAngle, "generated spots' outer cone angle in degrees, (0, 90] (inner: 0.7 of it); 0: each spot's in [20, 60]")->capture_default_str();
+    cmd.add_option("--scene-lights", o.sceneLights, "on: render a glTF file's own lights (KHR_lights_punctual); off: leave them out")->capture_default_str();
     cmd.add_option("--light-radius", o.lightRadius, "light radius in scene units (default: a tenth of the scene's diagonal)");
     cmd.add_option("--light-intensity", o.lightIntensity, "light intensity multiplier")->capture_default_str();
     cmd.add_option("--seed", o.seed, "seed of the light placement")->capture_default_str();
-    cmd.add_option("--lights-file", o.lightsFile, "load an exact light set from JSON (overrides --lights/--seed/--light-radius)");
+    cmd.add_option("--lights-file", o.lightsFile, "load an exact light set from JSON (replaces the generated and the scene file's lights)");
     cmd.add_option("--save-lights", o.saveLights, "write the light set of the rendered frame (after animation) to JSON");
     cmd.add_option("--size", o.size, "output size WxH")->capture_default_str();
     cmd.add_option("--camera", o.camera, "px,py,pz,tx,ty,tz,fovy_deg, or gltf:N for the glTF file's Nth camera (from 0; "
@@ -73,6 +77,27 @@ void addFrameOptions(CLI::App& cmd, FrameOptions& o) {
     cmd.add_flag("--gl-debug", o.glDebug, "debug context; print every KHR_debug message");
     cmd.add_flag("--verbose", o.verbose, "print GL_RENDERER, GL_VERSION and scene details");
     cmd.add_flag("--time", o.time, "print per-pass times (GPU timer queries; wall clock after glFinish on llvmpipe)");
+}
+
+long long generatedLightCount(const FrameOptions& o, const Scene& scene) {
+    if (o.lights) return *o.lights;
+    return !scene.lights.empty() && parseOnOff("--scene-lights", o.sceneLights) ? 0 : 1024;
+}
+
+std::vector<Light> frameLights(const FrameOptions& o, const Scene& scene) {
+    if (!o.lightsFile.empty()) return loadLightsFile(o.lightsFile);
+    std::vector<Light> lights;
+    if (parseOnOff("--scene-lights", o.sceneLights)) lights = lightsFromScene(scene);
+    LightGeneration gen;
+    gen.count = static_cast<std::uint32_t>(generatedLightCount(o, scene));
+    gen.radius = o.lightRadius.value_or(defaultLightRadius(scene.bounds));
+    gen.intensity = o.lightIntensity;
+    gen.seed = static_cast<std::uint32_t>(o.seed);
+    gen.spotShare = o.spotShare;
+    gen.spotAngleDeg = o.spotAngle;
+    const std::vector<Light> generated = generateLights(lightVolume(scene.bounds), gen);
+    lights.insert(lights.end(), generated.begin(), generated.end());
+    return lights;
 }
 
 void parseSize(const std::string& text, int& width, int& height) {
@@ -136,8 +161,12 @@ PreparedFrame prepareFrame(const FrameOptions& o, const Scene* loaded) {
     f.settings.bloom = BloomSettings{o.bloom, o.bloomThreshold, o.bloomStrength};
     f.context.backend = parseBackend(o.backend);
     f.context.debug = o.glDebug;
-    if (o.lights < 0 || o.lights > kMaxLights)
-        throw std::invalid_argument("--lights " + std::to_string(o.lights) + ": must be between 0 and " + std::to_string(kMaxLights));
+    if (o.lights && (*o.lights < 0 || *o.lights > kMaxLights))
+        throw std::invalid_argument("--lights " + std::to_string(*o.lights) + ": must be between 0 and " + std::to_string(kMaxLights));
+    if (!(o.spotShare >= 0.0f && o.spotShare <= 1.0f)) throw std::invalid_argument("--spot-share: must be in [0, 1]");
+    if (!(o.spotAngle >= 0.0f && o.spotAngle <= 90.0f))
+        throw std::invalid_argument("--spot-angle: must be in (0, 90] degrees, or 0 for a range of [20, 60]");
+    parseOnOff("--scene-lights", o.sceneLights);
     if (o.seed < 0 || o.seed > std::numeric_limits<std::uint32_t>::max())
         throw std::invalid_argument("--seed " + std::to_string(o.seed) + ": must be between 0 and 4294967295");
     if (o.frames < 0 || o.frames > 100'000'000)
@@ -186,15 +215,11 @@ PreparedFrame prepareFrame(const FrameOptions& o, const Scene* loaded) {
     const Bounds volume = lightVolume(f.scene.bounds);
     f.settings.animation = verticalDrift(volume, o.driftSpeed);
 
-    if (!o.lightsFile.empty()) {
-        f.lights = loadLightsFile(o.lightsFile);
-    } else {
-        LightGeneration gen;
-        gen.count = static_cast<std::uint32_t>(o.lights);
-        gen.radius = o.lightRadius.value_or(defaultLightRadius(f.scene.bounds));
-        gen.intensity = o.lightIntensity;
-        gen.seed = static_cast<std::uint32_t>(o.seed);
-        f.lights = generateLights(volume, gen);
+    f.lights = frameLights(o, f.scene);
+    try {
+        toGpuSunLights(f.lights);
+    } catch (const std::invalid_argument& e) {
+        throw std::invalid_argument((o.lightsFile.empty() ? o.scene : o.lightsFile) + ": " + e.what());
     }
     return f;
 }

@@ -34,7 +34,10 @@ struct FrameOptions {
     std::string gbuffer = "packed";
     std::string prepass = "on";
     std::string view = "shaded";
-    long long lights = 1024;
+    std::optional<long long> lights;  // generated lights; default 1024, or 0 when the scene file has lights
+    float spotShare = 0.0f;           // share of generated lights that are spots
+    float spotAngle = 0.0f;           // generated spots' outer cone angle in degrees; 0: each in [20, 60]
+    std::string sceneLights = "on";   // the scene file's own lights (KHR_lights_punctual)
     std::optional<float> lightRadius;
     float lightIntensity = 1.0f;
     long long seed = 1;
@@ -61,10 +64,16 @@ struct FrameOptions {
 
 void addFrameOptions(CLI::App& command, FrameOptions& options);
 
+// --lights as given, else its default for a scene: 0 where the scene brings lights of its own
+// (and --scene-lights is on), 1024 otherwise.
+long long generatedLightCount(const FrameOptions& options, const Scene& scene);
+// The scene's own lights followed by the generated ones, or a --lights-file's set alone.
+std::vector<Light> frameLights(const FrameOptions& options, const Scene& scene);
+
 // Everything a frame needs, validated. Built on the CPU only.
 struct PreparedFrame {
     Scene scene;
-    std::vector<PointLight> lights;
+    std::vector<Light> lights;
     FrameSettings settings;
     std::uint32_t frameIndex = 0;
     std::optional<CameraOrbit> orbit;  // --camera orbit:...; settings.camera is its pose at frameIndex

@@ -87,6 +87,11 @@ void printCullAccuracy(const ClusterStatistics& s, const CullAccuracy& a) {
                 a.references ? 100.0 * a.falsePositives / a.references : 0.0);
     if (a.clusterStride > 1) std::printf("; sampled: one cluster in %u, %u of %u", a.clusterStride, a.clustersExamined, s.clusters);
     std::printf(")\n");
+    if (a.spotReferences > 0)
+        std::printf("cull %s, spot lights: %llu references, of which %llu (%.1f %%) reach no point of their cluster with their cone "
+                    "(exact sector-frustum test, GJK)\n",
+                    s.cull.c_str(), static_cast<unsigned long long>(a.spotReferences),
+                    static_cast<unsigned long long>(a.spotFalsePositives), 100.0 * a.spotFalsePositives / a.spotReferences);
 }
 
 void writeJsonFile(const std::string& path, const nlohmann::json& doc) {

@@ -84,10 +84,19 @@ void methodSection(ViewSettings& s, PanelEdits& edits) {
 }
 
 void lightsSection(ViewSettings& s, const ViewStatistics& stats, PanelEdits& edits) {
-    if (sliderOnRelease("lights", s.lightCount, 1, kMaxViewLights, ImGuiSliderFlags_Logarithmic)) edits.lights = true;
+    if (sliderOnRelease("lights", s.lightCount, 0, kMaxViewLights, ImGuiSliderFlags_Logarithmic)) edits.lights = true;
     ImGui::SliderFloat("radius", &s.lightRadius, stats.sceneSize * 1e-3f, stats.sceneSize * 0.5f, "%.3f",
                        ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
     if (ImGui::IsItemDeactivatedAfterEdit()) edits.lights = true;
+    ImGui::SliderFloat("spot share", &s.spotShare, 0.0f, 1.0f, "%.2f", ImGuiSliderFlags_AlwaysClamp);
+    if (ImGui::IsItemDeactivatedAfterEdit()) edits.lights = true;
+    ImGui::SliderFloat("spot angle", &s.spotAngle, 0.0f, 90.0f, s.spotAngle > 0.0f ? "%.1f deg" : "20-60 deg", ImGuiSliderFlags_AlwaysClamp);
+    if (ImGui::IsItemDeactivatedAfterEdit()) edits.lights = true;
+    if (stats.sceneLights > 0) {
+        if (ImGui::Checkbox("the file's lights", &s.sceneLights)) edits.lights = true;
+        ImGui::SameLine();
+        ImGui::TextColored(kDim, "(%zu)", stats.sceneLights);
+    }
     if (stats.lightsFromFile) ImGui::TextColored(kDim, "lights from --lights-file until count or radius change");
     if (s.method.kind == MethodKind::Naive && s.lightCount > 65536)
         ImGui::TextColored(kWarning, "naive with %d lights: expect seconds per frame", s.lightCount);

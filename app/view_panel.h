@@ -18,8 +18,11 @@ namespace ml::app {
 struct ViewSettings {
     // As chosen: a debug view stays selected while naive (which has none) is shown.
     MethodSettings method;
-    int lightCount = 1024;
+    int lightCount = 1024;        // generated lights
     float lightRadius = 1.0f;
+    float spotShare = 0.0f;       // share of generated lights that are spots
+    float spotAngle = 0.0f;       // their outer cone angle in degrees; 0: each in [20, 60]
+    bool sceneLights = true;      // the scene file's own lights
     bool animate = true;
     float animationSpeed = 1.0f;  // times real time
     float exposure = 1.0f;
@@ -51,6 +54,7 @@ struct ViewStatistics {
     std::string renderScaleNote;             // why the scale is what it is, when chosen automatically
     std::size_t lights = 0;
     bool lightsFromFile = false;
+    std::size_t sceneLights = 0;             // lights the scene file brings (KHR_lights_punctual)
     float sceneSize = 1.0f;                  // bounds' diagonal: the radius slider's scale
     float flySpeed = 0.0f;
     std::vector<std::string> sceneCameras;   // the scene file's cameras as the panel lists them

@@ -82,7 +82,14 @@ ViewSession::ViewSession(const ViewOptions& options, PreparedFrame frame, std::o
     frame_.settings.method = effectiveMethod(settings_.method);
     renderer_ = std::make_unique<FrameRenderer>(frame_.scene, frame_.lights, frame_.settings);
 
-    settings_.lightCount = static_cast<int>(std::min<std::size_t>(frame_.lights.size(), kMaxViewLights));
+    const std::size_t generated = options.frame.lightsFile.empty()
+                                      ? static_cast<std::size_t>(generatedLightCount(options.frame, frame_.scene))
+                                      : frame_.lights.size();
+    settings_.lightCount = static_cast<int>(std::min<std::size_t>(generated, kMaxViewLights));
+    settings_.spotShare = options.frame.spotShare;
+    settings_.spotAngle = options.frame.spotAngle;
+    settings_.sceneLights = options.frame.sceneLights == "on";
+    stats_.sceneLights = frame_.scene.lights.size();
     settings_.lightRadius = options.frame.lightRadius.value_or(defaultLightRadius(frame_.scene.bounds));
     settings_.exposure = options.frame.exposure;
     settings_.draw = parseDrawSubmission(options.frame.draw);
@@ -203,7 +210,11 @@ void ViewSession::regenerateLights() {
     gen.radius = settings_.lightRadius;
     gen.intensity = options_.frame.lightIntensity;
     gen.seed = static_cast<std::uint32_t>(options_.frame.seed);
-    frame_.lights = generateLights(lightVolume(frame_.scene.bounds), gen);
+    gen.spotShare = settings_.spotShare;
+    gen.spotAngleDeg = settings_.spotAngle;
+    frame_.lights = settings_.sceneLights ? lightsFromScene(frame_.scene) : std::vector<Light>{};
+    const std::vector<Light> generatedLights = generateLights(lightVolume(frame_.scene.bounds), gen);
+    frame_.lights.insert(frame_.lights.end(), generatedLights.begin(), generatedLights.end());
     renderer_->setLights(frame_.lights);
     stats_.lightsFromFile = false;
     lastStatistics_ = -1.0;

@@ -1,6 +1,7 @@
 #version 450 core
 // Light animation: each light drifts upward at its own speed and wraps within the scene's
-// vertical extent. Positions are a pure function of time, so frame K is reproducible alone.
+// vertical extent; a spot also turns about +y at its own rate. Positions and directions are a
+// pure function of time, so frame K is reproducible alone. Mirrored by ml::animateLight.
 #include "include/bindings.h"
 #define ML_LIGHTS_WRITABLE
 #include "include/lights.glsl"
@@ -24,6 +25,13 @@ void main() {
         float speed = u_driftSpeed * (0.5 + hashToUnitFloat(i));
         float y = l.positionRadius.y - u_wrapY.x + speed * u_time;
         l.positionRadius.y = u_wrapY.x + mod(y, u_wrapY.y);
+        if (isSpotLight(l)) {
+            float turn = 2.0 * hashToUnitFloat(i ^ 0x9E3779B9u) - 1.0;
+            float angle = u_driftSpeed * float(ML_SPOT_TURN_PER_METRE) * turn * u_time;
+            float c = cos(angle), s = sin(angle);
+            vec3 d = l.directionCosOuter.xyz;
+            l.directionCosOuter.xyz = vec3(c * d.x + s * d.z, d.y, c * d.z - s * d.x);
+        }
     }
     animatedLights[i] = l;
 }

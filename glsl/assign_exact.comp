@@ -5,7 +5,7 @@
 //   ML_EXACT_RANGES  (per light)      the light's block of candidate clusters and their number
 //   [prefix sum of candidates per light, on the host side of the pipeline]
 //   ML_EXACT_DISPATCH (one invocation) indirect dispatch arguments for the candidate passes
-//   ML_EXACT_COUNT   (per candidate)  the --cull test (include/light_cluster_test.glsl); count per list
+//   ML_EXACT_COUNT   (per candidate)  the --cull test and a spot's cone (include/light_cluster_test.glsl); count per list
 //   [prefix sum of counts: list offsets]
 //   ML_EXACT_FILL    (per candidate)  the same test; write the light into the list
 // A candidate finds its light by binary search over the candidate offsets.
@@ -20,6 +20,7 @@
 #include "include/frame_uniforms.glsl"
 #include "include/lights.glsl"
 #include "include/cluster_grid.glsl"
+#include "include/spot_cone.glsl"
 #include "include/light_cluster_range.glsl"
 #include "include/light_cluster_test.glsl"
 #include "include/normal_bins.glsl"
@@ -40,7 +41,7 @@ layout(std430, binding = ML_SSBO_FILL_CURSORS) buffer FillCursors { uint cursors
 // [5] running candidate sum and [6] its overflow flag (ranges pass; the scan's total wraps at 2^32)
 layout(std430, binding = ML_SSBO_ASSIGN_STATS) buffer AssignStats { uint totals[8]; };
 layout(std430, binding = ML_SSBO_LIGHT_RANGES) buffer LightRanges { uvec4 lightRanges[]; };  // lo.xyz, tiles across
-layout(std430, binding = ML_SSBO_LIGHT_VIEW) buffer LightView { vec4 lightView[]; };        // centre, radius
+layout(std430, binding = ML_SSBO_LIGHT_VIEW) buffer LightView { vec4 lightView[]; };        // bounding sphere: centre, radius
 layout(std430, binding = ML_SSBO_CANDIDATE_OFFSETS) buffer CandidateOffsets { uint candidateOffsets[]; };
 layout(std430, binding = ML_SSBO_DISPATCH) writeonly buffer DispatchArgs { uvec4 dispatchArgs; };
 layout(std430, binding = ML_SSBO_NORMAL_BIN_MASKS) readonly buffer NormalBinMasks { uint normalBinMasks[]; };
@@ -116,15 +117,17 @@ void addToList(uint key, uint light) {
 
 // A (light, cluster) pair that passed the cull test: into the cluster's list, or with normal
 // cones into the list of every occupied normal bin the light may face.
-void addPair(uint cluster, uint light, vec4 v) {
+void addPair(uint cluster, uint light) {
 #if defined(ML_NORMAL_CONES)
+    // The light itself (a spot's apex), not the centre of its bounding sphere.
+    vec3 position = (u_view * vec4(lights[light].positionRadius.xyz, 1.0)).xyz;
     uint mask = normalBinMasks[cluster];
     bool kept = false;
     while (mask != 0u) {
         uint bin = uint(findLSB(mask));
         mask &= mask - 1u;
         uint key = cluster * ML_NORMAL_BINS + bin;
-        if (!lightMayFaceNormalCone(normalConeOfList(normalCones[key]), aabbs[cluster].minPoint.xyz, aabbs[cluster].maxPoint.xyz, v.xyz))
+        if (!lightMayFaceNormalCone(normalConeOfList(normalCones[key]), aabbs[cluster].minPoint.xyz, aabbs[cluster].maxPoint.xyz, position))
             continue;
         addToList(key, light);
         kept = true;
@@ -178,7 +181,7 @@ void assignPairs() {
             uvec3 size = uvec3(b.w & 0xFFFFu, b.w >> 16, s_slices[k]);
             if (any(lessThan(c, b.xyz)) || any(greaterThanEqual(c, b.xyz + size))) continue;
             vec4 v = s_view[k];
-            if (sphereReachesCluster(cluster, c, v.xyz, v.w)) addPair(cluster, first + k, v);
+            if (lightReachesCluster(cluster, c, first + k, v.xyz, v.w)) addPair(cluster, first + k);
         }
         barrier();
     }
@@ -203,7 +206,7 @@ void assignPairs() {
     uint cluster = clusterIndex(c);
     if (clusterSkipped(cluster)) return;
     vec4 v = lightView[light];
-    if (sphereReachesCluster(cluster, c, v.xyz, v.w)) addPair(cluster, light, v);
+    if (lightReachesCluster(cluster, c, light, v.xyz, v.w)) addPair(cluster, light);
 }
 #endif
 

@@ -1,11 +1,12 @@
 #version 450 core
 // Capped light assignment, the seeds' baseline: one invocation per light walks its block of
-// clusters (include/light_cluster_range.glsl), tests each cluster against its sphere (--cull),
+// clusters (include/light_cluster_range.glsl), tests each cluster against it (--cull, and a spot's cone),
 // and appends itself to the cluster's fixed-size list; references past the cap are counted.
 #include "include/bindings.h"
 #include "include/frame_uniforms.glsl"
 #include "include/lights.glsl"
 #include "include/cluster_grid.glsl"
+#include "include/spot_cone.glsl"
 #include "include/light_cluster_range.glsl"
 #include "include/light_cluster_test.glsl"
 
@@ -32,7 +33,7 @@ void main() {
             for (uint x = range.lo.x; x <= range.hi.x; ++x) {
                 uint cluster = clusterIndex(uvec3(x, y, s));
                 if (activeOnly && clusterActive[cluster] == 0u) continue;
-                if (!sphereReachesCluster(cluster, uvec3(x, y, s), range.center, range.radius)) continue;
+                if (!lightReachesCluster(cluster, uvec3(x, y, s), i, range.center, range.radius)) continue;
                 uint slot = atomicAdd(clusterCounts[cluster], 1u);
                 if (slot < cap) lightIndices[cluster * cap + slot] = i;
                 else atomicAdd(dropped, 1u);

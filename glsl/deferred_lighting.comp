@@ -15,6 +15,8 @@
 #include "include/frame_uniforms.glsl"
 #include "include/lights.glsl"
 #include "include/shading.glsl"
+#include "include/sun_lights.glsl"
+#include "include/spot_cone.glsl"
 #include "include/cluster_grid.glsl"
 #include "include/normal_bins.glsl"
 #include "include/cluster_lists.glsl"
@@ -40,8 +42,7 @@ const uint kNoList = 0xFFFFFFFFu;
 
 shared uint s_listKey;
 shared uint s_boundsMin[3], s_boundsMax[3];  // the box of the served pixels, as orderedBits
-shared vec4 s_positionRadius[kLightBatch];
-shared vec3 s_color[kLightBatch];
+shared Light s_lights[kLightBatch];
 shared uint s_reaches[2][kMaskWords];  // staged lights that reach the box; two, by batch parity
 
 // A float's bits as a uint that orders as the float does, for min/max with integer atomics.
@@ -53,11 +54,14 @@ float orderedFloat(uint u) { return uintBitsToFloat((u & 0x80000000u) != 0u ? u 
 
 // Could the light add anything to a point in the box? Conservative: the margin covers the
 // rounding of the shader's own distance, and a NaN light is kept (the loop then does what the
-// per-pixel loop does with it).
-bool lightReachesBox(vec4 positionRadius, vec3 lo, vec3 hi) {
+// per-pixel loop does with it). A spot must also reach the box's bounding sphere with its cone.
+bool lightReachesBox(Light l, vec3 lo, vec3 hi) {
+    vec4 positionRadius = l.positionRadius;
     vec3 d = positionRadius.xyz - clamp(positionRadius.xyz, lo, hi);
     float reach = positionRadius.w * 1.001 + 1e-3;
-    return !(dot(d, d) > reach * reach);
+    if (dot(d, d) > reach * reach) return false;
+    return spotMayReachSphere(positionRadius.xyz, l.directionCosOuter.xyz, l.directionCosOuter.w, reach, 0.5 * (lo + hi),
+                              0.5 * length(hi - lo) + 1e-3);
 }
 
 void main() {
@@ -102,9 +106,8 @@ void main() {
             if (lane < kMaskWords) s_reaches[parity ^ 1u][lane] = 0u;
             if (base + lane < range.y) {
                 Light l = lights[lightIndices[range.x + base + lane]];
-                s_positionRadius[lane] = l.positionRadius;
-                s_color[lane] = l.color.rgb;
-                if (lightReachesBox(l.positionRadius, lo, hi)) atomicOr(s_reaches[parity][lane / 32u], 1u << (lane % 32u));
+                s_lights[lane] = l;
+                if (lightReachesBox(l, lo, hi)) atomicOr(s_reaches[parity][lane / 32u], 1u << (lane % 32u));
             }
             barrier();
             if (served) {
@@ -113,7 +116,7 @@ void main() {
                     while (bits != 0u) {
                         uint i = w * 32u + uint(findLSB(bits));
                         bits &= bits - 1u;
-                        lightSum += shadePointLight(px.surface, px.viewDir, s_positionRadius[i], s_color[i]);
+                        lightSum += shadeLight(px.surface, px.viewDir, s_lights[i].positionRadius, s_lights[i].colorCosInner, s_lights[i].directionCosOuter);
                     }
                 }
             }

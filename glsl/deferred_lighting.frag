@@ -4,6 +4,7 @@
 #include "include/frame_uniforms.glsl"
 #include "include/lights.glsl"
 #include "include/shading.glsl"
+#include "include/sun_lights.glsl"
 #include "include/cluster_grid.glsl"
 #include "include/normal_bins.glsl"
 #include "include/cluster_lists.glsl"

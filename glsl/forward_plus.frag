@@ -5,6 +5,7 @@
 #include "include/frame_uniforms.glsl"
 #include "include/lights.glsl"
 #include "include/shading.glsl"
+#include "include/sun_lights.glsl"
 #include "include/material.glsl"
 #include "include/scene_fragment.glsl"
 #include "include/cluster_grid.glsl"
@@ -21,6 +22,6 @@ void main() {
     uint cluster = clusterForFragment(gl_FragCoord.xy, viewDepth);
     uint view = grid.options.w;
     vec3 color = vec3(0.0);
-    if (view == ML_VIEW_SHADED || view == ML_VIEW_OVERFLOW) color = shadeUnlit(s) + shadeClusterLights(s, viewDir, cluster, viewDepth);
+    if (view == ML_VIEW_SHADED || view == ML_VIEW_OVERFLOW) color = shadeUnclustered(s, viewDir) + shadeClusterLights(s, viewDir, cluster, viewDepth);
     o_color = vec4(debugViewColor(view, s, cluster, viewDepth, color), 1.0);
 }

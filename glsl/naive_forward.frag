@@ -4,6 +4,7 @@
 #include "include/frame_uniforms.glsl"
 #include "include/lights.glsl"
 #include "include/shading.glsl"
+#include "include/sun_lights.glsl"
 #include "include/material.glsl"
 #include "include/scene_fragment.glsl"
 
@@ -12,10 +13,11 @@ layout(location = 0) out vec4 o_color;
 void main() {
     SurfacePoint s = fragmentSurface();
     vec3 viewDir = normalize(u_cameraPos.xyz - s.position);
-    vec3 color = shadeUnlit(s);
+    vec3 color = shadeUnclustered(s, viewDir);
     uint n = lightCount();
     for (uint i = 0u; i < n; ++i) {
-        color += shadePointLight(s, viewDir, lights[i].positionRadius, lights[i].color.rgb);
+        Light l = lights[i];
+        color += shadeLight(s, viewDir, l.positionRadius, l.colorCosInner, l.directionCosOuter);
     }
     o_color = vec4(color, 1.0);
 }

@@ -7,15 +7,17 @@
 //   ML_ZBIN_BINS   per listed sorted light: gather its view-space sphere into sorted order and
 //                  widen [first, last] of every bin its depth extent reaches (atomic min/max)
 //   ML_ZBIN_TILE_MASKS  per (tile, word): 32 sorted lights against the tile's four side planes
+//                  (a spot: its bounding sphere, then its sector's support along each plane)
 //   ML_ZBIN_STATS  per pixel (--stats): lights walked (the bin's range) and passing the tile bit
 #include "include/bindings.h"
 #include "include/frame_uniforms.glsl"
 #include "include/lights.glsl"
 #include "include/cluster_grid.glsl"
+#include "include/spot_cone.glsl"
 #define ML_ZBIN_WRITABLE
 #include "include/zbin.glsl"
 
-layout(std430, binding = ML_SSBO_LIGHT_VIEW) buffer LightView { vec4 lightView[]; };  // centre, radius (view space)
+layout(std430, binding = ML_SSBO_LIGHT_VIEW) buffer LightView { vec4 lightView[]; };  // bounding sphere (a spot's sector's): centre, radius (view space)
 layout(std430, binding = ML_SSBO_ZBIN_SORTED_VIEW) buffer ZBinSortedView { vec4 sortedView[]; };
 layout(std430, binding = ML_SSBO_RADIX_KEYS_IN) buffer Keys { uint keys[]; };
 
@@ -78,6 +80,20 @@ vec3 viewRay(vec2 px) {
     return v.xyz / v.w;
 }
 
+// Does a spot's sector reach the inner side of every plane (through the eye, unit normals
+// pointing in)? Its support along each normal, with slack. Always true for a point light.
+bool spotSectorInsidePlanes(uint light, vec3 planes[4]) {
+    vec4 directionCosOuter = lights[light].directionCosOuter;
+    if (!isSpotCone(directionCosOuter.w)) return true;
+    vec4 positionRadius = lights[light].positionRadius;
+    vec3 apex = (u_view * vec4(positionRadius.xyz, 1.0)).xyz;
+    vec3 axis = mat3(u_view) * directionCosOuter.xyz;
+    float slack = kSpotSlack * (positionRadius.w + length(apex));
+    for (int k = 0; k < 4; ++k)
+        if (dot(planes[k], apex) + spotReach(planes[k], axis, directionCosOuter.w, positionRadius.w) < -slack) return false;
+    return true;
+}
+
 void main() {
     uint w = gl_GlobalInvocationID.x;
     uint tile = gl_GlobalInvocationID.y;
@@ -102,6 +118,7 @@ void main() {
         float reach = -(v.w * (1.0 + 1e-4) + length(v.xyz) * 1e-5);
         bool inside = dot(planes[0], v.xyz) >= reach && dot(planes[1], v.xyz) >= reach &&
                       dot(planes[2], v.xyz) >= reach && dot(planes[3], v.xyz) >= reach;
+        if (inside && !spotSectorInsidePlanes(zbinSortedLights[i], planes)) inside = false;
         if (inside) bits |= 1u << (i - first);
     }
     zbinTileMasks[tile * words + w] = bits;

@@ -6,7 +6,7 @@
 
 namespace ml {
 
-FrameRenderer::FrameRenderer(const Scene& scene, const std::vector<PointLight>& lights, const FrameSettings& settings)
+FrameRenderer::FrameRenderer(const Scene& scene, const std::vector<Light>& lights, const FrameSettings& settings)
     : settings_(settings),
       scene_(scene),
       lights_(lights),
@@ -29,7 +29,7 @@ void FrameRenderer::setMethod(const MethodSettings& method) {
     targets_.setStencil(method_->needsStencil());
 }
 
-void FrameRenderer::setLights(const std::vector<PointLight>& lights) { lights_ = LightBuffers(lights); }
+void FrameRenderer::setLights(const std::vector<Light>& lights) { lights_ = LightBuffers(lights); }
 
 void FrameRenderer::updateUniforms(float time) {
     const Camera& c = settings_.camera;
@@ -45,6 +45,7 @@ void FrameRenderer::updateUniforms(float time) {
     uniforms_.counts = glm::uvec4(lights_.count(), settings_.specular ? ML_SHADING_SPECULAR : 0u, 0, 0);
     frameUniformBuffer_.upload(&uniforms_, sizeof(uniforms_));
     frameUniformBuffer_.bindBase(GL_UNIFORM_BUFFER, ML_UBO_FRAME);
+    lights_.bindSuns();
 }
 
 std::vector<PassTime> FrameRenderer::render(std::uint32_t frameIndex) {

@@ -41,7 +41,7 @@ struct FrameSettings {
 
 class FrameRenderer {
 public:
-    FrameRenderer(const Scene& scene, const std::vector<PointLight>& lights, const FrameSettings& settings);
+    FrameRenderer(const Scene& scene, const std::vector<Light>& lights, const FrameSettings& settings);
 
     // Renders the frame at animation time frameIndex * kSecondsPerFrame. Returns the pass times
     // (empty unless settings.timing).
@@ -56,7 +56,7 @@ public:
     void setCamera(const Camera& camera) { settings_.camera = camera; }
     void setMethod(const MethodSettings& method);
     // Replaces the light set (count or radius changed); the GPU buffers are re-created.
-    void setLights(const std::vector<PointLight>& lights);
+    void setLights(const std::vector<Light>& lights);
     void setExposure(float exposure) { settings_.exposure = exposure; }
     void setDrawSubmission(DrawSubmission draw) { settings_.draw = draw; }
     void setBackfaceCulling(bool on) { settings_.backfaceCulling = on; }

@@ -10,12 +10,23 @@
 
 namespace ml {
 
-// glsl/include/lights.glsl: struct Light (std430).
+// glsl/include/lights.glsl: struct Light (std430). 48 B: a spot's cone costs 16 B more than
+// the point lights' 32 B once had.
 struct alignas(16) GpuLight {
-    glm::vec4 positionRadius;  // xyz world position, w radius
-    glm::vec4 color;           // rgb linear colour times intensity
+    glm::vec4 positionRadius;     // xyz world position, w radius
+    glm::vec4 colorCosInner;      // rgb linear colour times intensity, w cos of the inner cone angle
+    glm::vec4 directionCosOuter;  // xyz unit spot direction (0 for points), w cos of the outer cone angle
 };
-static_assert(sizeof(GpuLight) == 32);
+static_assert(sizeof(GpuLight) == 48);
+static_assert(alignof(GpuLight) == 16);
+
+// glsl/include/sun_lights.glsl: SunLightsBlock (std140).
+struct alignas(16) GpuSunLights {
+    glm::uvec4 count;  // x: directional lights in use
+    glm::vec4 direction[ML_MAX_SUN_LIGHTS];  // xyz unit direction the light travels
+    glm::vec4 color[ML_MAX_SUN_LIGHTS];      // rgb linear colour times intensity
+};
+static_assert(sizeof(GpuSunLights) == 16 + 32 * ML_MAX_SUN_LIGHTS);
 
 // glsl/include/material.glsl: struct Material (std430).
 struct alignas(16) GpuMaterial {

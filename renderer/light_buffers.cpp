@@ -1,35 +1,68 @@
 #include "renderer/light_buffers.h"
 
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
 #include "glsl/include/bindings.h"
-#include "renderer/gpu_types.h"
 
 namespace ml {
 
-namespace {
-std::vector<GpuLight> toGpu(const std::vector<PointLight>& lights) {
-    std::vector<GpuLight> out(lights.size());
-    for (std::size_t i = 0; i < lights.size(); ++i) {
-        out[i].positionRadius = glm::vec4(lights[i].position, lights[i].radius);
-        out[i].color = glm::vec4(lights[i].color, 0.0f);
+GpuLight toGpuLight(const Light& light) {
+    GpuLight g;
+    g.positionRadius = glm::vec4(light.position, light.radius);
+    if (light.type == LightType::Spot) {
+        // The CPU reference takes the same float cosines (renderer/shading_reference.cpp).
+        g.colorCosInner = glm::vec4(light.color, std::cos(light.innerConeAngle));
+        g.directionCosOuter = glm::vec4(glm::normalize(light.direction), std::cos(light.outerConeAngle));
+    } else {
+        g.colorCosInner = glm::vec4(light.color, float(ML_POINT_LIGHT_CONE_COS));
+        g.directionCosOuter = glm::vec4(glm::vec3(0.0f), float(ML_POINT_LIGHT_CONE_COS));
     }
-    return out;
+    return g;
 }
-}  // namespace
 
-LightBuffers::LightBuffers(const std::vector<PointLight>& lights) : count_(static_cast<std::uint32_t>(lights.size())) {
-    const std::vector<GpuLight> gpu = toGpu(lights);
+GpuSunLights toGpuSunLights(const std::vector<Light>& lights) {
+    GpuSunLights suns{};
+    for (const Light& l : lights) {
+        if (l.type != LightType::Directional) continue;
+        if (suns.count.x == ML_MAX_SUN_LIGHTS)
+            throw std::invalid_argument("more than " + std::to_string(ML_MAX_SUN_LIGHTS) +
+                                        " directional lights (the renderer's limit, ML_MAX_SUN_LIGHTS)");
+        suns.direction[suns.count.x] = glm::vec4(glm::normalize(l.direction), 0.0f);
+        suns.color[suns.count.x] = glm::vec4(l.color, 0.0f);
+        ++suns.count.x;
+    }
+    return suns;
+}
+
+LightBuffers::LightBuffers(const std::vector<Light>& lights) : given_(lights) {
+    std::vector<GpuLight> gpu;
+    gpu.reserve(lights.size());
+    for (const Light& l : lights)
+        if (l.type != LightType::Directional) gpu.push_back(toGpuLight(l));
+    count_ = static_cast<std::uint32_t>(gpu.size());
+    const GpuSunLights suns = toGpuSunLights(lights);
+    sunCount_ = suns.count.x;
     base_ = gl::Buffer::fromSpan<GpuLight>("lights.base", gpu, 0);
     animated_ = gl::Buffer::fromSpan<GpuLight>("lights.animated", gpu, 0);
+    suns_ = gl::Buffer("lights.suns", sizeof(GpuSunLights), &suns, 0);
 }
 
-std::vector<PointLight> LightBuffers::downloadAnimated() const {
+void LightBuffers::bindSuns() const { suns_.bindBase(GL_UNIFORM_BUFFER, ML_UBO_SUN_LIGHTS); }
+
+std::vector<Light> LightBuffers::downloadAnimated() const {
     std::vector<GpuLight> gpu(count_);
-    animated_.download(gpu.data(), gpu.size() * sizeof(GpuLight));
-    std::vector<PointLight> out(count_);
-    for (std::size_t i = 0; i < gpu.size(); ++i) {
-        out[i].position = glm::vec3(gpu[i].positionRadius);
-        out[i].radius = gpu[i].positionRadius.w;
-        out[i].color = glm::vec3(gpu[i].color);
+    if (count_ > 0) animated_.download(gpu.data(), gpu.size() * sizeof(GpuLight));
+    std::vector<Light> out = given_;
+    std::size_t next = 0;
+    for (Light& l : out) {
+        if (l.type == LightType::Directional) continue;
+        const GpuLight& g = gpu[next++];
+        l.position = glm::vec3(g.positionRadius);
+        l.radius = g.positionRadius.w;
+        l.color = glm::vec3(g.colorCosInner);
+        if (l.type == LightType::Spot) l.direction = glm::vec3(g.directionCosOuter);
     }
     return out;
 }

@@ -1,31 +1,47 @@
-// The light set on the GPU: the lights at time 0, and the animated copy every method shades with.
+// The light set on the GPU: the clustered lights (points and spots) at time 0, the animated copy
+// every method shades with, and the directional lights in a small uniform block.
 #pragma once
 
 #include <vector>
 
 #include "renderer/gl/buffer.h"
 #include "renderer/gl/program.h"
+#include "renderer/gpu_types.h"
 #include "renderer/light_set.h"
 
 namespace ml {
 
+// A light as the shaders read it: a spot's direction normalised, its angles as cosines; a point
+// light's cosines are ML_POINT_LIGHT_CONE_COS. Not for directional lights.
+GpuLight toGpuLight(const Light& light);
+// The directional lights of a set (at most ML_MAX_SUN_LIGHTS, else std::invalid_argument).
+GpuSunLights toGpuSunLights(const std::vector<Light>& lights);
+
 class LightBuffers {
 public:
-    explicit LightBuffers(const std::vector<PointLight>& lights);
+    explicit LightBuffers(const std::vector<Light>& lights);
 
+    // Clustered lights (points and spots): what the light buffers and light lists index.
     std::uint32_t count() const { return count_; }
+    std::uint32_t sunCount() const { return sunCount_; }
     const gl::Buffer& base() const { return base_; }
     const gl::Buffer& animated() const { return animated_; }
-    // 32 bytes per light in each of the two buffers.
-    std::size_t bytes() const { return base_.size() + animated_.size(); }
+    // Binds the directional lights' uniform block (ML_UBO_SUN_LIGHTS).
+    void bindSuns() const;
+    // 48 bytes per clustered light in each of the two buffers, and the suns' block.
+    std::size_t bytes() const { return base_.size() + animated_.size() + suns_.size(); }
 
-    // Reads back the animated lights (for --save-lights and the tests' CPU references).
-    std::vector<PointLight> downloadAnimated() const;
+    // Reads back the lights as drawn, in the order they were given (for --save-lights and the
+    // tests' CPU references): clustered ones animated, directional ones as given.
+    std::vector<Light> downloadAnimated() const;
 
 private:
     std::uint32_t count_ = 0;
+    std::uint32_t sunCount_ = 0;
+    std::vector<Light> given_;
     gl::Buffer base_;
     gl::Buffer animated_;
+    gl::Buffer suns_;
 };
 
 // glsl/animate_lights.comp: writes LightBuffers::animated() for a point in time.

@@ -11,6 +11,10 @@ namespace ml {
 
 float lightFalloff(float distance, float radius);
 
+// glTF's angular attenuation of a spot (KHR_lights_punctual): saturate((cos - cosOuter) /
+// (cosInner - cosOuter))^2, exactly 0 at and outside the outer cone, 1 inside the inner.
+float spotAttenuation(float cosToAxis, float cosInner, float cosOuter);
+
 // A material's parameters at one surface point, after its textures (README, "Shading model").
 struct SurfaceSample {
     glm::vec3 position;
@@ -31,9 +35,10 @@ struct ShadingTerms {
 };
 ShadingTerms shadingTerms(const glm::vec3& baseColor, float metallic, float roughness);
 
-// The linear radiance the shaders compute for a surface point seen from `eye`; without
+// The linear radiance the shaders compute for a surface point seen from `eye`, from lights of
+// every type (glsl/include/shading.glsl and sun_lights.glsl); without
 // `specular` the Blinn-Phong term is left out (--specular off).
-glm::vec3 shadeReference(const SurfaceSample& s, const glm::vec3& eye, const std::vector<PointLight>& lights, float ambient,
+glm::vec3 shadeReference(const SurfaceSample& s, const glm::vec3& eye, const std::vector<Light>& lights, float ambient,
                          bool specular = true);
 
 }  // namespace ml

@@ -8,6 +8,7 @@
 //                    world space, reading through gltf_accessors (which checks every byte range);
 //   gltf_materials   convert materials and their images on first use;
 //   gltf_cameras     place the perspective cameras the node trees hold;
+//   gltf_lights      place the lights (KHR_lights_punctual) the node trees hold;
 // and here, the warnings for what the scene model does not hold. gltf_common holds the limits
 // and the one-line messages all of them use.
 #include "scenes/gltf_loader.h"
@@ -17,6 +18,7 @@
 #include <optional>
 
 #include "scenes/gltf_cameras.h"
+#include "scenes/gltf_lights.h"
 #include "scenes/gltf_common.h"
 #include "scenes/gltf_container.h"
 #include "scenes/gltf_geometry.h"
@@ -64,12 +66,9 @@ std::vector<std::string> unmodelledFeatures(const tinygltf::Model& model, const 
                                           " skipped (only perspective cameras are modelled)");
     note(skipped.morphedMeshes, "morph targets of " + counted(skipped.morphedMeshes, "mesh", "meshes") + " skipped (not modelled)");
 
-    // tinygltf reads KHR_lights_punctual's lights, so those can be counted.
-    const bool countedLights = !model.lights.empty();
-    if (countedLights)
-        lines.push_back(counted(model.lights.size(), "light", "lights") + " (KHR_lights_punctual) skipped (not modelled)");
+    // KHR_lights_punctual is modelled (gltf_lights), like the extensions materials read.
     for (const std::string& ext : model.extensionsUsed)
-        if (!(countedLights && ext == "KHR_lights_punctual") && !isHandledExtension(ext))
+        if (ext != "KHR_lights_punctual" && !isHandledExtension(ext))
             lines.push_back("extension " + clip(ext, 80) + " skipped (not modelled)");
 
     if (!skipped.primitiveModes.empty())
@@ -110,6 +109,7 @@ Scene loadChecked(const std::string& path, std::vector<std::string>& warnings) {
                        (skipped.primitiveModes.empty() ? std::string("(empty scene)") : "(skipped: " + skippedModes(skipped) + ")"));
     builder.finish();
     scene.cameras = convertCameras(path, model, flat.cameras, skipped.orthographicCameras);
+    scene.lights = convertLights(path, model, flat.lights);
     computeBounds(scene);
 
     for (const std::string& line : unmodelledFeatures(model, skipped)) warnings.push_back(path + ": " + line);

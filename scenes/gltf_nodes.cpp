@@ -101,6 +101,16 @@ FlatScene flattenNodes(const std::string& path, const tinygltf::Model& model) {
                                std::to_string(model.cameras.size()) + " cameras)");
             flat.cameras.push_back({step.node, static_cast<std::size_t>(node.camera), world[step.node]});
         }
+        if (const auto ext = node.extensions.find("KHR_lights_punctual"); ext != node.extensions.end()) {
+            const tinygltf::Value& light = ext->second.Get("light");
+            if (!light.IsNumber() || light.GetNumberAsDouble() != std::floor(light.GetNumberAsDouble()))
+                fail(path, name + ": KHR_lights_punctual \"light\" is not an index");
+            const double index = light.GetNumberAsDouble();
+            if (index < 0.0 || index >= static_cast<double>(model.lights.size()))
+                fail(path, name + ": KHR_lights_punctual lights[" + std::to_string(static_cast<long long>(index)) +
+                               "] out of range (" + std::to_string(model.lights.size()) + " lights)");
+            flat.lights.push_back({step.node, static_cast<std::size_t>(index), world[step.node]});
+        }
         stack.push_back({step.node, step.parent, true});
         for (auto it = node.children.rbegin(); it != node.children.rend(); ++it)
             push(*it, static_cast<std::ptrdiff_t>(step.node), name);

@@ -23,13 +23,20 @@ struct CameraInstance {
     glm::dmat4 world;
 };
 
+struct LightInstance {
+    std::size_t node;
+    std::size_t light;  // KHR_lights_punctual: checked against model.lights
+    glm::dmat4 world;
+};
+
 // What the default scene places, in node-walk order (depth first, children in their order).
 struct FlatScene {
     std::vector<MeshInstance> meshes;
     std::vector<CameraInstance> cameras;
+    std::vector<LightInstance> lights;
 };
 
-// The default scene's mesh and camera instances with their world transforms. Nodes are walked
+// The default scene's mesh, camera and light instances with their world transforms. Nodes are walked
 // with an explicit stack (a 100,000-deep chain must not recurse), and each node may be entered
 // once: glTF nodes form disjoint trees, and re-entering would loop on a cycle or multiply a
 // shared subtree exponentially.

@@ -127,6 +127,21 @@ struct SceneCamera {
     float farPlane = 0.0f;           // glTF zfar, 0 where the file gives none (infinite)
 };
 
+// A light a glTF file places (KHR_lights_punctual) by its node's world transform, in the file's
+// own terms; the renderer turns it into its light model (renderer/light_set.h, lightsFromScene).
+struct SceneLight {
+    enum class Type { Point, Spot, Directional };
+    std::string name;
+    Type type = Type::Point;
+    glm::vec3 position{0.0f};
+    glm::vec3 direction{0.0f, 0.0f, -1.0f};  // the node's -z, unit (spot, directional)
+    glm::vec3 color{1.0f};                    // linear
+    float intensity = 1.0f;                   // candela (point, spot) or lux (directional)
+    float range = 0.0f;                       // 0: none given (infinite in glTF)
+    float innerConeAngle = 0.0f;              // radians (spot)
+    float outerConeAngle = 0.7853981634f;     // radians (spot)
+};
+
 struct Scene {
     std::string name;
     std::vector<Vertex> vertices;
@@ -140,6 +155,7 @@ struct Scene {
     std::vector<glm::vec2> uv1;       // TEXCOORD_1
     std::vector<glm::vec4> colors;    // COLOR_0, linear RGBA (1 where a primitive has none)
     std::vector<SceneCamera> cameras;        // a glTF file's cameras, in the order its default scene's nodes are walked
+    std::vector<SceneLight> lights;          // a glTF file's lights (KHR_lights_punctual), in the same order
     Bounds bounds;                           // of all vertex positions
     std::optional<CameraPose> suggestedView; // procedural scenes set one; glTF derives from bounds
 

@@ -6,6 +6,7 @@
 
 // Uniform buffers
 #define ML_UBO_FRAME 0
+#define ML_UBO_SUN_LIGHTS 1        // directional lights: shaded everywhere, never clustered
 
 // Shader storage buffers
 #define ML_SSBO_LIGHTS 0           // animated lights, read by shading
@@ -92,6 +93,14 @@
 #define ML_FEATURE_UV1 64                  // some texture reads TEXCOORD_1
 #define ML_FEATURE_VERTEX_COLOR 128        // COLOR_0
 #define ML_FEATURE_ALPHA_TEST 256          // some material is MASK (or BLEND, drawn as MASK)
+
+// Light types (README, "The light model"). A point light stores this as its cone cosines: below
+// any cosine, so the spot test passes everywhere and the cone tests never reject it.
+#define ML_POINT_LIGHT_CONE_COS -2.0
+// Directional lights ("suns") sit in a uniform block of this many; every shaded point loops over them.
+#define ML_MAX_SUN_LIGHTS 16
+// Spot lights turn about +y as they drift: radians per metre of drift, times a per-light factor in [-1, 1).
+#define ML_SPOT_TURN_PER_METRE 0.4
 
 // The light animation's compute workgroup size.
 #define ML_ANIMATE_WORKGROUP 256

@@ -33,7 +33,7 @@ vec3 shadeClusterLights(SurfacePoint s, vec3 viewDir, uint cluster, float viewDe
             uint i = w * 32u + uint(findLSB(bits));
             bits &= bits - 1u;
             Light l = lights[zbinSortedLights[i]];
-            color += shadePointLight(s, viewDir, l.positionRadius, l.color.rgb);
+            color += shadeLight(s, viewDir, l.positionRadius, l.colorCosInner, l.directionCosOuter);
         }
     }
     return color;
@@ -65,7 +65,7 @@ vec3 shadeClusterLights(SurfacePoint s, vec3 viewDir, uint cluster, float viewDe
     vec3 color = vec3(0.0);
     for (uint k = 0u; k < range.y; ++k) {
         Light l = lights[lightIndices[range.x + k]];
-        color += shadePointLight(s, viewDir, l.positionRadius, l.color.rgb);
+        color += shadeLight(s, viewDir, l.positionRadius, l.colorCosInner, l.directionCosOuter);
     }
     return color;
 }

@@ -33,7 +33,7 @@ bool viewShadesLights() {
 
 // The pixel's output from the sum of its cluster lights (zero when the view shades none).
 vec4 finishPixel(ResolvedPixel px, vec3 lightSum) {
-    vec3 color = viewShadesLights() ? shadeUnlit(px.surface) + lightSum : vec3(0.0);
+    vec3 color = viewShadesLights() ? shadeUnclustered(px.surface, px.viewDir) + lightSum : vec3(0.0);
     return vec4(debugViewColor(grid.options.w, px.surface, px.cluster, px.viewDepth, color), 1.0);
 }
 

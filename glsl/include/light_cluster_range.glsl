@@ -1,25 +1,62 @@
 // The conservative block of clusters a light may reach: slices from its view-space depth
 // extent, tiles from the screen rectangle of its bounding box (the whole screen when it
-// crosses the near plane). Needs frame_uniforms, lights and cluster_grid.
+// crosses the near plane). A spot's box is the exact box of its cone's sector (apex and cap,
+// include/spot_cone.glsl), not its sphere's. Needs frame_uniforms, lights, cluster_grid and spot_cone.
 
 struct ClusterRange {
     uvec3 lo;      // first tile x, tile y, slice
     uvec3 hi;      // last (inclusive)
-    vec3 center;   // view space
+    vec3 center;   // view space: the light's sphere, or the sphere holding a spot's sector
     float radius;
 };
 
+// A light in view space, as the cluster tests take it.
+struct ViewLight {
+    vec3 position;  // the light (a spot's apex)
+    float radius;
+    vec3 axis;      // a spot's direction, unit
+    float cosOuter; // ML_POINT_LIGHT_CONE_COS for a point light
+};
+
+ViewLight viewLight(uint lightIndex) {
+    Light l = lights[lightIndex];
+    ViewLight v;
+    v.position = (u_view * vec4(l.positionRadius.xyz, 1.0)).xyz;
+    v.radius = l.positionRadius.w;
+    v.axis = mat3(u_view) * l.directionCosOuter.xyz;
+    v.cosOuter = l.directionCosOuter.w;
+    return v;
+}
+
+// The view-space box of what the light can reach: its sphere's, or its sector's from the
+// sector's support along each axis.
+void viewLightBox(ViewLight v, out vec3 lo, out vec3 hi) {
+    if (!isSpotCone(v.cosOuter)) {
+        lo = v.position - v.radius;
+        hi = v.position + v.radius;
+        return;
+    }
+    float slack = kSpotSlack * (v.radius + length(v.position));
+    for (int a = 0; a < 3; ++a) {
+        vec3 e = vec3(0.0);
+        e[a] = 1.0;
+        hi[a] = v.position[a] + spotReach(e, v.axis, v.cosOuter, v.radius) + slack;
+        lo[a] = v.position[a] - spotReach(-e, v.axis, v.cosOuter, v.radius) - slack;
+    }
+}
+
 // False when the light cannot reach any cluster.
 bool lightClusterRange(uint lightIndex, out ClusterRange range) {
-    vec4 pr = lights[lightIndex].positionRadius;
-    float r = pr.w;
-    range.radius = r;
+    ViewLight v = viewLight(lightIndex);
+    vec4 sphere = spotBoundingSphere(v.position, v.axis, v.cosOuter, v.radius);
+    range.center = sphere.xyz;
+    range.radius = sphere.w;
     range.lo = uvec3(0u);
     range.hi = uvec3(0u);
-    if (!(r > 0.0)) return false;
-    vec3 c = (u_view * vec4(pr.xyz, 1.0)).xyz;
-    range.center = c;
-    float zMin = -c.z - r, zMax = -c.z + r;
+    if (!(v.radius > 0.0)) return false;
+    vec3 boxLo, boxHi;
+    viewLightBox(v, boxLo, boxHi);
+    float zMin = -boxHi.z, zMax = -boxLo.z;
 
     // The first and last slices reach the camera's planes (see cluster_bounds.comp).
     float gridNear = min(grid.tile.z, grid.slicing.x) * (1.0 - 1e-4);
@@ -30,11 +67,11 @@ bool lightClusterRange(uint lightIndex, out ClusterRange range) {
 
     uvec2 t0 = uvec2(0u), t1 = grid.dims.xy - 1u;
     if (zMin > gridNear * 1e-3) {
-        // Entirely in front of the camera: project the corners of the sphere's bounding box.
+        // Entirely in front of the camera: project the corners of the bounding box.
         vec2 lo = vec2(1e30), hi = vec2(-1e30);
         for (int k = 0; k < 8; ++k) {
-            vec3 v = c + r * vec3((k & 1) != 0 ? 1.0 : -1.0, (k & 2) != 0 ? 1.0 : -1.0, (k & 4) != 0 ? 1.0 : -1.0);
-            vec2 ndc = vec2(u_proj[0][0] * v.x, u_proj[1][1] * v.y) / -v.z;
+            vec3 p = vec3((k & 1) != 0 ? boxHi.x : boxLo.x, (k & 2) != 0 ? boxHi.y : boxLo.y, (k & 4) != 0 ? boxHi.z : boxLo.z);
+            vec2 ndc = vec2(u_proj[0][0] * p.x, u_proj[1][1] * p.y) / -p.z;
             lo = min(lo, ndc);
             hi = max(hi, ndc);
         }

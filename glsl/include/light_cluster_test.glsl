@@ -1,9 +1,9 @@
-// Does a light's sphere reach a cluster? The test of --cull, chosen at compile time by ML_CULL
-// (bindings.h). Every variant is conservative: a sphere that reaches any point of the cluster's
+// Does a light reach a cluster? The sphere test of --cull, chosen at compile time by ML_CULL
+// (bindings.h), and for a spot also its cone (include/spot_cone.glsl). Every variant is conservative: a sphere that reaches any point of the cluster's
 // volume (its tile's frustum between its depth extent, include/cluster_grid.glsl) always
 // passes; they differ in how many spheres that miss the volume still pass (false positives,
 // measured by `render --stats` against the exact distance, renderer/clustering/cluster_culling.h).
-// Needs frame_uniforms and cluster_grid. Mirrored on the CPU by ml::passesCullTest.
+// Needs frame_uniforms, lights, cluster_grid and spot_cone. Mirrored on the CPU by ml::passesCullTest.
 
 #ifndef ML_CULL
 #define ML_CULL ML_CULL_AABB
@@ -84,4 +84,23 @@ bool sphereReachesCluster(uint cluster, uvec3 c3, vec3 center, float radius) {
 #else
     return sphereReachesAabb(cluster, center, r);
 #endif
+}
+
+// A spot's sector against the sphere around the cluster's view-space AABB (Wronski's cone
+// test); always true for a point light. Reads the light's cone itself, so point-only lists pay
+// one read.
+bool spotConeReachesCluster(uint cluster, uint light) {
+    vec4 directionCosOuter = lights[light].directionCosOuter;
+    if (!isSpotCone(directionCosOuter.w)) return true;
+    vec4 positionRadius = lights[light].positionRadius;
+    vec3 apex = (u_view * vec4(positionRadius.xyz, 1.0)).xyz;
+    vec3 lo = aabbs[cluster].minPoint.xyz, hi = aabbs[cluster].maxPoint.xyz;
+    return spotMayReachSphere(apex, mat3(u_view) * directionCosOuter.xyz, directionCosOuter.w, positionRadius.w,
+                              0.5 * (lo + hi), 0.5 * length(hi - lo));
+}
+
+// The whole test: `center`, `radius` are the light's bounding sphere (a spot's sector's,
+// ClusterRange), then the spot's cone.
+bool lightReachesCluster(uint cluster, uvec3 c3, uint light, vec3 center, float radius) {
+    return sphereReachesCluster(cluster, c3, center, radius) && spotConeReachesCluster(cluster, light);
 }

@@ -6,6 +6,10 @@
 //   L_out = ambient * occlusion * (diffuse + f0) + emissive
 //         + sum over lights of  color * W(d, r) * max(N.L, 0) * (diffuse + f0 * (s + 8) / 8 * max(N.H, 0)^s)
 //   W(d, r) = saturate(1 - (d/r)^4)^2 / (d^2 + 1)
+// A spot light's colour is further weighted by glTF's angular attenuation (KHR_lights_punctual):
+//   A = saturate((cos - cosOuter) / (cosInner - cosOuter))^2,  cos = angle between its direction and -L,
+// exactly zero at and outside the outer cone, so culling by the cone is as exact as by r. A
+// directional light has colour c from direction -L everywhere (W = A = 1).
 // W is smooth, and exactly zero at and beyond r, so culling a light outside its radius is exact.
 // The specular term is weighted by N.L too, so shading is continuous at the terminator and a
 // tiny error in a rebuilt position or normal cannot switch a highlight on or off. --specular off
@@ -48,18 +52,45 @@ void deriveShadingTerms(inout SurfacePoint s) {
     s.unlit = ambientStrength() * s.occlusion * (s.diffuse + f0) + s.emissive;
 }
 
-vec3 shadePointLight(SurfacePoint s, vec3 viewDir, vec4 positionRadius, vec3 color) {
+// glTF's angular attenuation: linear in the cosine between the outer and inner cones, squared.
+// Zero at and outside the outer cone, one inside the inner; an inner cone equal to the outer
+// gives a hard edge (no division by zero: the middle case then never happens).
+float spotAttenuation(float cosToAxis, float cosInner, float cosOuter) {
+    if (cosToAxis <= cosOuter) return 0.0;
+    if (cosToAxis >= cosInner) return 1.0;
+    float t = (cosToAxis - cosOuter) / (cosInner - cosOuter);
+    return t * t;
+}
+
+// The Blinn-Phong terms of a light of colour `color` arriving from unit direction l, weighted
+// by its falloff (and cone).
+vec3 shadeIncoming(SurfacePoint s, vec3 viewDir, vec3 l, vec3 color, float weight) {
+    float nDotL = dot(s.normal, l);
+    if (nDotL <= 0.0) return vec3(0.0);
+    if (!specularEnabled()) return color * (weight * nDotL) * s.diffuse;
+    vec3 h = normalize(l + viewDir);
+    float spec = pow(max(dot(s.normal, h), 0.0), s.shininess);
+    return color * (weight * nDotL) * (s.diffuse + s.specular * spec);
+}
+
+// A point or spot light (include/lights.glsl's fields). A point light's cone cosines are
+// ML_POINT_LIGHT_CONE_COS, and the branch on them is uniform where a scene has no spots.
+vec3 shadeLight(SurfacePoint s, vec3 viewDir, vec4 positionRadius, vec4 colorCosInner, vec4 directionCosOuter) {
     vec3 toLight = positionRadius.xyz - s.position;
     float d = length(toLight);
     float falloff = lightFalloff(d, positionRadius.w);
     if (falloff <= 0.0) return vec3(0.0);
     vec3 l = toLight / max(d, 1e-6);
-    float nDotL = dot(s.normal, l);
-    if (nDotL <= 0.0) return vec3(0.0);
-    if (!specularEnabled()) return color * (falloff * nDotL) * s.diffuse;
-    vec3 h = normalize(l + viewDir);
-    float spec = pow(max(dot(s.normal, h), 0.0), s.shininess);
-    return color * (falloff * nDotL) * (s.diffuse + s.specular * spec);
+    if (directionCosOuter.w > -1.5) {
+        falloff *= spotAttenuation(dot(-l, directionCosOuter.xyz), colorCosInner.w, directionCosOuter.w);
+        if (falloff <= 0.0) return vec3(0.0);
+    }
+    return shadeIncoming(s, viewDir, l, colorCosInner.rgb, falloff);
+}
+
+// A directional light travelling along the unit `direction`: no falloff, no cone.
+vec3 shadeDirectionalLight(SurfacePoint s, vec3 viewDir, vec3 direction, vec3 color) {
+    return shadeIncoming(s, viewDir, -direction, color, 1.0);
 }
 
 // What a surface shows with no light on it: the ambient term and its own glow.

@@ -117,6 +117,19 @@ bool passesCullTest(CullMode mode, const ClusterFrustum& cluster, const glm::vec
     return true;
 }
 
+bool passesLightCullTest(CullMode mode, const ClusterFrustum& cluster, const SpotCone& light) {
+    if (!(light.radius > 0.0f)) return false;
+    const glm::vec4 sphere = spotBoundingSphere(light);
+    if (!passesCullTest(mode, cluster, glm::vec3(sphere), sphere.w)) return false;
+    const Aabb box = boundsOf(cluster);
+    return spotMayReachSphere(light, 0.5f * (box.min + box.max), 0.5f * glm::length(box.max - box.min));
+}
+
+bool lightReachesCluster(const ClusterFrustum& cluster, const SpotCone& light) {
+    if (distanceToCluster(cluster, light.apex) >= light.radius) return false;
+    return !light.isSpot() || spotMeetsConvexHull(light, cluster.corners);
+}
+
 float distanceToCluster(const ClusterFrustum& f, const glm::vec3& p) {
     const glm::vec3 centroid = [&] {
         glm::vec3 s(0.0f);

@@ -19,6 +19,7 @@
 
 #include "renderer/clustering/cluster_grid.h"
 #include "renderer/clustering/clustering_settings.h"
+#include "renderer/clustering/spot_cone.h"
 
 namespace ml {
 
@@ -40,6 +41,15 @@ Aabb boundsOf(const ClusterFrustum& cluster);
 
 // The --cull test of the GPU for a sphere (view-space centre, radius).
 bool passesCullTest(CullMode mode, const ClusterFrustum& cluster, const glm::vec3& center, float radius);
+
+// The whole test of the GPU's assignments for a light in view space (glsl/include/
+// light_cluster_test.glsl): its bounding sphere (a spot's sector's) by `mode`, then a spot's
+// cone against the sphere around the cluster's AABB.
+bool passesLightCullTest(CullMode mode, const ClusterFrustum& cluster, const SpotCone& light);
+
+// Exact: does the light (view space) reach some point of the cluster's volume? A point light by
+// distanceToCluster, a spot by GJK between its sector and the volume's corners.
+bool lightReachesCluster(const ClusterFrustum& cluster, const SpotCone& light);
 
 // Exact Euclidean distance from p to the cluster's volume (0 inside): the sphere reaches the
 // cluster iff this is below its radius.

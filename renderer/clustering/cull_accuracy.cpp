@@ -7,8 +7,9 @@
 
 namespace ml {
 
-CullAccuracy measureCullAccuracy(const ClusteredLighting& clustering, const std::vector<PointLight>& lights,
+CullAccuracy measureCullAccuracy(const ClusteredLighting& clustering, const std::vector<Light>& drawn,
                                  const FrameUniforms& uniforms, std::uint64_t maxReferences) {
+    const std::vector<Light> lights = clusteredLights(drawn);  // what the lists index
     const ClusterGrid& grid = clustering.grid();
     const ClusterGridGpu g = clustering.downloadGrid();
     const DepthSlicing slicing{g.tile.y > 0.5f, g.slicing.x, g.slicing.y, g.slicing.z, g.slicing.w};
@@ -19,9 +20,9 @@ CullAccuracy measureCullAccuracy(const ClusteredLighting& clustering, const std:
 
     CullAccuracy a;
     a.clusterStride = static_cast<std::uint32_t>(std::max<std::uint64_t>(1, (total + maxReferences - 1) / std::max<std::uint64_t>(maxReferences, 1)));
-    std::vector<glm::vec3> centers;
-    centers.reserve(lights.size());
-    for (const PointLight& l : lights) centers.emplace_back(uniforms.view * glm::vec4(l.position, 1.0f));
+    std::vector<SpotCone> inView;
+    inView.reserve(lights.size());
+    for (const Light& l : lights) inView.push_back(spotConeOf(l, uniforms.view));
     // With --normal-cones the lists are per (cluster, normal bin) key; each key is examined.
     const std::uint32_t bins = clustering.listsPerCluster();
     for (std::uint32_t c = 0; c < grid.clusterCount(); c += a.clusterStride) {
@@ -30,8 +31,15 @@ CullAccuracy measureCullAccuracy(const ClusteredLighting& clustering, const std:
         const ClusterFrustum f = clusterFrustum(grid, slicing, g.tile.z, g.tile.w, uniforms.proj, width, height, x, y, slice);
         for (std::uint32_t key = c * bins; key < (c + 1) * bins; ++key) {
             for (std::uint32_t light : lists[key]) {
+                if (light >= lights.size()) continue;
+                const bool spot = inView[light].isSpot();
+                const bool reaches = lightReachesCluster(f, inView[light]);
                 ++a.references;
-                if (light < lights.size() && distanceToCluster(f, centers[light]) >= lights[light].radius) ++a.falsePositives;
+                if (!reaches) ++a.falsePositives;
+                if (spot) {
+                    ++a.spotReferences;
+                    if (!reaches) ++a.spotFalsePositives;
+                }
             }
         }
     }

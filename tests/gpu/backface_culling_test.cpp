@@ -24,8 +24,8 @@ Scene quadsWithOneFacingAway(bool frontQuadDoubleSided, bool withFrontQuad = tru
 }
 
 FloatImage renderQuads(const Scene& scene, MethodKind kind, bool culling) {
-    const std::vector<PointLight> lights = {PointLight{{0.3f, 0.2f, 1.5f}, 6.0f, {2.0f, 2.0f, 2.0f}},
-                                            PointLight{{-0.4f, -0.3f, -0.5f}, 3.0f, {1.0f, 0.8f, 0.6f}}};
+    const std::vector<Light> lights = {Light{{0.3f, 0.2f, 1.5f}, 6.0f, {2.0f, 2.0f, 2.0f}},
+                                            Light{{-0.4f, -0.3f, -0.5f}, 3.0f, {1.0f, 0.8f, 0.6f}}};
     FrameSettings s = smallFrame(scene, CameraPose{{0, 0, 3}, {0, 0, 0}, 60.0f}, 160, 90);
     s.method.kind = kind;
     s.backfaceCulling = culling;

@@ -16,7 +16,7 @@ float luminance(const float* c) { return 0.2126f * c[0] + 0.7152f * c[1] + 0.072
 // One bright light close to the boxes' floor, a few dim ones: a small hot spot.
 TestScene hotSpotScene() {
     TestScene t = testScene("boxes", 8, 3, 0.5f);
-    t.lights.push_back(PointLight{{0.3f, 0.4f, 0.2f}, 3.0f, {40.0f, 30.0f, 20.0f}});
+    t.lights.push_back(Light{{0.3f, 0.4f, 0.2f}, 3.0f, {40.0f, 30.0f, 20.0f}});
     return t;
 }
 

@@ -23,7 +23,7 @@ TEST_P(ClusteredAccuracy, MatchesNaiveOnEveryGridAndSlicing) {
     const AccuracyCase c = GetParam();
     const TestScene t = testScene(c.scene, c.lights, 5, c.lights >= 1024 ? 0.5f : 1.0f);
     const Scene& scene = t.scene;
-    const std::vector<PointLight>& lights = t.lights;
+    const std::vector<Light>& lights = t.lights;
     const std::uint32_t frame = 45;
 
     FrameSettings s = smallFrame(scene, 160, 90);
@@ -75,7 +75,7 @@ TEST_F(CappedOverflow, IsReportedAndItsErrorMeasured) {
     LightGeneration gen;
     gen.count = 512;
     gen.radius = defaultLightRadius(scene.bounds);
-    const std::vector<PointLight> lights = generateLights(lightVolume(scene.bounds), gen);
+    const std::vector<Light> lights = generateLights(lightVolume(scene.bounds), gen);
     FrameSettings s = smallFrame(scene, 160, 90);
     FrameRenderer renderer(scene, lights, s);
     renderer.render(0);

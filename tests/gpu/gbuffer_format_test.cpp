@@ -57,9 +57,9 @@ TEST_F(GBufferLayouts, TwoComponentLosesTheSignOfZWherePackedDoesNot) {
         {{0.0f, 0.0f, 0.0f}, {0.0f, 2.0f, 0.0f}, {2.0f, 0.0f, 0.0f}, {0.8f, 0.7f, 0.6f}},    // normal -z
         {{0.0f, -2.0f, -2.0f}, {0.0f, 0.0f, 2.0f}, {2.0f, 0.0f, 0.0f}, {0.5f, 0.6f, 0.7f}},  // floor, normal +y
     });
-    std::vector<PointLight> lights;
+    std::vector<Light> lights;
     for (int i = 0; i < 16; ++i)
-        lights.push_back(PointLight{{-1.5f + 0.2f * i, -1.0f + 0.13f * i, -0.7f - 0.05f * i}, 3.0f, {1.0f, 0.9f, 0.8f}});
+        lights.push_back(Light{{-1.5f + 0.2f * i, -1.0f + 0.13f * i, -0.7f - 0.05f * i}, 3.0f, {1.0f, 0.9f, 0.8f}});
     FrameRenderer renderer(scene, lights, smallFrame(scene, CameraPose{{0.5f, 0.3f, -5.0f}, {0.0f, 0.0f, 0.0f}, 50.0f}, 160, 90));
     const ReferenceFrame naive = renderReference(renderer, 0);
 
@@ -90,9 +90,9 @@ TEST_F(GBufferLayouts, TwoComponentLosesTheSignOfZWherePackedDoesNot) {
 // is exact.
 TEST_F(GBufferLayouts, TwoComponentIsExactWhereZIsNotNegative) {
     const Scene scene = quadScene({{{0.0f, 0.0f, 0.0f}, {2.0f, 0.0f, 0.0f}, {0.0f, 2.0f, 0.0f}, {0.8f, 0.7f, 0.6f}}});  // normal +z
-    std::vector<PointLight> lights;
+    std::vector<Light> lights;
     for (int i = 0; i < 16; ++i)
-        lights.push_back(PointLight{{-1.5f + 0.2f * i, -1.0f + 0.13f * i, 0.7f + 0.05f * i}, 3.0f, {1.0f, 0.9f, 0.8f}});
+        lights.push_back(Light{{-1.5f + 0.2f * i, -1.0f + 0.13f * i, 0.7f + 0.05f * i}, 3.0f, {1.0f, 0.9f, 0.8f}});
     FrameRenderer renderer(scene, lights, smallFrame(scene, CameraPose{{0.5f, 0.3f, 5.0f}, {0.0f, 0.0f, 0.0f}, 50.0f}, 160, 90));
     const ReferenceFrame naive = renderReference(renderer, 0);
     renderer.setMethod(withGBuffer(MethodKind::Deferred, GBufferFormat::TwoComponent));

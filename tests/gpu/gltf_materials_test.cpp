@@ -74,7 +74,7 @@ Scene writeAndLoad(Gltf& g, const std::vector<json>& primitives, const std::stri
 
 // Renders naive, then holds every clustered method (and, for deferred, the standard G-buffer)
 // to it within the accuracy contract. Returns naive's frame.
-test::ReferenceFrame expectEveryMethodMatchesNaive(const Scene& scene, const std::vector<PointLight>& lights,
+test::ReferenceFrame expectEveryMethodMatchesNaive(const Scene& scene, const std::vector<Light>& lights,
                                                    const std::string& label, const CameraPose& pose = kFrontView) {
     FrameSettings s = test::smallFrame(scene, pose, kWidth, kHeight);
     FrameRenderer renderer(scene, lights, s);
@@ -97,7 +97,7 @@ test::ReferenceFrame expectEveryMethodMatchesNaive(const Scene& scene, const std
     return naive;
 }
 
-const std::vector<PointLight> kOneLight{{{0.3f, 0.2f, 3.0f}, 12.0f, {3.0f, 3.0f, 3.0f}}};
+const std::vector<Light> kOneLight{{{0.3f, 0.2f, 3.0f}, 12.0f, {3.0f, 3.0f, 3.0f}}};
 
 float luminance(const float* p) { return 0.2126f * p[0] + 0.7152f * p[1] + 0.0722f * p[2]; }
 
@@ -165,7 +165,7 @@ TEST_F(GltfMaterials, NormalMapTiltsTheLitPatternAndGeneratedTangentsAgree) {
         EXPECT_NEAR(t.x, 1.0f, 1e-5f);
         EXPECT_EQ(t.w, -1.0f);
     }
-    const std::vector<PointLight> fromRight{{{6.0f, 0.0f, 1.0f}, 20.0f, {4.0f, 4.0f, 4.0f}}};
+    const std::vector<Light> fromRight{{{6.0f, 0.0f, 1.0f}, 20.0f, {4.0f, 4.0f, 4.0f}}};
     const test::ReferenceFrame a = expectEveryMethodMatchesNaive(given, fromRight, "normal map, given tangents");
     FrameRenderer renderer(generated, fromRight, test::smallFrame(generated, kFrontView, kWidth, kHeight));
     renderer.render(0);

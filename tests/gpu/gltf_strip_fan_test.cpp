@@ -51,8 +51,8 @@ Scene ribbonAndFan(const std::string& name, int stripMode, const std::vector<std
 }
 
 RgbaImage renderNaive(const Scene& scene) {
-    const std::vector<PointLight> lights = {PointLight{{0.3f, 0.2f, 1.5f}, 6.0f, {2.0f, 2.0f, 2.0f}},
-                                            PointLight{{-0.8f, -0.5f, 0.8f}, 3.0f, {1.0f, 0.8f, 0.6f}}};
+    const std::vector<Light> lights = {Light{{0.3f, 0.2f, 1.5f}, 6.0f, {2.0f, 2.0f, 2.0f}},
+                                            Light{{-0.8f, -0.5f, 0.8f}, 3.0f, {1.0f, 0.8f, 0.6f}}};
     EXPECT_EQ(scene.cameras.size(), 1u);
     FrameSettings s = smallFrame(scene, scene.cameras.at(0).pose, 160, 90);
     s.camera = cameraFromSceneCamera(scene.cameras.at(0));

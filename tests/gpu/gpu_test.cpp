@@ -49,13 +49,14 @@ std::string writeFailureImages(const std::string& name, const RgbaImage& test, c
     return dir.string();
 }
 
-TestScene testScene(const std::string& name, std::uint32_t count, std::uint32_t seed, float radiusScale) {
+TestScene testScene(const std::string& name, std::uint32_t count, std::uint32_t seed, float radiusScale, float spotShare) {
     std::vector<std::string> warnings;
     TestScene t{loadScene(SceneRequest{name, 0.25f}, warnings), {}};
     LightGeneration gen;
     gen.count = count;
     gen.seed = seed;
     gen.radius = defaultLightRadius(t.scene.bounds) * radiusScale;
+    gen.spotShare = spotShare;
     t.lights = generateLights(lightVolume(t.scene.bounds), gen);
     return t;
 }
@@ -81,7 +82,7 @@ Scene quadScene(const std::vector<TestQuad>& quads) {
     return scene;
 }
 
-std::vector<MethodError> clusteredErrors(const Scene& scene, const std::vector<PointLight>& lights, FrameSettings s,
+std::vector<MethodError> clusteredErrors(const Scene& scene, const std::vector<Light>& lights, FrameSettings s,
                                          std::uint32_t frame) {
     const ClusteringSettings clustering = s.method.clustering;
     s.method = MethodSettings{};

@@ -31,12 +31,13 @@ std::filesystem::path testOutputDir();
 std::string writeFailureImages(const std::string& name, const RgbaImage& test, const RgbaImage& reference);
 
 // A built-in scene at test detail (0.25) and `count` lights from `seed` in its light volume,
-// with radius defaultLightRadius x radiusScale.
+// with radius defaultLightRadius x radiusScale; a share of them spots (cones of 20 to 60 degrees).
 struct TestScene {
     Scene scene;
-    std::vector<PointLight> lights;
+    std::vector<Light> lights;
 };
-TestScene testScene(const std::string& name, std::uint32_t count, std::uint32_t seed, float radiusScale = 1.0f);
+TestScene testScene(const std::string& name, std::uint32_t count, std::uint32_t seed, float radiusScale = 1.0f,
+                    float spotShare = 0.0f);
 
 // A scene built in a test from quads: each a centre, two half-extent axes (the normal is
 // u x v) and a base colour; one material per quad, drawn in the order given.
@@ -104,7 +105,7 @@ struct MethodError {
 
 // Renders frame `frame` with naive, then with Forward+, clustered deferred and the visibility
 // buffer (the clustering of s.method), and returns each one's error against naive.
-std::vector<MethodError> clusteredErrors(const Scene& scene, const std::vector<PointLight>& lights, FrameSettings s,
+std::vector<MethodError> clusteredErrors(const Scene& scene, const std::vector<Light>& lights, FrameSettings s,
                                          std::uint32_t frame = 0);
 // Every method within the accuracy contract (design.md): 1/255 on 8 bits, 50 dB on floats.
 void expectWithinContract(const std::vector<MethodError>& errors, const std::string& label);

@@ -6,11 +6,13 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <set>
 
 #include "gpu_test.h"
 #include "renderer/clustering/cluster_culling.h"
+#include "renderer/clustering/spot_cone.h"
 #include "renderer/clustering/clustered_lighting.h"
 #include "scenes/scene_library.h"
 
@@ -25,13 +27,14 @@ struct AssignmentCase {
     bool activeOnly;
     CullMode cull = CullMode::Aabb;
     AssignMode assign = AssignMode::Exact;
+    float spotShare = 0.0f;
 };
 
 class LightAssignment : public GpuTest, public ::testing::WithParamInterface<AssignmentCase> {};
 
 TEST_P(LightAssignment, ListsMatchTheCpuReference) {
     const AssignmentCase c = GetParam();
-    const TestScene t = testScene(c.scene, c.lights, 11, 0.5f);
+    const TestScene t = testScene(c.scene, c.lights, 11, c.spotShare > 0.0f ? 1.0f : 0.5f, c.spotShare);
     const Scene& scene = t.scene;
     FrameSettings s = smallFrame(scene, 200, 120);
     s.method.kind = MethodKind::Deferred;
@@ -46,7 +49,7 @@ TEST_P(LightAssignment, ListsMatchTheCpuReference) {
     const ClusterGridGpu g = clustering.downloadGrid();
     const auto aabbs = clustering.downloadAabbs();
     const auto lists = clustering.downloadLists();
-    const auto lights = renderer.lights().downloadAnimated();
+    const auto lights = clusteredLights(renderer.lights().downloadAnimated());
     const glm::mat4 view = renderer.uniforms().view, proj = renderer.uniforms().proj;
     const float cameraNear = s.camera.nearPlane, cameraFar = s.camera.farPlane;
     const DepthSlicing slicing{g.tile.y > 0.5f, g.slicing.x, g.slicing.y, g.slicing.z, g.slicing.w};
@@ -57,7 +60,20 @@ TEST_P(LightAssignment, ListsMatchTheCpuReference) {
 
     std::size_t missing = 0, outsideBox = 0, rejectedListed = 0, looseInVolume = 0, references = 0;
     std::vector<glm::vec3> centers;
-    for (const PointLight& l : lights) centers.push_back(glm::vec3(view * glm::vec4(l.position, 1.0f)));
+    std::vector<SpotCone> cones, narrower, wider;  // a spot's sector; shrunk and grown a little against rounding
+    for (const Light& l : lights) {
+        centers.push_back(glm::vec3(view * glm::vec4(l.position, 1.0f)));
+        cones.push_back(spotConeOf(l, view));
+        narrower.push_back(cones.back());
+        wider.push_back(cones.back());
+        narrower.back().radius *= 1.0f - 1e-3f;
+        wider.back().radius *= 1.0f + 1e-3f;
+        if (l.type == LightType::Spot) {
+            narrower.back().cosOuter = std::cos(l.outerConeAngle - 1e-3f);
+            wider.back().cosOuter = std::cos(std::min(l.outerConeAngle + 1e-3f, 1.5707963f));
+        }
+    }
+    std::size_t spotReferences = 0, spotsOutsideCone = 0;
     for (std::uint32_t slice = 0; slice < grid.slices; ++slice) {
         for (std::uint32_t y = 0; y < grid.tilesY; ++y) {
             for (std::uint32_t x = 0; x < grid.tilesX; ++x) {
@@ -74,8 +90,21 @@ TEST_P(LightAssignment, ListsMatchTheCpuReference) {
                 references += lists[cluster].size();
                 const ClusterFrustum volume = clusterFrustum(grid, slicing, cameraNear, cameraFar, proj, s.width, s.height, x, y, slice);
                 for (std::uint32_t i = 0; i < lights.size(); ++i) {
-                    const float r = lights[i].radius;
                     const bool isListed = listed.count(i) > 0;
+                    if (cones[i].isSpot()) {
+                        // A spot: listed only when the CPU's copy of the whole test passes, never
+                        // missing where its sector (exact, GJK) lights a point of the volume.
+                        rejectedListed += isListed && !passesLightCullTest(c.cull, volume, wider[i]);
+                        const bool reaches = lightReachesCluster(volume, narrower[i]);
+                        if (reaches && !isListed && !c.activeOnly && ++missing <= 5)
+                            ADD_FAILURE() << "spot " << i << " missing from cluster " << x << "," << y << " slice " << slice;
+                        spotReferences += isListed;
+                        const bool outside = !lightReachesCluster(volume, cones[i]);
+                        spotsOutsideCone += isListed && outside;
+                        looseInVolume += isListed && outside;
+                        continue;
+                    }
+                    const float r = lights[i].radius;
                     // Listed only when the CPU's copy of the cull test (with a little slack) passes.
                     rejectedListed += isListed && !passesCullTest(c.cull, volume, centers[i], r * (1.0f + 1e-3f));
                     if (distanceSquared(box, centers[i]) > r * r * (1.0f + 1e-3f)) {
@@ -107,8 +136,14 @@ TEST_P(LightAssignment, ListsMatchTheCpuReference) {
     std::printf("cull %s, assign %s: %zu references, %zu (%.1f %%) listed without reaching the cluster\n",
                 cullModeName(c.cull), assignModeName(c.assign), references, looseInVolume,
                 references ? 100.0 * looseInVolume / references : 0.0);
+    if (spotReferences > 0)
+        std::printf("  spots: %zu references, %zu (%.1f %%) whose sector reaches no point of the cluster\n", spotReferences,
+                    spotsOutsideCone, 100.0 * spotsOutsideCone / spotReferences);
     if (c.lights > 0) {
         EXPECT_GT(references, 0u);
+    }
+    if (c.spotShare > 0.0f) {
+        EXPECT_GT(spotReferences, 0u);
     }
 }
 
@@ -126,12 +161,18 @@ INSTANTIATE_TEST_SUITE_P(Grids, LightAssignment,
                       AssignmentCase{"atrium", 200, 24, 16, Slicing::Fitted, false, CullMode::Cone, AssignMode::Capped},
                       AssignmentCase{"atrium", 200, 24, 16, Slicing::Fitted, false, CullMode::Aabb, AssignMode::PerCluster},
                       AssignmentCase{"boxes", 64, 7, 5, Slicing::Log, false, CullMode::Sphere, AssignMode::PerCluster},
-                      AssignmentCase{"atrium", 200, 13, 9, Slicing::Fitted, true, CullMode::Cone, AssignMode::PerCluster}),
+                      AssignmentCase{"atrium", 200, 13, 9, Slicing::Fitted, true, CullMode::Cone, AssignMode::PerCluster},
+                      // Half the lights spots: every cull test and assignment takes their cones.
+                      AssignmentCase{"atrium", 200, 24, 16, Slicing::Fitted, false, CullMode::Aabb, AssignMode::Exact, 0.5f},
+                      AssignmentCase{"atrium", 200, 24, 16, Slicing::Fitted, false, CullMode::Sphere, AssignMode::Exact, 0.5f},
+                      AssignmentCase{"boxes", 64, 7, 5, Slicing::Log, false, CullMode::Cone, AssignMode::Exact, 0.5f},
+                      AssignmentCase{"atrium", 200, 24, 16, Slicing::Fitted, false, CullMode::Aabb, AssignMode::Capped, 0.5f},
+                      AssignmentCase{"atrium", 200, 13, 9, Slicing::Fitted, false, CullMode::Cone, AssignMode::PerCluster, 0.5f}),
     [](const auto& info) {
         const AssignmentCase& c = info.param;
         return testNameOf(std::string(c.scene) + "_" + std::to_string(c.lights) + "_lights_" + std::to_string(c.tilesX) + "x" +
                           std::to_string(c.slices) + "_" + slicingName(c.slicing) + "_" + cullModeName(c.cull) + "_" +
-                          assignModeName(c.assign) + (c.activeOnly ? "_active_only" : ""));
+                          assignModeName(c.assign) + (c.activeOnly ? "_active_only" : "") + (c.spotShare > 0.0f ? "_spots" : ""));
     });
 
 // The list sort on each of its paths: short lists by rank sort (up to ML_SORT_RANK_MAX) and

@@ -17,7 +17,7 @@ TEST_F(NaiveForwardTest, MatchesTheFormulaOnThePlane) {
     const Material& m = plane.materials[plane.draws.at(0).material];
     ASSERT_FALSE(m.baseColorTexture.present()) << "this test assumes an untextured plane";
 
-    std::vector<PointLight> lights{
+    std::vector<Light> lights{
         {{0.0f, 1.0f, 0.0f}, 4.0f, {1.0f, 0.5f, 0.25f}},
         {{3.0f, 0.5f, -2.0f}, 3.0f, {0.2f, 1.0f, 0.4f}},
         {{-4.0f, 2.0f, 3.0f}, 6.0f, {0.5f, 0.5f, 2.0f}},
@@ -70,16 +70,16 @@ TEST_F(NaiveForwardTest, LightAnimationMatchesItsCpuMirror) {
     LightGeneration gen;
     gen.count = 1000;
     gen.radius = 2.0f;
-    const std::vector<PointLight> lights = generateLights(lightVolume(boxes.bounds), gen);
+    const std::vector<Light> lights = generateLights(lightVolume(boxes.bounds), gen);
     FrameSettings s = smallFrame(boxes, 32, 32);
     FrameRenderer renderer(boxes, lights, s);
     const std::uint32_t frame = 377;
     renderer.render(frame);
-    const std::vector<PointLight> gpu = renderer.lights().downloadAnimated();
+    const std::vector<Light> gpu = renderer.lights().downloadAnimated();
     ASSERT_EQ(gpu.size(), lights.size());
     const float time = frame * kSecondsPerFrame;
     for (std::uint32_t i = 0; i < lights.size(); ++i) {
-        const PointLight cpu = animateLight(lights[i], i, time, s.animation);
+        const Light cpu = animateLight(lights[i], i, time, s.animation);
         EXPECT_NEAR(gpu[i].position.y, cpu.position.y, 1e-4f) << i;
         EXPECT_EQ(gpu[i].position.x, cpu.position.x) << i;
         EXPECT_GE(gpu[i].position.y, lightVolume(boxes.bounds).min.y - 1e-4f);

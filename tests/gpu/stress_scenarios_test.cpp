@@ -17,8 +17,8 @@ namespace {
 
 class StressScenario : public GpuTest {};
 
-PointLight light(glm::vec3 position, float radius, glm::vec3 color = glm::vec3(1.0f)) {
-    PointLight l;
+Light light(glm::vec3 position, float radius, glm::vec3 color = glm::vec3(1.0f)) {
+    Light l;
     l.position = position;
     l.radius = radius;
     l.color = color;
@@ -38,7 +38,7 @@ TEST_F(StressScenario, LightsAroundTheCameraAndTheNearPlane) {
     FrameSettings s = stressFrame(t.scene);
     const glm::vec3 eye = s.camera.eye;
     const glm::vec3 forward = glm::normalize(s.camera.target - s.camera.eye);
-    std::vector<PointLight> lights = t.lights;
+    std::vector<Light> lights = t.lights;
     lights.push_back(light(eye, 4.0f, {2, 1, 1}));                                   // camera inside the light
     lights.push_back(light(eye + forward * (0.5f * s.camera.nearPlane), 6.0f, {1, 2, 1}));  // straddles the near plane
     lights.push_back(light(eye - forward * 1.5f, 8.0f, {1, 1, 2}));                  // behind, reaching in front
@@ -49,7 +49,7 @@ TEST_F(StressScenario, LightsAroundTheCameraAndTheNearPlane) {
 TEST_F(StressScenario, LightsLargerThanTheViewReachEveryCluster) {
     const TestScene t = testScene("boxes", 0, 1);
     FrameSettings s = stressFrame(t.scene);
-    std::vector<PointLight> lights;
+    std::vector<Light> lights;
     for (int i = 0; i < 6; ++i)
         lights.push_back(light(t.scene.bounds.center() + glm::vec3(i - 3.0f, 2.0f, 0.5f * i), 1000.0f, glm::vec3(0.3f)));
     const auto errors = clusteredErrors(t.scene, lights, s);
@@ -62,7 +62,7 @@ TEST_F(StressScenario, LightsOutsideTheFrustumAreNeverListed) {
     const TestScene t = testScene("boxes", 0, 1);
     FrameSettings s = stressFrame(t.scene);
     const glm::vec3 back = -glm::normalize(s.camera.target - s.camera.eye);
-    std::vector<PointLight> lights;
+    std::vector<Light> lights;
     for (int i = 0; i < 200; ++i)
         lights.push_back(light(s.camera.eye + back * (5.0f + 0.1f * i) + glm::vec3(0.05f * i, 0.0f, 0.0f), 2.0f));
     lights.push_back(light(s.camera.eye + glm::vec3(0.0f, 0.0f, 1e4f), 50.0f));  // far past the far plane
@@ -74,7 +74,7 @@ TEST_F(StressScenario, LightsOutsideTheFrustumAreNeverListed) {
 TEST_F(StressScenario, ZeroRadiusLightsAddNothing) {
     const TestScene t = testScene("boxes", 0, 1);
     FrameSettings s = stressFrame(t.scene);
-    std::vector<PointLight> lights;
+    std::vector<Light> lights;
     for (int i = 0; i < 32; ++i) lights.push_back(light(t.scene.bounds.center() + glm::vec3(0.3f * i, 0.5f, 0.0f), 0.0f, {4, 4, 4}));
     // One light exactly on a surface point's position would make d/r = 0/0 without the guard.
     lights.push_back(light(t.scene.bounds.min, 0.0f));
@@ -137,7 +137,7 @@ Scene singleTriangle() {
 TEST_F(StressScenario, SingleTriangleScene) {
     const Scene scene = singleTriangle();
     FrameSettings s = stressFrame(scene);
-    std::vector<PointLight> lights;
+    std::vector<Light> lights;
     for (int i = 0; i < 16; ++i)
         lights.push_back(light({std::cos(0.4f * i) * 1.5f, 0.3f + 0.05f * i, std::sin(0.4f * i) * 1.5f}, 1.2f, {1, 0.8f, 0.6f}));
     expectWithinContract(clusteredErrors(scene, lights, s), "single triangle");
@@ -180,7 +180,7 @@ TEST_F(StressScenario, SceneFarFromTheOrigin) {
     TestScene t = testScene("boxes", 64, 6);
     const glm::vec3 offset(1e5f, 0.0f, -1e5f);
     for (Vertex& v : t.scene.vertices) v.position += offset;
-    for (PointLight& l : t.lights) l.position += offset;
+    for (Light& l : t.lights) l.position += offset;
     CameraPose pose = *t.scene.suggestedView;
     pose.eye += offset;
     pose.target += offset;

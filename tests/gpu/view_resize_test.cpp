@@ -16,7 +16,7 @@ protected:
         std::vector<std::string> warnings;
         return loadScene(SceneRequest{"boxes", 0.25f}, warnings);
     }
-    static std::vector<PointLight> lights(const Scene& scene, std::uint32_t count) {
+    static std::vector<Light> lights(const Scene& scene, std::uint32_t count) {
         LightGeneration gen;
         gen.count = count;
         gen.seed = 11;

@@ -92,7 +92,7 @@ TEST_F(ZBinStructure, SortAndBinsMatchTheCpu) {
     ASSERT_GT(sorted.size(), 100u) << "most lights are in view";
 
     const glm::mat4 view = renderer.uniforms().view;
-    const std::vector<PointLight> drawn = renderer.lights().downloadAnimated();
+    const std::vector<Light> drawn = renderer.lights().downloadAnimated();
     auto nearExtent = [&](std::uint32_t light, float& zMin, float& zMax) {
         const float z = -(view * glm::vec4(drawn[light].position, 1.0f)).z;
         zMin = z - drawn[light].radius;
@@ -149,7 +149,7 @@ TEST_F(ZBinOverflow, StaysExactWhereCappedListsDrop) {
     gen.count = 4096;
     gen.radius = 0.3f * extent;
     gen.intensity = 0.02f;
-    const std::vector<PointLight> lights = generateLights(small, gen);
+    const std::vector<Light> lights = generateLights(small, gen);
     FrameRenderer renderer(scene, lights, smallFrame(scene, 160, 90));
     renderer.render(0);
     const FloatImage reference = renderer.readHdr();

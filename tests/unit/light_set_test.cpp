@@ -85,7 +85,7 @@ TEST(LightSet, BadFilesAreRejectedWithTheIndex) {
 }
 
 TEST(LightSet, ValidationNamesTheFirstBadLight) {
-    std::vector<PointLight> lights(3);
+    std::vector<Light> lights(3);
     lights[2].position.y = std::nanf("");
     try {
         validateLights(lights, "test");
@@ -95,12 +95,99 @@ TEST(LightSet, ValidationNamesTheFirstBadLight) {
     }
 }
 
+TEST(LightSet, SpotsAndSunsRoundTripExactly) {
+    LightGeneration gen;
+    gen.count = 200;
+    gen.spotShare = 0.5f;
+    std::vector<Light> lights = generateLights(unitBounds(), gen);
+    Light sun;
+    sun.type = LightType::Directional;
+    sun.direction = {0.3f, -2.0f, 0.1f};  // not unit: kept as given
+    sun.color = {0.1f, 0.2f, 0.3f};
+    lights.insert(lights.begin() + 3, sun);
+    const auto path = tempFile("spots.json").string();
+    saveLightsFile(path, lights);
+    const auto loaded = loadLightsFile(path);
+    ASSERT_EQ(loaded.size(), lights.size());
+    std::size_t spots = 0;
+    for (std::size_t i = 0; i < lights.size(); ++i) {
+        EXPECT_EQ(loaded[i].type, lights[i].type) << i;
+        EXPECT_EQ(loaded[i].color, lights[i].color) << i;
+        EXPECT_EQ(loaded[i].direction, lights[i].direction) << i;
+        if (lights[i].type == LightType::Directional) continue;
+        EXPECT_EQ(loaded[i].position, lights[i].position) << i;
+        EXPECT_EQ(loaded[i].radius, lights[i].radius) << i;
+        if (lights[i].type != LightType::Spot) continue;
+        ++spots;
+        EXPECT_EQ(loaded[i].innerConeAngle, lights[i].innerConeAngle) << i;
+        EXPECT_EQ(loaded[i].outerConeAngle, lights[i].outerConeAngle) << i;
+    }
+    EXPECT_GT(spots, 60u);
+    EXPECT_LT(spots, 140u);
+}
+
+TEST(LightSet, SpotsKeepThePointsOfASetInPlace) {
+    LightGeneration gen;
+    gen.count = 300;
+    const auto points = generateLights(unitBounds(), gen);
+    gen.spotShare = 0.5f;
+    gen.spotAngleDeg = 35.0f;
+    const auto mixed = generateLights(unitBounds(), gen);
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        EXPECT_EQ(points[i].position, mixed[i].position);
+        if (mixed[i].type != LightType::Spot) continue;
+        EXPECT_NEAR(glm::length(mixed[i].direction), 1.0f, 1e-5f);
+        EXPECT_FLOAT_EQ(mixed[i].outerConeAngle, 35.0f * 3.14159265f / 180.0f);
+        EXPECT_FLOAT_EQ(mixed[i].innerConeAngle, kGeneratedSpotInnerShare * mixed[i].outerConeAngle);
+    }
+}
+
+TEST(LightSet, BadSpotsAndSunsAreRejectedWithTheIndex) {
+    const std::string point = R"({"position":[0,0,0],"radius":1,"color":[1,1,1]})";
+    const auto spot = [](const std::string& fields) {
+        return R"({"type":"spot","position":[0,0,0],"radius":1,"color":[1,1,1],)" + fields + "}";
+    };
+    const auto file = [&](const std::string& light) { return R"({"lights":[)" + point + "," + light + "]}"; };
+    expectRejected(file(spot(R"("direction":[0,-1,0],"outerConeAngle":2.0)")), "light 1: spot outerConeAngle");
+    expectRejected(file(spot(R"("direction":[0,-1,0],"outerConeAngle":0)")), "light 1: spot outerConeAngle");
+    expectRejected(file(spot(R"("direction":[0,-1,0],"innerConeAngle":0.6,"outerConeAngle":0.5)")), "light 1: spot innerConeAngle");
+    expectRejected(file(spot(R"("direction":[0,0,0],"outerConeAngle":0.5)")), "light 1: spot direction is zero");
+    expectRejected(file(spot(R"("outerConeAngle":0.5)")), "light 1: \"direction\"");
+    expectRejected(file(spot(R"("direction":[0,-1,0])")), "light 1: \"outerConeAngle\"");
+    expectRejected(file(R"({"type":"directional","color":[1,1,1],"direction":[0,0,0]})"), "light 1: directional direction is zero");
+    expectRejected(file(R"({"type":"area","color":[1,1,1]})"), "light 1: \"type\" 'area'");
+    std::vector<Light> lights(2);
+    lights[1].type = LightType::Spot;
+    lights[1].outerConeAngle = std::nanf("");
+    try {
+        validateLights(lights, "test");
+        FAIL();
+    } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find("light 1: spot outerConeAngle"), std::string::npos) << e.what();
+    }
+}
+
+TEST(LightSet, AFileLightWithoutRangeStopsWhereItFallsTo1Over255) {
+    Scene scene;
+    SceneLight white;
+    white.intensity = 1.0f;
+    SceneLight ranged;
+    ranged.range = 7.0f;
+    ranged.intensity = 100.0f;
+    scene.lights = {white, ranged};
+    const auto lights = lightsFromScene(scene);
+    ASSERT_EQ(lights.size(), 2u);
+    EXPECT_NEAR(lights[0].radius, std::sqrt(255.0f), 1e-4f);
+    EXPECT_EQ(lights[1].radius, 7.0f);
+    EXPECT_EQ(lights[1].color, glm::vec3(100.0f));
+}
+
 TEST(LightAnimation, WrapsWithinTheVerticalExtent) {
     const LightAnimation anim{1.0f, 0.0f, 5.0f};
-    PointLight l;
+    Light l;
     l.position = {0.0f, 4.9f, 0.0f};
     for (float t : {0.0f, 0.1f, 1.0f, 10.0f, 1000.0f}) {
-        const PointLight a = animateLight(l, 7, t, anim);
+        const Light a = animateLight(l, 7, t, anim);
         EXPECT_GE(a.position.y, 0.0f);
         EXPECT_LT(a.position.y, 5.0f + 1e-4f);
         EXPECT_EQ(a.position.x, l.position.x);

@@ -36,14 +36,14 @@ TEST(Falloff, IsContinuousAtTheRadius) {
 
 TEST(ShadeReference, LightBehindTheSurfaceAddsNothing) {
     SurfaceSample s{{0, 0, 0}, {0, 1, 0}, {1, 1, 1}};
-    const std::vector<PointLight> below{{{0.0f, -1.0f, 0.0f}, 5.0f, {1, 1, 1}}};
+    const std::vector<Light> below{{{0.0f, -1.0f, 0.0f}, 5.0f, {1, 1, 1}}};
     const glm::vec3 c = shadeReference(s, {0, 5, 5}, below, 0.0f);
     EXPECT_EQ(c, glm::vec3(0.0f));
 }
 
 TEST(ShadeReference, DiffuseDirectlyAbove) {
     SurfaceSample s{{0, 0, 0}, {0, 1, 0}, {0.5f, 0.5f, 0.5f}, 0.0f, 1.0f};
-    const std::vector<PointLight> above{{{0.0f, 1.0f, 0.0f}, 10.0f, {2, 2, 2}}};
+    const std::vector<Light> above{{{0.0f, 1.0f, 0.0f}, 10.0f, {2, 2, 2}}};
     const glm::vec3 c = shadeReference(s, {0, 5, 0}, above, 0.0f);
     // W(1, 10) = (1 - 1e-4)^2 / 2; N.L = 1; roughness 1: shininess 1, N.H = 1, so the specular
     // term is f0 (0.04) times (1 + 8) / 8.
@@ -54,7 +54,7 @@ TEST(ShadeReference, DiffuseDirectlyAbove) {
 // --specular off: the highlight's Blinn-Phong term goes, the diffuse term stays exactly.
 TEST(ShadeReference, SpecularOffLeavesOnlyTheDiffuseTerm) {
     SurfaceSample shiny{{0, 0, 0}, {0, 1, 0}, {0.5f, 0.5f, 0.5f}, 0.0f, 0.3f};
-    const std::vector<PointLight> above{{{0.0f, 1.0f, 0.0f}, 10.0f, {2, 2, 2}}};
+    const std::vector<Light> above{{{0.0f, 1.0f, 0.0f}, 10.0f, {2, 2, 2}}};
     const glm::vec3 on = shadeReference(shiny, {0, 5, 0}, above, 0.03f, true);
     const glm::vec3 off = shadeReference(shiny, {0, 5, 0}, above, 0.03f, false);
     const ShadingTerms t = shadingTerms(shiny.baseColor, shiny.metallic, shiny.roughness);
