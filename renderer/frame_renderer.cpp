@@ -12,8 +12,10 @@ FrameRenderer::FrameRenderer(const Scene& scene, const std::vector<Light>& light
       lights_(lights),
       targets_(settings.width, settings.height, false),
       frameUniformBuffer_("frame.uniforms", sizeof(FrameUniforms)),
-      method_(createMethod(settings.method, scene_.materialFeatures())),
+      animate_(lights_.hasSpots()),
+      method_(createMethod(forLights(settings.method), scene_.materialFeatures())),
       timer_(settings.timing, settings.clock, settings.readback) {
+    settings_.method = forLights(settings_.method);
     targets_.setStencil(method_->needsStencil());
 }
 
@@ -23,13 +25,25 @@ void FrameRenderer::resize(int width, int height) {
     targets_.resize(width, height);
 }
 
+MethodSettings FrameRenderer::forLights(MethodSettings method) const {
+    method.clustering.spotLights = lights_.hasSpots();
+    return method;
+}
+
 void FrameRenderer::setMethod(const MethodSettings& method) {
-    settings_.method = method;
-    method_ = createMethod(method, scene_.materialFeatures());
+    settings_.method = forLights(method);
+    method_ = createMethod(settings_.method, scene_.materialFeatures());
     targets_.setStencil(method_->needsStencil());
 }
 
-void FrameRenderer::setLights(const std::vector<Light>& lights) { lights_ = LightBuffers(lights); }
+void FrameRenderer::setLights(const std::vector<Light>& lights) {
+    const bool hadSpots = lights_.hasSpots();
+    lights_ = LightBuffers(lights);
+    if (lights_.hasSpots() == hadSpots) return;
+    // The programs that read lights are compiled for spots or for points only.
+    animate_ = AnimateLightsPass(lights_.hasSpots());
+    setMethod(settings_.method);
+}
 
 void FrameRenderer::updateUniforms(float time) {
     const Camera& c = settings_.camera;

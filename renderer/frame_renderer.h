@@ -72,6 +72,8 @@ public:
 
 private:
     void updateUniforms(float time);
+    // The method's settings with ClusteringSettings::spotLights from the current lights.
+    MethodSettings forLights(MethodSettings method) const;
 
     FrameSettings settings_;
     SceneGpu scene_;

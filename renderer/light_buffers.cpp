@@ -39,8 +39,10 @@ GpuSunLights toGpuSunLights(const std::vector<Light>& lights) {
 LightBuffers::LightBuffers(const std::vector<Light>& lights) : given_(lights) {
     std::vector<GpuLight> gpu;
     gpu.reserve(lights.size());
-    for (const Light& l : lights)
+    for (const Light& l : lights) {
         if (l.type != LightType::Directional) gpu.push_back(toGpuLight(l));
+        hasSpots_ = hasSpots_ || l.type == LightType::Spot;
+    }
     count_ = static_cast<std::uint32_t>(gpu.size());
     const GpuSunLights suns = toGpuSunLights(lights);
     sunCount_ = suns.count.x;
@@ -67,7 +69,10 @@ std::vector<Light> LightBuffers::downloadAnimated() const {
     return out;
 }
 
-AnimateLightsPass::AnimateLightsPass() : program_(gl::Program::compute("animate_lights.comp")) {}
+std::pair<std::string, std::string> spotLightsDefine(bool spotLights) { return {"ML_SPOT_LIGHTS", spotLights ? "1" : "0"}; }
+
+AnimateLightsPass::AnimateLightsPass(bool spotLights)
+    : program_(gl::Program::compute("animate_lights.comp", shaders::Defines{spotLightsDefine(spotLights)})) {}
 
 void AnimateLightsPass::run(const LightBuffers& lights, float time, const LightAnimation& animation) const {
     if (lights.count() == 0) return;

@@ -24,6 +24,8 @@ public:
     // Clustered lights (points and spots): what the light buffers and light lists index.
     std::uint32_t count() const { return count_; }
     std::uint32_t sunCount() const { return sunCount_; }
+    // Whether any clustered light is a spot (ClusteringSettings::spotLights).
+    bool hasSpots() const { return hasSpots_; }
     const gl::Buffer& base() const { return base_; }
     const gl::Buffer& animated() const { return animated_; }
     // Binds the directional lights' uniform block (ML_UBO_SUN_LIGHTS).
@@ -38,16 +40,21 @@ public:
 private:
     std::uint32_t count_ = 0;
     std::uint32_t sunCount_ = 0;
+    bool hasSpots_ = false;
     std::vector<Light> given_;
     gl::Buffer base_;
     gl::Buffer animated_;
     gl::Buffer suns_;
 };
 
+// {"ML_SPOT_LIGHTS", "0" or "1"} for the programs that read lights: without spots in the set,
+// their spot paths compile out (glsl/include/lights.glsl).
+std::pair<std::string, std::string> spotLightsDefine(bool spotLights);
+
 // glsl/animate_lights.comp: writes LightBuffers::animated() for a point in time.
 class AnimateLightsPass {
 public:
-    AnimateLightsPass();
+    explicit AnimateLightsPass(bool spotLights);
     void run(const LightBuffers& lights, float time, const LightAnimation& animation) const;
 
 private:

@@ -1,12 +1,18 @@
 // Point and spot lights, mirrored in C++ by ml::GpuLight (renderer/gpu_types.h). A point light's
 // cone cosines are ML_POINT_LIGHT_CONE_COS: no direction is ever outside its cone.
+// ML_SPOT_LIGHTS 0: the light set has no spots (the renderer sets it from the lights), so every
+// spot path compiles out and a points-only scene pays nothing for them. 1 unless set.
+#ifndef ML_SPOT_LIGHTS
+#define ML_SPOT_LIGHTS 1
+#endif
+
 struct Light {
     vec4 positionRadius;     // xyz: world position, w: radius where the falloff reaches zero
     vec4 colorCosInner;      // rgb: linear colour times intensity, w: cos of the inner cone angle
     vec4 directionCosOuter;  // xyz: unit direction the spot points (zero for points), w: cos of the outer cone angle
 };
 
-bool isSpotLight(Light l) { return l.directionCosOuter.w > -1.5; }
+bool isSpotLight(Light l) { return ML_SPOT_LIGHTS != 0 && l.directionCosOuter.w > -1.5; }
 
 #ifndef ML_LIGHTS_WRITABLE
 layout(std430, binding = ML_SSBO_LIGHTS) readonly buffer LightBuffer { Light lights[]; };

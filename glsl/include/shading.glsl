@@ -16,6 +16,10 @@
 // (a frame uniform, the same in every method) leaves it out: the diffuse term only. Emissive
 // surfaces glow but light nothing else: only the scene's lights do.
 
+#ifndef ML_SPOT_LIGHTS
+#define ML_SPOT_LIGHTS 1  // as in lights.glsl: spot paths compiled in unless the renderer says none
+#endif
+
 float lightFalloff(float d, float radius) {
     if (d >= radius) return 0.0;
     float x = d / radius;
@@ -81,7 +85,7 @@ vec3 shadeLight(SurfacePoint s, vec3 viewDir, vec4 positionRadius, vec4 colorCos
     float falloff = lightFalloff(d, positionRadius.w);
     if (falloff <= 0.0) return vec3(0.0);
     vec3 l = toLight / max(d, 1e-6);
-    if (directionCosOuter.w > -1.5) {
+    if (ML_SPOT_LIGHTS != 0 && directionCosOuter.w > -1.5) {
         falloff *= spotAttenuation(dot(-l, directionCosOuter.xyz), colorCosInner.w, directionCosOuter.w);
         if (falloff <= 0.0) return vec3(0.0);
     }

@@ -9,7 +9,13 @@
 // turn a lit point into a rejected one.
 const float kSpotSlack = 1e-4;
 
-bool isSpotCone(float cosOuter) { return cosOuter > -1.5; }
+// ML_SPOT_LIGHTS 0: the light set has no spots (the renderer sets it from the lights), so every
+// spot path compiles out and a points-only scene pays nothing for them. 1 unless set.
+#ifndef ML_SPOT_LIGHTS
+#define ML_SPOT_LIGHTS 1
+#endif
+
+bool isSpotCone(float cosOuter) { return ML_SPOT_LIGHTS != 0 && cosOuter > -1.5; }
 
 // The sector's farthest extent along unit direction n, from the apex: r where n lies inside the
 // cone; r cos(angle past the cone) up to 90 degrees past it; 0 (the apex) beyond. The support

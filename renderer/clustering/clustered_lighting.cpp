@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "glsl/include/bindings.h"
+#include "renderer/light_buffers.h"
 #include "renderer/methods/gbuffer.h"
 
 namespace ml {
@@ -24,7 +25,10 @@ std::string cullDefine(CullMode mode) {
 }
 
 gl::Program exactProgram(const char* label, const char* phase, const ClusteringSettings& settings) {
-    shaders::Defines defines{{phase, "1"}, {"ML_WORKGROUP", std::to_string(settings.grid.workgroup)}, {"ML_CULL", cullDefine(settings.cull)}};
+    shaders::Defines defines{{phase, "1"},
+                             {"ML_WORKGROUP", std::to_string(settings.grid.workgroup)},
+                             {"ML_CULL", cullDefine(settings.cull)},
+                             spotLightsDefine(settings.spotLights)};
     if (settings.normalCones) defines.emplace_back("ML_NORMAL_CONES", "1");
     return gl::Program(label, {{GL_COMPUTE_SHADER, "assign_exact.comp"}}, defines);
 }
@@ -60,14 +64,16 @@ ClusteredLighting::ClusteredLighting(const ClusteringSettings& settings, const s
       count_(countProgram(settings)),
       fill_(fillProgram(settings)),
       capped_(gl::Program("assign.capped", {{GL_COMPUTE_SHADER, "assign_lights.comp"}},
-                          {{"ML_WORKGROUP", std::to_string(settings.grid.workgroup)}, {"ML_CULL", cullDefine(settings.cull)}})),
+                          {{"ML_WORKGROUP", std::to_string(settings.grid.workgroup)},
+                           {"ML_CULL", cullDefine(settings.cull)},
+                           spotLightsDefine(settings.spotLights)})),
       sortShort_(gl::Program::compute("sort_cluster_lists.comp")),
       sortLong_(gl::Program::compute("sort_cluster_lists.comp", {{"ML_SORT_LONG", "1"}})),
       gridBuffer_("clusters.grid", sizeof(ClusterGridGpu)),
       counters_("clusters.counters", 32),
       dispatchArgs_("assign.dispatch-args", 16) {
     validateGridConfig(settings.grid);
-    if (settings.assign == AssignMode::ZBin) zbin_ = std::make_unique<ZBinAssignment>();
+    if (settings.assign == AssignMode::ZBin) zbin_ = std::make_unique<ZBinAssignment>(settings.spotLights);
     if (settings.normalCones && settings.assign == AssignMode::Capped)
         throw std::invalid_argument("--normal-cones: needs exact lists (--assign exact or per-cluster), not capped ones");
     GLint64 maxBlock = 0;
@@ -489,8 +495,9 @@ const char* assignModeName(AssignMode mode) {
 }
 
 shaders::Defines lightListDefines(const ClusteringSettings& settings) {
-    if (settings.assign == AssignMode::ZBin) return {{"ML_ZBIN", "1"}};
-    return {};
+    shaders::Defines defines{spotLightsDefine(settings.spotLights)};
+    if (settings.assign == AssignMode::ZBin) defines.emplace_back("ML_ZBIN", "1");
+    return defines;
 }
 
 }  // namespace ml

@@ -38,6 +38,9 @@ struct ClusteringSettings {
     // only, exact lists only. Forward+ knows no normal before it shades and ignores it.
     bool normalCones = false;
     DebugView view = DebugView::Shaded;
+    // Whether the light set holds spots. FrameRenderer sets it from its lights; without spots
+    // every program that reads lights compiles its spot paths out (ML_SPOT_LIGHTS 0).
+    bool spotLights = true;
 };
 
 // Defines of the shading programs that read the lists (cluster_lists.glsl picks its light loop).

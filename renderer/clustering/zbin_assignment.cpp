@@ -4,6 +4,7 @@
 #include <string>
 
 #include "glsl/include/bindings.h"
+#include "renderer/light_buffers.h"
 
 namespace ml {
 
@@ -11,8 +12,8 @@ namespace {
 
 constexpr GLbitfield kComputeToCompute = GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT;
 
-gl::Program zbinProgram(const char* label, const char* phase) {
-    return gl::Program(label, {{GL_COMPUTE_SHADER, "zbin_assign.comp"}}, {{phase, "1"}});
+gl::Program zbinProgram(const char* label, const char* phase, bool spotLights) {
+    return gl::Program(label, {{GL_COMPUTE_SHADER, "zbin_assign.comp"}}, {{phase, "1"}, spotLightsDefine(spotLights)});
 }
 
 // Runs a pass over groupsX x groupsY workgroups (none when there is nothing to do) and makes
@@ -27,11 +28,11 @@ std::string mib(std::size_t bytes) { return std::to_string((bytes + (1u << 20) -
 
 }  // namespace
 
-ZBinAssignment::ZBinAssignment()
-    : keysPass_(zbinProgram("zbin.keys", "ML_ZBIN_KEYS")),
-      binsPass_(zbinProgram("zbin.bins", "ML_ZBIN_BINS")),
-      masksPass_(zbinProgram("zbin.tile-masks", "ML_ZBIN_TILE_MASKS")),
-      statsPass_(zbinProgram("zbin.stats", "ML_ZBIN_STATS")),
+ZBinAssignment::ZBinAssignment(bool spotLights)
+    : keysPass_(zbinProgram("zbin.keys", "ML_ZBIN_KEYS", spotLights)),
+      binsPass_(zbinProgram("zbin.bins", "ML_ZBIN_BINS", spotLights)),
+      masksPass_(zbinProgram("zbin.tile-masks", "ML_ZBIN_TILE_MASKS", spotLights)),
+      statsPass_(zbinProgram("zbin.stats", "ML_ZBIN_STATS", spotLights)),
       params_("zbin.params", 16) {}
 
 void ZBinAssignment::build(const FrameContext& ctx, const ClusterGrid& grid, std::size_t maxStorageBlock) {

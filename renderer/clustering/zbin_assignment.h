@@ -34,7 +34,7 @@ namespace ml {
 
 class ZBinAssignment {
 public:
-    ZBinAssignment();
+    explicit ZBinAssignment(bool spotLights);
 
     // Builds sort, bins and masks for `grid` from the lights; the grid buffer (slicing) must be
     // bound and final. Throws std::runtime_error naming what to lower when the masks cannot

@@ -46,7 +46,7 @@ std::string methodName(MethodKind kind) {
 
 std::unique_ptr<ShadingMethod> createMethod(const MethodSettings& settings, std::uint32_t materialFeatures) {
     switch (settings.kind) {
-    case MethodKind::Naive: return std::make_unique<NaiveForward>(materialFeatures);
+    case MethodKind::Naive: return std::make_unique<NaiveForward>(materialFeatures, settings.clustering.spotLights);
     case MethodKind::ForwardPlus: {
         // Forward+ shades before any normal is known: no normal bins (the flag is refused by
         // `render` and greyed out in `view`; here it is ignored).

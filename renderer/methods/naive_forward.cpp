@@ -4,9 +4,9 @@
 
 namespace ml {
 
-NaiveForward::NaiveForward(std::uint32_t materialFeatures)
+NaiveForward::NaiveForward(std::uint32_t materialFeatures, bool spotLights)
     : program_("naive_forward", {{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "naive_forward.frag"}}, materialFeatures,
-               RasterProgram::Reads::Material) {}
+               RasterProgram::Reads::Material, {spotLightsDefine(spotLights)}) {}
 
 void NaiveForward::render(const FrameContext& ctx) {
     auto pass = ctx.timer.pass("naive.shade");

@@ -9,7 +9,7 @@ namespace ml {
 
 class NaiveForward final : public ShadingMethod {
 public:
-    explicit NaiveForward(std::uint32_t materialFeatures);
+    NaiveForward(std::uint32_t materialFeatures, bool spotLights);
     std::string name() const override { return "naive"; }
     void render(const FrameContext& ctx) override;
 

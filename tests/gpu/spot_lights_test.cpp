@@ -103,6 +103,35 @@ TEST_F(SpotLights, SpotsPointsAndASunMixedMatchNaiveForEveryAssignmentAndCullTes
     }
 }
 
+// A points-only light set compiles every spot path out (ML_SPOT_LIGHTS 0); a renderer whose lights
+// gain spots rebuilds its programs with them, and back without them gives the first frame again.
+TEST_F(SpotLights, ProgramsFollowWhetherTheLightsHoldSpots) {
+    const TestScene points = testScene("atrium", 200, 3);
+    const TestScene spots = testScene("atrium", 200, 3, 1.0f, 0.5f);
+    for (MethodKind kind : {MethodKind::Naive, MethodKind::ForwardPlus, MethodKind::Deferred, MethodKind::Visibility}) {
+        FrameSettings s = smallFrame(points.scene, 160, 90);
+        s.method.kind = kind;
+        FrameRenderer renderer(points.scene, points.lights, s);
+        EXPECT_FALSE(renderer.settings().method.clustering.spotLights);
+        renderer.render(20);
+        const RgbaImage pointsOnly = renderer.readLdr();
+        renderer.setLights(spots.lights);
+        EXPECT_TRUE(renderer.settings().method.clustering.spotLights);
+        renderer.render(20);
+        const RgbaImage withSpots = renderer.readLdr();
+        EXPECT_NE(withSpots.pixels, pointsOnly.pixels) << methodName(kind) << ": the spots should show";
+        MethodSettings m = renderer.settings().method;
+        renderer.setLights(points.lights);
+        EXPECT_FALSE(renderer.settings().method.clustering.spotLights);
+        renderer.render(20);
+        EXPECT_EQ(renderer.readLdr().pixels, pointsOnly.pixels) << methodName(kind);
+        m.clustering.spotLights = true;
+        FrameRenderer general(points.scene, points.lights, s);
+        general.setMethod(m);
+        EXPECT_FALSE(general.settings().method.clustering.spotLights) << "the renderer decides from its lights";
+    }
+}
+
 TEST_F(SpotLights, TheAnimationTurnsSpotsAsItsCpuMirrorDoes) {
     const TestScene t = testScene("boxes", 500, 3, 1.0f, 0.5f);
     FrameSettings s = smallFrame(t.scene, 32, 32);
