@@ -5,12 +5,17 @@
 #include "include/bindings.h"
 #define ML_LIGHTS_WRITABLE
 #include "include/lights.glsl"
+#include "include/spot_cone.glsl"
 #include "include/hash.glsl"
 
 layout(local_size_x = ML_ANIMATE_WORKGROUP) in;
 
 layout(std430, binding = ML_SSBO_LIGHTS_BASE) readonly buffer BaseLights { Light baseLights[]; };
 layout(std430, binding = ML_SSBO_LIGHTS) writeonly buffer AnimatedLights { Light animatedLights[]; };
+#if ML_SPOT_LIGHTS
+layout(std430, binding = ML_SSBO_LIGHT_CONES_BASE) readonly buffer BaseCones { vec4 baseCones[]; };
+layout(std430, binding = ML_SSBO_LIGHT_CONES) writeonly buffer AnimatedCones { vec4 animatedCones[]; };
+#endif
 
 uniform uint u_lightCount;
 uniform float u_time;        // seconds
@@ -21,17 +26,25 @@ void main() {
     uint i = gl_GlobalInvocationID.x;
     if (i >= u_lightCount) return;
     Light l = baseLights[i];
+#if ML_SPOT_LIGHTS
+    vec4 cone = baseCones[i];
+#endif
     if (u_wrapY.y > 0.0 && u_driftSpeed != 0.0) {
         float speed = u_driftSpeed * (0.5 + hashToUnitFloat(i));
         float y = l.positionRadius.y - u_wrapY.x + speed * u_time;
         l.positionRadius.y = u_wrapY.x + mod(y, u_wrapY.y);
-        if (isSpotLight(l)) {
+#if ML_SPOT_LIGHTS
+        if (isSpotCone(cone.w)) {
             float turn = 2.0 * hashToUnitFloat(i ^ 0x9E3779B9u) - 1.0;
             float angle = u_driftSpeed * float(ML_SPOT_TURN_PER_METRE) * turn * u_time;
             float c = cos(angle), s = sin(angle);
-            vec3 d = l.directionCosOuter.xyz;
-            l.directionCosOuter.xyz = vec3(c * d.x + s * d.z, d.y, c * d.z - s * d.x);
+            vec3 d = cone.xyz;
+            cone.xyz = vec3(c * d.x + s * d.z, d.y, c * d.z - s * d.x);
         }
+#endif
     }
     animatedLights[i] = l;
+#if ML_SPOT_LIGHTS
+    animatedCones[i] = cone;
+#endif
 }

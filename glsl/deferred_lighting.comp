@@ -43,6 +43,9 @@ const uint kNoList = 0xFFFFFFFFu;
 shared uint s_listKey;
 shared uint s_boundsMin[3], s_boundsMax[3];  // the box of the served pixels, as orderedBits
 shared Light s_lights[kLightBatch];
+#if ML_SPOT_LIGHTS
+shared vec4 s_cones[kLightBatch];
+#endif
 shared uint s_reaches[2][kMaskWords];  // staged lights that reach the box; two, by batch parity
 
 // A float's bits as a uint that orders as the float does, for min/max with integer atomics.
@@ -55,13 +58,11 @@ float orderedFloat(uint u) { return uintBitsToFloat((u & 0x80000000u) != 0u ? u 
 // Could the light add anything to a point in the box? Conservative: the margin covers the
 // rounding of the shader's own distance, and a NaN light is kept (the loop then does what the
 // per-pixel loop does with it). A spot must also reach the box's bounding sphere with its cone.
-bool lightReachesBox(Light l, vec3 lo, vec3 hi) {
-    vec4 positionRadius = l.positionRadius;
+bool lightReachesBox(vec4 positionRadius, vec4 cone, vec3 lo, vec3 hi) {
     vec3 d = positionRadius.xyz - clamp(positionRadius.xyz, lo, hi);
     float reach = positionRadius.w * 1.001 + 1e-3;
     if (dot(d, d) > reach * reach) return false;
-    return spotMayReachSphere(positionRadius.xyz, l.directionCosOuter.xyz, l.directionCosOuter.w, reach, 0.5 * (lo + hi),
-                              0.5 * length(hi - lo) + 1e-3);
+    return spotMayReachSphere(positionRadius.xyz, cone.xyz, cone.w, reach, 0.5 * (lo + hi), 0.5 * length(hi - lo) + 1e-3);
 }
 
 void main() {
@@ -105,9 +106,14 @@ void main() {
             // The other parity's mask was last read before the previous batch's closing barrier.
             if (lane < kMaskWords) s_reaches[parity ^ 1u][lane] = 0u;
             if (base + lane < range.y) {
-                Light l = lights[lightIndices[range.x + base + lane]];
+                uint index = lightIndices[range.x + base + lane];
+                Light l = lights[index];
+                vec4 cone = lightCone(index);
                 s_lights[lane] = l;
-                if (lightReachesBox(l, lo, hi)) atomicOr(s_reaches[parity][lane / 32u], 1u << (lane % 32u));
+#if ML_SPOT_LIGHTS
+                s_cones[lane] = cone;
+#endif
+                if (lightReachesBox(l.positionRadius, cone, lo, hi)) atomicOr(s_reaches[parity][lane / 32u], 1u << (lane % 32u));
             }
             barrier();
             if (served) {
@@ -116,7 +122,12 @@ void main() {
                     while (bits != 0u) {
                         uint i = w * 32u + uint(findLSB(bits));
                         bits &= bits - 1u;
-                        lightSum += shadeLight(px.surface, px.viewDir, s_lights[i].positionRadius, s_lights[i].colorCosInner, s_lights[i].directionCosOuter);
+#if ML_SPOT_LIGHTS
+                        vec4 cone = s_cones[i];
+#else
+                        vec4 cone = lightCone(0u);  // a point's: the set has no spots
+#endif
+                        lightSum += shadeLight(px.surface, px.viewDir, s_lights[i].positionRadius, s_lights[i].colorCosInner, cone);
                     }
                 }
             }

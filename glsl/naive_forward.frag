@@ -17,7 +17,7 @@ void main() {
     uint n = lightCount();
     for (uint i = 0u; i < n; ++i) {
         Light l = lights[i];
-        color += shadeLight(s, viewDir, l.positionRadius, l.colorCosInner, l.directionCosOuter);
+        color += shadeLight(s, viewDir, l.positionRadius, l.colorCosInner, lightCone(i));
     }
     o_color = vec4(color, 1.0);
 }

@@ -83,7 +83,7 @@ vec3 viewRay(vec2 px) {
 // Does a spot's sector reach the inner side of every plane (through the eye, unit normals
 // pointing in)? Its support along each normal, with slack. Always true for a point light.
 bool spotSectorInsidePlanes(uint light, vec3 planes[4]) {
-    vec4 directionCosOuter = lights[light].directionCosOuter;
+    vec4 directionCosOuter = lightCone(light);
     if (!isSpotCone(directionCosOuter.w)) return true;
     vec4 positionRadius = lights[light].positionRadius;
     vec3 apex = (u_view * vec4(positionRadius.xyz, 1.0)).xyz;

@@ -10,15 +10,21 @@
 
 namespace ml {
 
-// glsl/include/lights.glsl: struct Light (std430). 48 B: a spot's cone costs 16 B more than
-// the point lights' 32 B once had.
+// glsl/include/lights.glsl: struct Light (std430), 32 B. A spot's cone lives in a buffer of its
+// own (GpuLightCone), uploaded only where the set has spots, so that the passes that stream every
+// light of a list through a workgroup read 32 B a light where no light is a spot.
 struct alignas(16) GpuLight {
-    glm::vec4 positionRadius;     // xyz world position, w radius
-    glm::vec4 colorCosInner;      // rgb linear colour times intensity, w cos of the inner cone angle
+    glm::vec4 positionRadius;  // xyz world position, w radius
+    glm::vec4 colorCosInner;   // rgb linear colour times intensity, w cos of the inner cone angle
+};
+static_assert(sizeof(GpuLight) == 32);
+static_assert(alignof(GpuLight) == 16);
+
+// glsl/include/lights.glsl: lightCones[] (std430), one per clustered light.
+struct alignas(16) GpuLightCone {
     glm::vec4 directionCosOuter;  // xyz unit spot direction (0 for points), w cos of the outer cone angle
 };
-static_assert(sizeof(GpuLight) == 48);
-static_assert(alignof(GpuLight) == 16);
+static_assert(sizeof(GpuLightCone) == 16);
 
 // glsl/include/sun_lights.glsl: SunLightsBlock (std140).
 struct alignas(16) GpuSunLights {

@@ -14,6 +14,7 @@ namespace ml {
 // A light as the shaders read it: a spot's direction normalised, its angles as cosines; a point
 // light's cosines are ML_POINT_LIGHT_CONE_COS. Not for directional lights.
 GpuLight toGpuLight(const Light& light);
+GpuLightCone toGpuLightCone(const Light& light);
 // The directional lights of a set (at most ML_MAX_SUN_LIGHTS, else std::invalid_argument).
 GpuSunLights toGpuSunLights(const std::vector<Light>& lights);
 
@@ -26,12 +27,16 @@ public:
     std::uint32_t sunCount() const { return sunCount_; }
     // Whether any clustered light is a spot (ClusteringSettings::spotLights).
     bool hasSpots() const { return hasSpots_; }
-    const gl::Buffer& base() const { return base_; }
-    const gl::Buffer& animated() const { return animated_; }
+    // The animated lights (and their cones, where any light is a spot) at ML_SSBO_LIGHTS and
+    // ML_SSBO_LIGHT_CONES, for every pass that reads lights.
+    void bindForReading() const;
+    // The lights at time 0 and the animated ones, for the animation pass.
+    void bindForAnimation() const;
     // Binds the directional lights' uniform block (ML_UBO_SUN_LIGHTS).
     void bindSuns() const;
-    // 48 bytes per clustered light in each of the two buffers, and the suns' block.
-    std::size_t bytes() const { return base_.size() + animated_.size() + suns_.size(); }
+    // 32 bytes per clustered light in each of the two buffers, 16 more each where the set has
+    // spots, and the suns' block.
+    std::size_t bytes() const { return base_.size() + animated_.size() + baseCones_.size() + animatedCones_.size() + suns_.size(); }
 
     // Reads back the lights as drawn, in the order they were given (for --save-lights and the
     // tests' CPU references): clustered ones animated, directional ones as given.
@@ -44,6 +49,7 @@ private:
     std::vector<Light> given_;
     gl::Buffer base_;
     gl::Buffer animated_;
+    gl::Buffer baseCones_, animatedCones_;  // only where a light is a spot
     gl::Buffer suns_;
 };
 
@@ -51,7 +57,7 @@ private:
 // their spot paths compile out (glsl/include/lights.glsl).
 std::pair<std::string, std::string> spotLightsDefine(bool spotLights);
 
-// glsl/animate_lights.comp: writes LightBuffers::animated() for a point in time.
+// glsl/animate_lights.comp: writes the animated lights for a point in time.
 class AnimateLightsPass {
 public:
     explicit AnimateLightsPass(bool spotLights);

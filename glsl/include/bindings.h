@@ -24,6 +24,11 @@
 #define ML_SSBO_FILL_CURSORS 12    // per-cluster write positions of the fill pass
 #define ML_SSBO_VERTICES 13        // scene vertices as floats (visibility resolve)
 #define ML_SSBO_INDICES 14         // scene triangle indices (visibility resolve)
+// Spot cones (where the light set has spots): animated, read with the lights; at time 0, read by
+// the animation. The visibility resolve reads no lights, and every pass binds what it reads
+// before it runs, so these share the resolve's geometry points.
+#define ML_SSBO_LIGHT_CONES 13
+#define ML_SSBO_LIGHT_CONES_BASE 14
 #define ML_SSBO_TRIANGLE_MATERIALS 15  // material of every triangle (visibility resolve)
 #define ML_SSBO_LIGHT_RANGES 16    // exact assignment: each light's block of candidate clusters
 #define ML_SSBO_LIGHT_VIEW 17      // exact assignment: each light's view-space centre and radius

@@ -32,8 +32,9 @@ vec3 shadeClusterLights(SurfacePoint s, vec3 viewDir, uint cluster, float viewDe
         while (bits != 0u) {
             uint i = w * 32u + uint(findLSB(bits));
             bits &= bits - 1u;
-            Light l = lights[zbinSortedLights[i]];
-            color += shadeLight(s, viewDir, l.positionRadius, l.colorCosInner, l.directionCosOuter);
+            uint index = zbinSortedLights[i];
+            Light l = lights[index];
+            color += shadeLight(s, viewDir, l.positionRadius, l.colorCosInner, lightCone(index));
         }
     }
     return color;
@@ -64,8 +65,9 @@ vec3 shadeClusterLights(SurfacePoint s, vec3 viewDir, uint cluster, float viewDe
     uvec2 range = clusterListRange(clusterListKey(cluster, s.normal));
     vec3 color = vec3(0.0);
     for (uint k = 0u; k < range.y; ++k) {
-        Light l = lights[lightIndices[range.x + k]];
-        color += shadeLight(s, viewDir, l.positionRadius, l.colorCosInner, l.directionCosOuter);
+        uint index = lightIndices[range.x + k];
+        Light l = lights[index];
+        color += shadeLight(s, viewDir, l.positionRadius, l.colorCosInner, lightCone(index));
     }
     return color;
 }

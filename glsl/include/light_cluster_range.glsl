@@ -23,8 +23,9 @@ ViewLight viewLight(uint lightIndex) {
     ViewLight v;
     v.position = (u_view * vec4(l.positionRadius.xyz, 1.0)).xyz;
     v.radius = l.positionRadius.w;
-    v.axis = mat3(u_view) * l.directionCosOuter.xyz;
-    v.cosOuter = l.directionCosOuter.w;
+    vec4 cone = lightCone(lightIndex);
+    v.axis = mat3(u_view) * cone.xyz;
+    v.cosOuter = cone.w;
     return v;
 }
 

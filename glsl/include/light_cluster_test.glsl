@@ -90,7 +90,7 @@ bool sphereReachesCluster(uint cluster, uvec3 c3, vec3 center, float radius) {
 // test); always true for a point light. Reads the light's cone itself, so point-only lists pay
 // one read.
 bool spotConeReachesCluster(uint cluster, uint light) {
-    vec4 directionCosOuter = lights[light].directionCosOuter;
+    vec4 directionCosOuter = lightCone(light);
     if (!isSpotCone(directionCosOuter.w)) return true;
     vec4 positionRadius = lights[light].positionRadius;
     vec3 apex = (u_view * vec4(positionRadius.xyz, 1.0)).xyz;

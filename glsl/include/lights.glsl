@@ -9,11 +9,22 @@
 struct Light {
     vec4 positionRadius;     // xyz: world position, w: radius where the falloff reaches zero
     vec4 colorCosInner;      // rgb: linear colour times intensity, w: cos of the inner cone angle
-    vec4 directionCosOuter;  // xyz: unit direction the spot points (zero for points), w: cos of the outer cone angle
 };
-
-bool isSpotLight(Light l) { return ML_SPOT_LIGHTS != 0 && l.directionCosOuter.w > -1.5; }
+// A spot's cone, one per light in a buffer of its own (bound only where the set has spots):
+// xyz the unit direction the spot points (zero for points), w the cos of the outer cone angle.
 
 #ifndef ML_LIGHTS_WRITABLE
 layout(std430, binding = ML_SSBO_LIGHTS) readonly buffer LightBuffer { Light lights[]; };
+#if ML_SPOT_LIGHTS
+layout(std430, binding = ML_SSBO_LIGHT_CONES) readonly buffer LightConeBuffer { vec4 lightCones[]; };
+#endif
+
+// Light i's cone; a point light's where the set has no spots.
+vec4 lightCone(uint i) {
+#if ML_SPOT_LIGHTS
+    return lightCones[i];
+#else
+    return vec4(0.0, 0.0, 0.0, ML_POINT_LIGHT_CONE_COS);
+#endif
+}
 #endif

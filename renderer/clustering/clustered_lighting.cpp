@@ -189,7 +189,7 @@ void ClusteredLighting::build(const FrameContext& ctx, const GBuffer* gbuffer) {
         if (!gbuffer) throw std::logic_error("--normal-cones: the lists need the G-buffer's normals");
         markNormalBins(ctx, *gbuffer);
     }
-    ctx.lights.animated().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_LIGHTS);
+    ctx.lights.bindForReading();
     counters_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_ASSIGN_STATS);
     if (settings_.assign == AssignMode::Capped) buildCapped(ctx);
     else buildExact(ctx);

@@ -49,7 +49,7 @@ void ZBinAssignment::build(const FrameContext& ctx, const ClusterGrid& grid, std
     sortedView_.ensure(std::size_t(lights_) * 16);
     ranges_.ensure(std::size_t(bins) * 8);
 
-    ctx.lights.animated().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_LIGHTS);
+    ctx.lights.bindForReading();
     params_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_ZBIN_PARAMS);
     lightView_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_LIGHT_VIEW);
     {

@@ -14,7 +14,7 @@ shaders::Defines deferredLightingDefines(const ClusteringSettings& clustering, c
 void bindDeferredLightingInputs(const GBuffer& gbuffer, const FrameContext& ctx, const ClusteredLighting& clustering) {
     gbuffer.bindForReading();
     glBindTextureUnit(ML_TEX_DEPTH, ctx.targets.depth().id());
-    ctx.lights.animated().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_LIGHTS);
+    ctx.lights.bindForReading();
     clustering.bindForShading();
 }
 

@@ -50,7 +50,7 @@ void ForwardPlus::render(const FrameContext& ctx) {
         clustering_.build(ctx);
         auto pass = ctx.timer.pass("forward+.shade");
         clearTargets();
-        ctx.lights.animated().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_LIGHTS);
+        ctx.lights.bindForReading();
         clustering_.bindForShading();
         ctx.scene.draw(shadeProgram_);
         return;
@@ -75,7 +75,7 @@ void ForwardPlus::render(const FrameContext& ctx) {
         glEnable(GL_STENCIL_TEST);
         glStencilFunc(GL_EQUAL, 0, 0xFF);
         glStencilOp(GL_KEEP, GL_KEEP, GL_INCR);
-        ctx.lights.animated().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_LIGHTS);
+        ctx.lights.bindForReading();
         clustering_.bindForShading();
         ctx.scene.draw(shadeProgram_);
         glDisable(GL_STENCIL_TEST);

@@ -19,7 +19,7 @@ void NaiveForward::render(const FrameContext& ctx) {
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDepthMask(GL_TRUE);
-    ctx.lights.animated().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_LIGHTS);
+    ctx.lights.bindForReading();
     ctx.scene.draw(program_);
 }
 
