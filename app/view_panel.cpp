@@ -88,9 +88,15 @@ void lightsSection(ViewSettings& s, const ViewStatistics& stats, PanelEdits& edi
     ImGui::SliderFloat("radius", &s.lightRadius, stats.sceneSize * 1e-3f, stats.sceneSize * 0.5f, "%.3f",
                        ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
     if (ImGui::IsItemDeactivatedAfterEdit()) edits.lights = true;
-    ImGui::SliderFloat("spot share", &s.spotShare, 0.0f, 1.0f, "%.2f", ImGuiSliderFlags_AlwaysClamp);
+    // Spot share and angle on one row: the panel must stay short enough to leave the lower
+    // window to the scene.
+    const float half = 0.5f * (kItemWidth - ImGui::GetStyle().ItemSpacing.x) - 28.0f;
+    ImGui::SetNextItemWidth(half);
+    ImGui::SliderFloat("spots", &s.spotShare, 0.0f, 1.0f, "%.2f", ImGuiSliderFlags_AlwaysClamp);
     if (ImGui::IsItemDeactivatedAfterEdit()) edits.lights = true;
-    ImGui::SliderFloat("spot angle", &s.spotAngle, 0.0f, 90.0f, s.spotAngle > 0.0f ? "%.1f deg" : "20-60 deg", ImGuiSliderFlags_AlwaysClamp);
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(half);
+    ImGui::SliderFloat("angle", &s.spotAngle, 0.0f, 90.0f, s.spotAngle > 0.0f ? "%.0f deg" : "20-60", ImGuiSliderFlags_AlwaysClamp);
     if (ImGui::IsItemDeactivatedAfterEdit()) edits.lights = true;
     if (stats.sceneLights > 0) {
         if (ImGui::Checkbox("the file's lights", &s.sceneLights)) edits.lights = true;
@@ -188,6 +194,11 @@ void cameraSection(ViewSettings& s, const ViewStatistics& stats, PanelEdits& edi
     s.cameraMode = static_cast<CameraMode>(mode);
     ImGui::SameLine();
     if (ImGui::Button("reset (R)")) edits.resetCamera = true;
+    // On the same row, as the panel must leave the lower window to the scene.
+    if (s.cameraMode == CameraMode::Fly) {
+        ImGui::SameLine();
+        ImGui::TextColored(kDim, "%.2f u/s (scroll)", stats.flySpeed);
+    }
     if (!stats.sceneCameras.empty()) {
         const std::string current = s.sceneCamera < 0 ? "free camera" : stats.sceneCameras[static_cast<std::size_t>(s.sceneCamera)];
         if (ImGui::BeginCombo("view from", current.c_str())) {
@@ -201,7 +212,6 @@ void cameraSection(ViewSettings& s, const ViewStatistics& stats, PanelEdits& edi
             ImGui::EndCombo();
         }
     }
-    if (s.cameraMode == CameraMode::Fly) ImGui::TextColored(kDim, "fly speed %.2f units/s (scroll)", stats.flySpeed);
     if (ImGui::Checkbox("vsync", &s.vsync)) edits.vsync = true;
     ImGui::SameLine();
     if (ImGui::Button("screenshot (F12)")) edits.screenshot = true;

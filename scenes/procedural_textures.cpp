@@ -68,6 +68,15 @@ std::uint8_t encodeSrgb(float linear) {
     return static_cast<std::uint8_t>(std::lround(s * 255.0f));
 }
 
+// Writes linear RGB, sRGB-encoded, and an opaque alpha at pixel (x, y) of a square image.
+void putOpaqueSrgb(Image& img, int x, int y, const glm::vec3& c) {
+    std::uint8_t* p = &img.rgba8[(std::size_t(y) * std::size_t(img.width) + std::size_t(x)) * 4];
+    p[0] = encodeSrgb(c.r);
+    p[1] = encodeSrgb(c.g);
+    p[2] = encodeSrgb(c.b);
+    p[3] = 255;
+}
+
 // Fills an image from a function of the pixel centre giving linear RGB.
 Image makeImage(const char* name, int size, const std::function<glm::vec3(int, int)>& shade) {
     Image img;
@@ -76,14 +85,7 @@ Image makeImage(const char* name, int size, const std::function<glm::vec3(int, i
     img.height = size;
     img.rgba8.resize(std::size_t(size) * std::size_t(size) * 4);
     for (int y = 0; y < size; ++y) {
-        for (int x = 0; x < size; ++x) {
-            const glm::vec3 c = shade(x, y);
-            std::uint8_t* p = &img.rgba8[(std::size_t(y) * std::size_t(size) + std::size_t(x)) * 4];
-            p[0] = encodeSrgb(c.r);
-            p[1] = encodeSrgb(c.g);
-            p[2] = encodeSrgb(c.b);
-            p[3] = 255;
-        }
+        for (int x = 0; x < size; ++x) putOpaqueSrgb(img, x, y, shade(x, y));
     }
     return img;
 }
@@ -241,12 +243,7 @@ Image foliage(int size) {
                 const float d = along * along + across * across;
                 if (d > 1.0f) continue;
                 // Lighter towards the tip, darker at the rim.
-                const glm::vec3 c = green * (0.75f + 0.25f * (1.0f - d)) * (0.8f + 0.2f * along);
-                std::uint8_t* p = &img.rgba8[(std::size_t(y) * std::size_t(size) + std::size_t(x)) * 4];
-                p[0] = encodeSrgb(c.r);
-                p[1] = encodeSrgb(c.g);
-                p[2] = encodeSrgb(c.b);
-                p[3] = 255;
+                putOpaqueSrgb(img, x, y, green * (0.75f + 0.25f * (1.0f - d)) * (0.8f + 0.2f * along));
             }
         }
     }
