@@ -265,6 +265,10 @@ void SceneGpu::draw(const RasterProgram& program) const {
     }
     if (submission_ == DrawSubmission::Indirect) glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
     glDisable(GL_CULL_FACE);
+    unbindSamplers();
+}
+
+void SceneGpu::unbindSamplers() const {
     for (GLuint unit : kSlotUnits) glBindSampler(unit, 0);
 }
 

@@ -61,6 +61,9 @@ public:
     // theirs (GpuMaterial::info.z); -1 is "no texture". Binds a set's textures at ML_TEX_*.
     std::size_t textureSetCount() const { return textureSets_.size(); }
     void bindTextureSet(int set) const;
+    // Unbinds the sampler objects bindTextureSet left on the material units, so later passes
+    // sample those units with their textures' own parameters.
+    void unbindSamplers() const;
 
     std::size_t triangleCount() const { return indexCount_ / 3; }
     std::size_t bytes() const;

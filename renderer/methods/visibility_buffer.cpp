@@ -53,8 +53,7 @@ void VisibilityBuffer::render(const FrameContext& ctx) {
             resolveProgram_.set("u_textureSet", set);
             glDispatchCompute(groupsX, groupsY, 1);
         }
-        for (GLuint unit : {ML_TEX_BASE_COLOR, ML_TEX_METALLIC_ROUGHNESS, ML_TEX_NORMAL, ML_TEX_OCCLUSION, ML_TEX_EMISSIVE})
-            glBindSampler(unit, 0);
+        ctx.scene.unbindSamplers();
         glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     }
     clustering_.build(ctx, &gbuffer_);
