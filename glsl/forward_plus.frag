@@ -1,6 +1,8 @@
 #version 450 core
 // Clustered forward (Forward+): after the depth pre-pass, each visible fragment finds its
 // cluster (tile from the pixel, slice from view depth) and loops over that cluster's lights.
+// With ML_TRANSPARENT it is the transparent pass of every clustered method: shaded colour and
+// the surface's alpha, blended over the opaque frame (debug views leave that pass out).
 #include "include/bindings.h"
 #include "include/frame_uniforms.glsl"
 #include "include/lights.glsl"
@@ -16,12 +18,17 @@
 layout(location = 0) out vec4 o_color;
 
 void main() {
-    SurfacePoint s = fragmentSurface();
+    float alpha;
+    SurfacePoint s = fragmentSurfaceAndAlpha(alpha);
     vec3 viewDir = normalize(u_cameraPos.xyz - s.position);
     float viewDepth = -(u_view * vec4(v_worldPos, 1.0)).z;
     uint cluster = clusterForFragment(gl_FragCoord.xy, viewDepth);
+#if ML_TRANSPARENT
+    o_color = vec4(shadeUnclustered(s, viewDir) + shadeClusterLights(s, viewDir, cluster, viewDepth), alpha);
+#else
     uint view = grid.options.w;
     vec3 color = vec3(0.0);
     if (view == ML_VIEW_SHADED || view == ML_VIEW_OVERFLOW) color = shadeUnclustered(s, viewDir) + shadeClusterLights(s, viewDir, cluster, viewDepth);
     o_color = vec4(debugViewColor(view, s, cluster, viewDepth, color), 1.0);
+#endif
 }

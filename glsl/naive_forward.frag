@@ -1,5 +1,6 @@
 #version 450 core
-// Naive forward: every fragment loops over every light. The exact reference.
+// Naive forward: every fragment loops over every light. The exact reference. With ML_TRANSPARENT
+// it shades the transparent pass and writes the surface's alpha for blending.
 #include "include/bindings.h"
 #include "include/frame_uniforms.glsl"
 #include "include/lights.glsl"
@@ -11,7 +12,8 @@
 layout(location = 0) out vec4 o_color;
 
 void main() {
-    SurfacePoint s = fragmentSurface();
+    float alpha;
+    SurfacePoint s = fragmentSurfaceAndAlpha(alpha);
     vec3 viewDir = normalize(u_cameraPos.xyz - s.position);
     vec3 color = shadeUnclustered(s, viewDir);
     uint n = lightCount();
@@ -19,5 +21,5 @@ void main() {
         Light l = lights[i];
         color += shadeLight(s, viewDir, l.positionRadius, l.colorCosInner, lightCone(i));
     }
-    o_color = vec4(color, 1.0);
+    o_color = vec4(color, ML_TRANSPARENT != 0 ? alpha : 1.0);
 }

@@ -75,6 +75,7 @@ std::vector<PassTime> FrameRenderer::renderAt(float time) {
     }
     scene_.setSubmission(settings_.draw);
     scene_.setBackfaceCulling(settings_.backfaceCulling);
+    scene_.setTransparency(settings_.transparency);
     method_->render(FrameContext{scene_, lights_, frameUniformBuffer_, uniforms_, targets_, timer_});
     const bool debugView = settings_.method.clustering.view != DebugView::Shaded;
     // After shading, so every method gets the same bloom; debug views' colours get none.

@@ -31,6 +31,7 @@ struct FrameSettings {
     float ambient = 0.03f;
     DrawSubmission draw = DrawSubmission::Direct;  // --draw: how raster passes submit the scene
     bool backfaceCulling = true;                   // --backface-culling (SceneGpu::setBackfaceCulling)
+    bool transparency = true;                      // --transparency: draw glTF BLEND surfaces (SceneGpu::setTransparency)
     bool specular = true;  // the Blinn-Phong term (--specular), a frame uniform: no recompile
     BloomSettings bloom;
     LightAnimation animation;
@@ -60,6 +61,7 @@ public:
     void setExposure(float exposure) { settings_.exposure = exposure; }
     void setDrawSubmission(DrawSubmission draw) { settings_.draw = draw; }
     void setBackfaceCulling(bool on) { settings_.backfaceCulling = on; }
+    void setTransparency(bool on) { settings_.transparency = on; }
     void setSpecular(bool on) { settings_.specular = on; }
     void setBloom(const BloomSettings& bloom) { settings_.bloom = bloom; }
     const BloomPass& bloom() const { return bloom_; }

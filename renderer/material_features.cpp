@@ -32,6 +32,7 @@ std::uint32_t materialFeatures(const Scene& scene) {
             if (uses(m.emissiveTexture)) f |= ML_FEATURE_EMISSIVE_MAP;
         }
         if (m.alphaTested()) f |= ML_FEATURE_ALPHA_TEST;
+        if (m.blended()) f |= ML_FEATURE_BLEND;
     }
     if (!scene.colors.empty()) f |= ML_FEATURE_VERTEX_COLOR;
     return f;
@@ -52,6 +53,7 @@ std::string describeMaterialFeatures(std::uint32_t features) {
         {ML_FEATURE_UV1, "TEXCOORD_1"},
         {ML_FEATURE_VERTEX_COLOR, "vertex colours"},
         {ML_FEATURE_ALPHA_TEST, "alpha test"},
+        {ML_FEATURE_BLEND, "transparency"},
     };
     std::string text;
     for (const auto& [bit, name] : kNames)

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <limits>
 #include <map>
 #include <stdexcept>
 
@@ -113,8 +114,7 @@ SceneGpu::SceneGpu(const Scene& scene) : features_(ml::materialFeatures(scene)),
     for (const Material& m : scene.materials) {
         GpuMaterial g{};
         g.baseColorFactor = m.baseColorFactor;
-        // BLEND is drawn as MASK at 0.5 until transparency exists (the loader warns).
-        g.emissiveCutoff = glm::vec4(m.emissive, m.alphaMode == AlphaMode::Blend ? 0.5f : m.alphaCutoff);
+        g.emissiveCutoff = glm::vec4(m.emissive, m.alphaCutoff);
         g.factors = glm::vec4(m.metallic, m.roughness, m.normalScale, m.occlusionStrength);
         TextureSet set{};
         bool textured = false;
@@ -159,8 +159,13 @@ SceneGpu::SceneGpu(const Scene& scene) : features_(ml::materialFeatures(scene)),
 
     // Draw ranges in group order (opaque before alpha-tested, then texture set, then sidedness),
     // for both submissions: where surfaces tie in depth the first drawn wins, so direct and
-    // indirect must draw in the same order to give the same image. Range i is drawn with
-    // baseInstance i, so the per-draw attribute (divisor 1) reads element i.
+    // indirect must draw in the same order to give the same image. Transparent ranges come last
+    // and belong to no group: only drawTransparent draws them, in its own order. Range i is drawn
+    // with baseInstance i, so the per-draw attribute (divisor 1) reads element i.
+    const auto blended = [&](const DrawRange& d) {
+        const std::uint32_t m = materialOf(d);
+        return m < scene.materials.size() && scene.materials[m].blended();
+    };
     const auto groupOf = [&](const DrawRange& d) {
         const std::uint32_t m = materialOf(d);
         DrawGroup g;
@@ -172,7 +177,9 @@ SceneGpu::SceneGpu(const Scene& scene) : features_(ml::materialFeatures(scene)),
         return g;
     };
     draws_ = scene.draws;
-    std::stable_sort(draws_.begin(), draws_.end(), [&](const DrawRange& a, const DrawRange& b) { return groupOf(a).key() < groupOf(b).key(); });
+    std::stable_sort(draws_.begin(), draws_.end(), [&](const DrawRange& a, const DrawRange& b) {
+        return std::tuple(blended(a), groupOf(a).key()) < std::tuple(blended(b), groupOf(b).key());
+    });
     std::vector<glm::uvec2> params;
     std::vector<DrawElementsIndirectCommand> commands;
     for (std::uint32_t i = 0; i < draws_.size(); ++i) {
@@ -180,6 +187,12 @@ SceneGpu::SceneGpu(const Scene& scene) : features_(ml::materialFeatures(scene)),
         params.emplace_back(materialOf(d), d.firstIndex / 3);
         commands.push_back({d.indexCount, 1, d.firstIndex, 0, i});
         const DrawGroup g = groupOf(d);
+        if (blended(d)) {
+            TransparentRange t{i, g.textureSet, g.doubleSided, {}};
+            for (std::uint32_t k = 0; k < d.indexCount; ++k) t.bounds.extend(scene.vertices[scene.indices[d.firstIndex + k]].position);
+            transparent_.push_back(t);
+            continue;
+        }
         if (groups_.empty() || groups_.back().key() != g.key()) {
             groups_.push_back(g);
             groups_.back().firstRange = i;
@@ -241,9 +254,13 @@ void SceneGpu::drawGroups(std::size_t first, std::size_t end) const {
     }
 }
 
-void SceneGpu::draw(const RasterProgram& program) const {
+void SceneGpu::bindDrawState() const {
     glBindVertexArray(vao_.id());
     materials_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_MATERIALS);
+}
+
+void SceneGpu::draw(const RasterProgram& program) const {
+    bindDrawState();
     if (submission_ == DrawSubmission::Indirect) glBindBuffer(GL_DRAW_INDIRECT_BUFFER, commands_.id());
     const gl::Program* current = nullptr;
     for (std::size_t first = 0; first < groups_.size();) {
@@ -266,6 +283,52 @@ void SceneGpu::draw(const RasterProgram& program) const {
     if (submission_ == DrawSubmission::Indirect) glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
     glDisable(GL_CULL_FACE);
     unbindSamplers();
+}
+
+std::vector<std::uint32_t> SceneGpu::transparentOrder(const glm::vec3& eye) const {
+    std::vector<std::uint32_t> order(transparent_.size());
+    std::vector<float> distance(transparent_.size());
+    for (std::uint32_t i = 0; i < order.size(); ++i) {
+        order[i] = i;
+        const glm::vec3 d = transparent_[i].bounds.center() - eye;
+        distance[i] = glm::dot(d, d);
+    }
+    std::stable_sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return distance[a] > distance[b]; });
+    return order;
+}
+
+void SceneGpu::drawTransparent(const RasterProgram& program, const glm::vec3& eye) const {
+    if (!hasTransparent()) return;
+    bindDrawState();
+    program.variant(false).use();
+    for (std::uint32_t t : transparentOrder(eye)) {
+        const TransparentRange& r = transparent_[t];
+        bindTextureSet(r.textureSet);
+        setCullState(r.doubleSided);
+        const DrawRange& d = draws_[r.range];
+        glDrawElementsInstancedBaseInstance(GL_TRIANGLES, static_cast<GLsizei>(d.indexCount), GL_UNSIGNED_INT,
+                                            reinterpret_cast<const void*>(std::uintptr_t(d.firstIndex) * sizeof(std::uint32_t)), 1,
+                                            r.range);
+    }
+    glDisable(GL_CULL_FACE);
+    unbindSamplers();
+}
+
+std::optional<glm::vec2> SceneGpu::transparentDepthRange(const glm::mat4& view, float cameraNear, float cameraFar) const {
+    if (!hasTransparent()) return std::nullopt;
+    float lo = std::numeric_limits<float>::max(), hi = std::numeric_limits<float>::lowest();
+    for (const TransparentRange& r : transparent_) {
+        // View depth is linear in the position, so a box's extremes are at its corners.
+        for (int k = 0; k < 8; ++k) {
+            const glm::vec3 p((k & 1) ? r.bounds.max.x : r.bounds.min.x, (k & 2) ? r.bounds.max.y : r.bounds.min.y,
+                              (k & 4) ? r.bounds.max.z : r.bounds.min.z);
+            const float depth = -(view * glm::vec4(p, 1.0f)).z;
+            lo = std::min(lo, depth);
+            hi = std::max(hi, depth);
+        }
+    }
+    if (hi < cameraNear || lo > cameraFar) return std::nullopt;
+    return glm::vec2(std::max(lo, cameraNear), std::min(hi, cameraFar));
 }
 
 void SceneGpu::unbindSamplers() const {

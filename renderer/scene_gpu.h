@@ -3,9 +3,12 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <tuple>
 #include <vector>
+
+#include <glm/glm.hpp>
 
 #include "glsl/include/bindings.h"
 
@@ -45,10 +48,32 @@ public:
     // methods still see the same surfaces.
     void setBackfaceCulling(bool on) { backfaceCulling_ = on; }
     bool backfaceCulling() const { return backfaceCulling_; }
-    // Draws every draw range: opaque ranges first with the program's opaque variant, then the
-    // alpha-tested ones with its masked variant. Textures are bound where the program reads the
-    // material, and for masked ranges always (coverage needs the base colour's alpha).
+    // Draws every draw range that is not transparent: opaque ranges first with the program's
+    // opaque variant, then the alpha-tested ones with its masked variant. Textures are bound where
+    // the program reads the material, and for masked ranges always (coverage needs the base
+    // colour's alpha).
     void draw(const RasterProgram& program) const;
+
+    // Transparent (glTF BLEND) draw ranges, drawn after the opaque frame by drawTransparent and by
+    // nothing else. Off (--transparency off), the scene draws as if it had none.
+    void setTransparency(bool on) { transparency_ = on; }
+    bool transparency() const { return transparency_; }
+    bool hasTransparent() const { return transparency_ && !transparent_.empty(); }
+    std::size_t transparentRangeCount() const { return transparent_.size(); }
+    // The order transparent ranges are drawn in, as indices into them: back to front by the
+    // distance from the eye to the centre of each range's bounding box, the farthest first; equal
+    // distances keep scene order. Within a range, triangles blend in index order. Every method
+    // (and the naive reference) draws this order, so they blend the same colours.
+    std::vector<std::uint32_t> transparentOrder(const glm::vec3& eye) const;
+    // Draws the transparent ranges in transparentOrder(eye), one direct call each, with the
+    // program's opaque variant and each range's textures and cull state. Blend and depth state
+    // are the caller's.
+    void drawTransparent(const RasterProgram& program, const glm::vec3& eye) const;
+    // View depth range [near, far] (positive, clamped to the camera's) that the transparent
+    // ranges' bounding boxes span: the clustered methods' fitted depth range must hold it, since
+    // the opaque depth buffer does not see those surfaces. Empty without transparent ranges or
+    // when they all lie outside the camera's range.
+    std::optional<glm::vec2> transparentDepthRange(const glm::mat4& view, float cameraNear, float cameraFar) const;
     // Draw calls one pass issues with the current submission.
     std::size_t drawCallsPerPass() const;
     std::size_t drawRangeCount() const { return draws_.size(); }
@@ -87,7 +112,16 @@ private:
         std::tuple<bool, int, bool> key() const { return {alphaTested, textureSet, doubleSided}; }
     };
 
+    // A transparent draw range: where it is in draws_, how it is drawn, and its world bounds.
+    struct TransparentRange {
+        std::uint32_t range = 0;
+        int textureSet = -1;
+        bool doubleSided = false;
+        Bounds bounds;
+    };
+
     void setCullState(bool doubleSided) const;
+    void bindDrawState() const;
     void drawGroups(std::size_t first, std::size_t end) const;
 
     gl::Buffer vertices_;
@@ -103,8 +137,10 @@ private:
     std::vector<TextureSet> textureSets_;
     std::uint32_t features_ = 0;
 
-    std::vector<DrawRange> draws_;  // in group order
-    std::vector<DrawGroup> groups_;
+    std::vector<DrawRange> draws_;  // in group order, the transparent ranges last
+    std::vector<DrawGroup> groups_;  // of the ranges that are not transparent
+    std::vector<TransparentRange> transparent_;
+    bool transparency_ = true;
     gl::Buffer drawParams_;  // per draw range: material, first triangle (8 B)
     gl::Buffer commands_;    // DrawElementsIndirectCommand per draw range, in group order (20 B)
     std::size_t indexCount_ = 0;

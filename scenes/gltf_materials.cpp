@@ -121,7 +121,6 @@ Material MaterialConverter::convertMaterial(std::size_t index) {
         m.alphaMode = AlphaMode::Mask;
     } else if (source.alphaMode == "BLEND") {
         m.alphaMode = AlphaMode::Blend;
-        ++blendMaterials_;
     } else if (source.alphaMode != "OPAQUE") {
         fail(path_, what + ": alphaMode '" + clip(source.alphaMode, 40) + "' is not OPAQUE, MASK or BLEND");
     }
@@ -278,8 +277,6 @@ std::vector<std::string> MaterialConverter::warnings() const {
 
     note(texturesWithoutSource_, counted(texturesWithoutSource_, "texture", "textures") +
                                      " skipped: no PNG/JPEG source (the image needs an extension)");
-    note(blendMaterials_, "alphaMode BLEND of " + counted(blendMaterials_, "material", "materials") +
-                              " drawn as MASK at alphaCutoff 0.5 (blended transparency is not built yet)");
     if (!failedImages_.empty()) {
         std::string list;
         for (std::size_t i = 0; i < failedImages_.size() && i < 3; ++i) list += (i ? "; " : "") + failedImages_[i];

@@ -52,7 +52,6 @@ private:
     std::uint64_t texelBudget_ = kMaxImageTexels;
     // Counts of what was skipped or approximated, each reported once as a warning.
     std::size_t texturesWithoutSource_ = 0;
-    std::size_t blendMaterials_ = 0;
     std::vector<std::string> failedImages_;
 };
 

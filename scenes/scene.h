@@ -63,7 +63,8 @@ struct TextureRef {
     bool present() const { return image >= 0; }
 };
 
-// glTF's alphaMode. BLEND is drawn as MASK at 0.5 (with a warning) until transparency exists.
+// glTF's alphaMode: OPAQUE, MASK (cut out at alphaCutoff) or BLEND (drawn after the opaque
+// frame, blended back to front; renderer/transparent_pass.h).
 enum class AlphaMode { Opaque, Mask, Blend };
 
 // A glTF metallic-roughness material (README, "Shading model", says how it is shaded).
@@ -83,12 +84,13 @@ struct Material {
     glm::vec3 emissive{0.0f};             // linear emissiveFactor times KHR_materials_emissive_strength
     TextureRef emissiveTexture;           // sRGB
     AlphaMode alphaMode = AlphaMode::Opaque;
-    float alphaCutoff = 0.5f;             // MASK (and BLEND, for now): drawn where alpha >= cutoff
+    float alphaCutoff = 0.5f;             // MASK: drawn where alpha >= cutoff (BLEND ignores it, as glTF asks)
     // glTF's doubleSided: false (the default) lets raster passes cull back faces, true draws
     // both sides (lit with the normal as given, as glTF asks for no flipping here).
     bool doubleSided = false;
 
-    bool alphaTested() const { return alphaMode != AlphaMode::Opaque; }
+    bool alphaTested() const { return alphaMode == AlphaMode::Mask; }
+    bool blended() const { return alphaMode == AlphaMode::Blend; }
 };
 
 // A contiguous run of triangles (3 indices each) drawn with one material.

@@ -97,7 +97,8 @@
 #define ML_FEATURE_TEXTURE_TRANSFORM 32
 #define ML_FEATURE_UV1 64                  // some texture reads TEXCOORD_1
 #define ML_FEATURE_VERTEX_COLOR 128        // COLOR_0
-#define ML_FEATURE_ALPHA_TEST 256          // some material is MASK (or BLEND, drawn as MASK)
+#define ML_FEATURE_ALPHA_TEST 256          // some material is MASK
+#define ML_FEATURE_BLEND 512               // some material is BLEND: the transparent pass exists
 
 // Light types (README, "The light model"). A point light stores this as its cone cosines: below
 // any cosine, so the spot test passes everywhere and the cone tests never reject it.

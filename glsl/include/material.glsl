@@ -73,7 +73,7 @@ vec4 materialBaseColor(Material m, MaterialCoords c, vec4 vertexColor) {
     return base;
 }
 
-// glTF MASK: covered where alpha >= alphaCutoff (BLEND is drawn as MASK at 0.5 for now).
+// glTF MASK: covered where alpha >= alphaCutoff.
 bool alphaCovered(Material m, float alpha) { return alpha >= m.emissiveCutoff.a; }
 
 // The tangent-space normal map's direction in world space (glTF: B = cross(N, T) * w, the map's

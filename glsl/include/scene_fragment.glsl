@@ -1,9 +1,13 @@
 // The fragment side of scene.vert: its outputs, and the material's surface at this fragment.
 // Needs material.glsl. With ML_ALPHA_TEST (the program variant for alpha-tested draw ranges,
 // renderer/raster_program.h) fragments outside the material's coverage are discarded; opaque
-// ranges are drawn without it and keep early depth testing.
+// ranges are drawn without it and keep early depth testing. With ML_TRANSPARENT (the transparent
+// pass, renderer/transparent_pass.h) the shading passes write the surface's alpha for blending.
 #ifndef ML_ALPHA_TEST
 #define ML_ALPHA_TEST 0
+#endif
+#ifndef ML_TRANSPARENT
+#define ML_TRANSPARENT 0
 #endif
 
 layout(location = 0) in vec3 v_worldPos;
@@ -63,12 +67,19 @@ void alphaTestFragment() {
 #endif
 }
 
-SurfacePoint fragmentSurface() {
+// The surface, and its coverage alpha (what a transparent pass blends with).
+SurfacePoint fragmentSurfaceAndAlpha(out float alpha) {
     Material m = materials[v_materialIndex];
     MaterialCoords c = fragmentCoords();
     vec4 base = materialBaseColor(m, c, fragmentVertexColor());
 #if ML_ALPHA_TEST
     if (!alphaCovered(m, base.a)) discard;
 #endif
+    alpha = clamp(base.a, 0.0, 1.0);
     return surfaceFromMaterial(m, v_worldPos, v_worldNormal, fragmentTangent(), base, c);
+}
+
+SurfacePoint fragmentSurface() {
+    float alpha;
+    return fragmentSurfaceAndAlpha(alpha);
 }

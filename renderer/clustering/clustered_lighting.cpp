@@ -2,6 +2,7 @@
 
 
 #include <algorithm>
+#include <bit>
 #include <stdexcept>
 
 #include "glsl/include/bindings.h"
@@ -49,11 +50,24 @@ void clearToZero(const gl::Buffer& buffer, std::size_t bytes) {
                               GL_UNSIGNED_INT, nullptr);
 }
 
+// Marks transparent fragments as samples where a pass learns from samples alone.
+RasterProgram transparentSamplesProgram(const ClusteringSettings& settings, std::uint32_t materialFeatures) {
+    const bool needed = (settings.activeOnly || settings.normalCones) && settings.assign != AssignMode::ZBin;
+    if (!(materialFeatures & ML_FEATURE_BLEND) || !needed) return {};
+    shaders::Defines defines;
+    if (settings.activeOnly) defines.emplace_back("ML_MARK_ACTIVE", "1");
+    if (settings.normalCones) defines.emplace_back("ML_NORMAL_CONES", "1");
+    return RasterProgram("cluster.transparent-samples",
+                         {{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "cluster_transparent_samples.frag"}},
+                         materialFeatures & ~std::uint32_t(ML_FEATURE_ALPHA_TEST), RasterProgram::Reads::Material, defines);
+}
+
 std::string mib(std::size_t bytes) { return std::to_string((bytes + (1u << 20) - 1) >> 20) + " MiB"; }
 
 }  // namespace
 
-ClusteredLighting::ClusteredLighting(const ClusteringSettings& settings, const shaders::Defines& gbufferDefines)
+ClusteredLighting::ClusteredLighting(const ClusteringSettings& settings, std::uint32_t materialFeatures,
+                                     const shaders::Defines& gbufferDefines)
     : settings_(settings),
       depthRange_(gl::Program::compute("cluster_depth_range.comp")),
       bounds_(gl::Program::compute("cluster_bounds.comp")),
@@ -69,6 +83,7 @@ ClusteredLighting::ClusteredLighting(const ClusteringSettings& settings, const s
                            spotLightsDefine(settings.spotLights)})),
       sortShort_(gl::Program::compute("sort_cluster_lists.comp")),
       sortLong_(gl::Program::compute("sort_cluster_lists.comp", {{"ML_SORT_LONG", "1"}})),
+      transparentSamples_(transparentSamplesProgram(settings, materialFeatures)),
       gridBuffer_("clusters.grid", sizeof(ClusterGridGpu)),
       counters_("clusters.counters", 32),
       dispatchArgs_("assign.dispatch-args", 16) {
@@ -130,6 +145,19 @@ void ClusteredLighting::uploadGrid(const FrameContext& ctx) {
     g.slicing = glm::vec4(slicing.zNear, slicing.zFar, slicing.scale, slicing.bias);
     g.tile = glm::vec4(grid_.tileSizePx, slicing.logarithmic ? 1.0f : 0.0f, cameraNear, cameraFar);
     g.reduction = glm::uvec4(0xFFFFFFFFu, 0u, 0u, 0u);
+    // The opaque depth buffer holds no transparent surface. A pane nearer (or farther) than every
+    // opaque sample stays exact even so, as the first and last slices reach the camera's planes
+    // (clusterDepthExtent), but its fragments would all fall in one deep end slice whose lists
+    // hold every light of that depth span. So the reduction starts from the transparent ranges'
+    // depth extent, widened by a relative 1e-4 for the fragments' rounding: the slices cover the
+    // panes as tightly as the opaque surfaces.
+    if (fitted) {
+        if (const auto extent = ctx.scene.transparentDepthRange(ctx.uniforms.view, cameraNear, cameraFar)) {
+            const float lo = std::max(extent->x * (1.0f - 1e-4f), cameraNear), hi = std::min(extent->y * (1.0f + 1e-4f), cameraFar);
+            g.reduction.x = std::bit_cast<std::uint32_t>(lo);
+            g.reduction.y = std::bit_cast<std::uint32_t>(hi);
+        }
+    }
     g.options = glm::uvec4(fitted ? 1u : 0u, settings_.assign == AssignMode::Capped ? settings_.maxPerCluster : 0u,
                            settings_.activeOnly ? 1u : 0u, static_cast<std::uint32_t>(settings_.view));
     gridBuffer_.upload(&g, sizeof(g));
@@ -184,6 +212,8 @@ void ClusteredLighting::build(const FrameContext& ctx, const GBuffer* gbuffer) {
         active_.use();
         glDispatchCompute(screenX, screenY, 1);
         glMemoryBarrier(kComputeToCompute);
+        // With --normal-cones the transparent samples are marked with the normal bins' phase 0.
+        if (!settings_.normalCones) markTransparentSamples(ctx, 0);
     }
     if (settings_.normalCones) {
         if (!gbuffer) throw std::logic_error("--normal-cones: the lists need the G-buffer's normals");
@@ -224,12 +254,37 @@ void ClusteredLighting::markNormalBins(const FrameContext& ctx, const GBuffer& g
     normalCones_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_NORMAL_CONES);
     gbuffer.bindForReading();
     normalBins_.use();
-    // Phase 0: occupied bins and each list's normal sum; phase 1: each list's widest normal.
+    // Phase 0: occupied bins and each list's normal sum; phase 1: each list's widest normal. The
+    // transparent samples join each phase before the next begins.
     for (unsigned phase : {0u, 1u}) {
+        normalBins_.use();
         normalBins_.set("u_phase", phase);
         glDispatchCompute(gl::groupsFor(ctx.targets.width(), ML_SCREEN_TILE), gl::groupsFor(ctx.targets.height(), ML_SCREEN_TILE), 1);
         glMemoryBarrier(kComputeToCompute);
+        markTransparentSamples(ctx, phase);
     }
+}
+
+void ClusteredLighting::markTransparentSamples(const FrameContext& ctx, unsigned phase) const {
+    if (!transparentSamples_.variant(false) || !ctx.scene.hasTransparent()) return;
+    auto pass = ctx.timer.pass("cluster.transparent-samples");
+    // Depth-tested against the opaque depth, writing nothing but the sample buffers.
+    ctx.targets.hdrFramebuffer().bind();
+    glViewport(0, 0, ctx.targets.width(), ctx.targets.height());
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_FALSE);
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    // The depth texture is attached now: take it off the unit the compute passes read it from.
+    glBindTextureUnit(ML_TEX_DEPTH, 0);
+    transparentSamples_.variant(false).use();
+    transparentSamples_.variant(false).set("u_phase", phase);
+    gridBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_CLUSTER_GRID);
+    ctx.scene.drawTransparent(transparentSamples_, glm::vec3(ctx.uniforms.cameraPos));
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glDepthMask(GL_TRUE);
+    glBindTextureUnit(ML_TEX_DEPTH, ctx.targets.depth().id());
+    glMemoryBarrier(kComputeToCompute);
 }
 
 void ClusteredLighting::dispatchAssignment(const gl::Program& program, std::uint32_t lightCount) const {
@@ -497,6 +552,7 @@ const char* assignModeName(AssignMode mode) {
 shaders::Defines lightListDefines(const ClusteringSettings& settings) {
     shaders::Defines defines{spotLightsDefine(settings.spotLights)};
     if (settings.assign == AssignMode::ZBin) defines.emplace_back("ML_ZBIN", "1");
+    if (settings.normalCones) defines.emplace_back("ML_NORMAL_CONES", "1");
     return defines;
 }
 

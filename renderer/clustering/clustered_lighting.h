@@ -2,9 +2,12 @@
 // Forward+ and clustered deferred, which differ only in how they shade.
 //
 //   depth ─> [cluster.depth-range]  fitted slicing only: min/max visible depth ─> grid.slicing
+//                                   (held open to the transparent ranges' depth extent)
 //         ─> [cluster.bounds]       view-space AABB per cluster
 //         ─> [cluster.active]       --active-only: flag clusters holding a visible sample
 //         ─> [cluster.normal-bins]  --normal-cones: per cluster, the normal bins its visible samples occupy
+//         ─> [cluster.transparent-samples]  with transparent surfaces and --active-only or
+//                                   --normal-cones: their visible fragments marked as samples too
 //   exact:  [assign.ranges] ─> [assign.count] ─> [assign.scan] ─> [assign.fill]
 //           one invocation per (light, candidate cluster); one compact list, no cap
 //   per-cluster: [assign.ranges] ─> [assign.per-cluster-count] ─> [assign.scan] ─> [assign.per-cluster-fill]
@@ -38,6 +41,7 @@
 #include "renderer/gl/texture.h"
 #include "renderer/gpu_types.h"
 #include "renderer/methods/shading_method.h"
+#include "renderer/raster_program.h"
 
 namespace ml {
 
@@ -45,9 +49,10 @@ class GBuffer;
 
 class ClusteredLighting {
 public:
-    // gbufferDefines: the G-buffer's layout (GBuffer::defines()), which --normal-cones decodes
-    // its normals from the way the lighting does.
-    explicit ClusteredLighting(const ClusteringSettings& settings, const shaders::Defines& gbufferDefines = {});
+    // materialFeatures: SceneGpu::materialFeatures() (with transparency, the transparent samples'
+    // program is built from them). gbufferDefines: the G-buffer's layout (GBuffer::defines()),
+    // which --normal-cones decodes its normals from the way the lighting does.
+    ClusteredLighting(const ClusteringSettings& settings, std::uint32_t materialFeatures, const shaders::Defines& gbufferDefines = {});
 
     // Builds the lists from the lights and the depth already in ctx.targets.depth(); with
     // --normal-cones also from the G-buffer's normals (required then).
@@ -82,6 +87,8 @@ private:
     void checkListFits(std::size_t bytes, const char* what) const;
     void buildExact(const FrameContext& ctx);
     void markNormalBins(const FrameContext& ctx, const GBuffer& gbuffer);
+    // Rasters the transparent ranges as samples (cluster_transparent_samples.frag), phase 0 or 1.
+    void markTransparentSamples(const FrameContext& ctx, unsigned phase) const;
     void buildCapped(const FrameContext& ctx);
     void sortLists(const FrameContext& ctx);
     void dispatchAssignment(const gl::Program& program, std::uint32_t lightCount) const;
@@ -94,6 +101,7 @@ private:
 
     gl::Program depthRange_, bounds_, active_, normalBins_, ranges_, dispatch_, count_, fill_, capped_, sortShort_, sortLong_;
     PrefixSum scan_;
+    RasterProgram transparentSamples_;  // only with transparency and --active-only or --normal-cones
 
     gl::Buffer gridBuffer_;
     gl::Buffer counters_;  // [0] dropped references (capped), [1] list entries, [2] candidate pairs (exact), [3..4] normal-cone pairs

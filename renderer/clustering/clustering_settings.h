@@ -43,7 +43,8 @@ struct ClusteringSettings {
     bool spotLights = true;
 };
 
-// Defines of the shading programs that read the lists (cluster_lists.glsl picks its light loop).
+// Defines of the shading programs that read the lists (cluster_lists.glsl picks its light loop,
+// and with --normal-cones its list by the normal's bin).
 shaders::Defines lightListDefines(const ClusteringSettings& settings);
 
 }  // namespace ml

@@ -20,7 +20,8 @@ ClusteredDeferred::ClusteredDeferred(const ClusteringSettings& settings, Resolve
       gbufferProgram_("deferred.gbuffer", {{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "gbuffer.frag"}},
                       materialFeatures, RasterProgram::Reads::Material, gbuffer_.defines()),
       lightingProgram_(lightingProgram(resolve, deferredLightingDefines(settings, gbuffer_))),
-      clustering_(settings, gbuffer_.defines()) {
+      clustering_(settings, materialFeatures, gbuffer_.defines()),
+      transparent_(TransparentPass::overClusterLists("deferred.transparent", materialFeatures, settings)) {
     GLuint vao = 0;
     glCreateVertexArrays(1, &vao);
     emptyVao_ = gl::Handle<gl::VertexArrayDeleter>(vao);
@@ -58,6 +59,7 @@ void ClusteredDeferred::render(const FrameContext& ctx) {
             glEnable(GL_DEPTH_TEST);
         }
     }
+    transparent_.render(ctx, &clustering_);
 }
 
 }  // namespace ml

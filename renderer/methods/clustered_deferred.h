@@ -7,6 +7,7 @@
 #include "renderer/gl/program.h"
 #include "renderer/methods/gbuffer.h"
 #include "renderer/methods/shading_method.h"
+#include "renderer/transparent_pass.h"
 #include "renderer/raster_program.h"
 
 namespace ml {
@@ -26,6 +27,7 @@ private:
     gl::Program lightingProgram_;
     gl::Handle<gl::VertexArrayDeleter> emptyVao_;
     ClusteredLighting clustering_;
+    TransparentPass transparent_;
 };
 
 }  // namespace ml

@@ -6,7 +6,6 @@ namespace ml {
 
 shaders::Defines deferredLightingDefines(const ClusteringSettings& clustering, const GBuffer& gbuffer) {
     shaders::Defines defines = lightListDefines(clustering);
-    if (clustering.normalCones) defines.push_back({"ML_NORMAL_CONES", "1"});
     for (const auto& define : gbuffer.defines()) defines.push_back(define);
     return defines;
 }

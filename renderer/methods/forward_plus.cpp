@@ -25,9 +25,15 @@ ForwardPlus::ForwardPlus(const ClusteringSettings& settings, bool prepass, std::
                     materialFeatures, RasterProgram::Reads::CoverageOnly),
       shadeProgram_("forward-plus.shade", {{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "forward_plus.frag"}},
                     materialFeatures, RasterProgram::Reads::Material, lightListDefines(settings)),
-      clustering_(clusteringFor(settings, prepass)) {}
+      clustering_(clusteringFor(settings, prepass), materialFeatures),
+      transparent_(TransparentPass::overClusterLists("forward+.transparent", materialFeatures, clusteringFor(settings, prepass))) {}
 
 void ForwardPlus::render(const FrameContext& ctx) {
+    shadeOpaque(ctx);
+    transparent_.render(ctx, &clustering_);
+}
+
+void ForwardPlus::shadeOpaque(const FrameContext& ctx) {
     const gl::Framebuffer& fbo = ctx.targets.hdrFramebuffer();
     auto clearTargets = [&] {
         fbo.bind();

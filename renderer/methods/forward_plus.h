@@ -7,6 +7,7 @@
 #include "renderer/clustering/clustered_lighting.h"
 #include "renderer/raster_program.h"
 #include "renderer/methods/shading_method.h"
+#include "renderer/transparent_pass.h"
 
 namespace ml {
 
@@ -20,10 +21,13 @@ public:
     bool needsStencil() const override { return prepass_; }
 
 private:
+    void shadeOpaque(const FrameContext& ctx);
+
     bool prepass_;
     RasterProgram depthProgram_;
     RasterProgram shadeProgram_;
     ClusteredLighting clustering_;
+    TransparentPass transparent_;
 };
 
 }  // namespace ml

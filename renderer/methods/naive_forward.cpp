@@ -6,9 +6,15 @@ namespace ml {
 
 NaiveForward::NaiveForward(std::uint32_t materialFeatures, bool spotLights)
     : program_("naive_forward", {{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "naive_forward.frag"}}, materialFeatures,
-               RasterProgram::Reads::Material, {spotLightsDefine(spotLights)}) {}
+               RasterProgram::Reads::Material, {spotLightsDefine(spotLights)}),
+      transparent_(TransparentPass::overAllLights("naive.transparent", materialFeatures, spotLights)) {}
 
 void NaiveForward::render(const FrameContext& ctx) {
+    shadeOpaque(ctx);
+    transparent_.render(ctx, nullptr);
+}
+
+void NaiveForward::shadeOpaque(const FrameContext& ctx) {
     auto pass = ctx.timer.pass("naive.shade");
     ctx.targets.hdrFramebuffer().bind();
     glViewport(0, 0, ctx.targets.width(), ctx.targets.height());

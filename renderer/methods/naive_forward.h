@@ -4,6 +4,7 @@
 
 #include "renderer/raster_program.h"
 #include "renderer/methods/shading_method.h"
+#include "renderer/transparent_pass.h"
 
 namespace ml {
 
@@ -14,7 +15,10 @@ public:
     void render(const FrameContext& ctx) override;
 
 private:
+    void shadeOpaque(const FrameContext& ctx);
+
     RasterProgram program_;
+    TransparentPass transparent_;
 };
 
 }  // namespace ml

@@ -11,7 +11,8 @@ VisibilityBuffer::VisibilityBuffer(const ClusteringSettings& settings, GBufferFo
                      materialFeatures, RasterProgram::Reads::CoverageOnly),
       resolveProgram_(gl::Program::compute("visibility_resolve.comp", gbuffer_.defines())),
       lightingProgram_(gl::Program::compute("deferred_lighting.comp", deferredLightingDefines(settings, gbuffer_))),
-      clustering_(settings, gbuffer_.defines()) {}
+      clustering_(settings, materialFeatures, gbuffer_.defines()),
+      transparent_(TransparentPass::overClusterLists("visibility.transparent", materialFeatures, settings)) {}
 
 void VisibilityBuffer::prepareTargets(const FrameTargets& frame) {
     if (frame.width() == width_ && frame.height() == height_ && frame.depth().id() == depthId_) return;
@@ -63,6 +64,7 @@ void VisibilityBuffer::render(const FrameContext& ctx) {
         lightingProgram_.use();
         dispatchComputeLighting(ctx.targets);
     }
+    transparent_.render(ctx, &clustering_);
 }
 
 }  // namespace ml

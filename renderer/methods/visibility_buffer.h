@@ -11,6 +11,7 @@
 #include "renderer/gl/texture.h"
 #include "renderer/methods/gbuffer.h"
 #include "renderer/methods/shading_method.h"
+#include "renderer/transparent_pass.h"
 #include "renderer/raster_program.h"
 
 namespace ml {
@@ -35,6 +36,7 @@ private:
     gl::Texture2D triangleIds_;
     gl::Framebuffer fbo_;
     ClusteredLighting clustering_;
+    TransparentPass transparent_;
 };
 
 }  // namespace ml

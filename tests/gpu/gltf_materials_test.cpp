@@ -23,16 +23,6 @@ using test::GpuTest;
 constexpr int kWidth = 160, kHeight = 90;
 const CameraPose kFrontView{{0.0f, 0.0f, 4.0f}, {0.0f, 0.0f, 0.0f}, 60.0f};
 
-// A square in the plane z = `z` facing +z, half-size `half`, UVs (0, 0) at the top left to
-// (1, 1) at the bottom right (glTF's v runs down the image), scaled by `uvScale`.
-json square(Gltf& g, float z, float half, int material, const json& extraAttributes = json::object(), float uvScale = 1.0f) {
-    json attributes = {{"POSITION", g.vec3({{-half, -half, z}, {half, -half, z}, {half, half, z}, {-half, half, z}})},
-                       {"NORMAL", g.vec3({{0, 0, 1}, {0, 0, 1}, {0, 0, 1}, {0, 0, 1}})},
-                       {"TEXCOORD_0", g.vec2({{0, uvScale}, {uvScale, uvScale}, {uvScale, 0}, {0, 0}})}};
-    attributes.update(extraAttributes);
-    return primitive(attributes, g.indices({0, 1, 2, 0, 2, 3}), material);
-}
-
 // An RGBA8 image as an embedded PNG, and a texture of it with a sampler.
 int addTexture(Gltf& g, int width, int height, const std::vector<std::uint8_t>& rgba, const json& sampler = json::object()) {
     const int image = g.add("images", {{"uri", "data:image/png;base64," + base64(encodePng(width, height, rgba))}});
@@ -53,24 +43,6 @@ std::vector<std::uint8_t> pixels(int width, int height, const std::function<std:
 }
 
 const json kNearest = {{"magFilter", 9728}, {"minFilter", 9728}};
-
-// Writes the file as GLB (self-contained, so the fuzzer can take it as a seed) into the test's
-// directory and loads it.
-Scene writeAndLoad(Gltf& g, const std::vector<json>& primitives, const std::string& name) {
-    static std::string currentTest;
-    static fs::path dir;
-    const std::string test = ::testing::UnitTest::GetInstance()->current_test_info()->name();
-    if (test != currentTest) {  // testDir() empties the directory: once per test
-        currentTest = test;
-        dir = testDir();
-    }
-    g.scene({g.node({{"mesh", g.mesh(primitives)}})});
-    const fs::path file = g.writeGlb(dir, name);
-    std::vector<std::string> warnings;
-    Scene scene = loadGltf(file.string(), warnings);
-    for (const std::string& w : warnings) std::printf("warning: %s\n", w.c_str());
-    return scene;
-}
 
 // Renders naive, then holds every clustered method (and, for deferred, the standard G-buffer)
 // to it within the accuracy contract. Returns naive's frame.

@@ -89,16 +89,14 @@ TEST(GltfMaterials, GltfDefaultsAreMetallicAndRough) {
     EXPECT_TRUE(s.images.empty()) << "no texture read, no image decoded";
 }
 
-TEST(GltfMaterials, BlendIsDrawnAsMaskWithOneWarning) {
+TEST(GltfMaterials, BlendIsLoadedAsBlendedWithoutWarning) {
     std::vector<std::string> warnings;
     const fs::path file = withMaterial({{"alphaMode", "BLEND"}}).writeGltf(testDir(), "blend");
     const Scene s = load(file, warnings);
     EXPECT_EQ(s.materials.at(0).alphaMode, AlphaMode::Blend);
-    EXPECT_TRUE(s.materials.at(0).alphaTested());
-    ASSERT_EQ(warnings.size(), 1u);
-    EXPECT_NE(warnings[0].find("BLEND"), std::string::npos) << warnings[0];
-    EXPECT_NE(warnings[0].find("MASK at alphaCutoff 0.5"), std::string::npos) << warnings[0];
-    expectOneLineWarnings(warnings, file);
+    EXPECT_TRUE(s.materials.at(0).blended());
+    EXPECT_FALSE(s.materials.at(0).alphaTested()) << "BLEND ignores alphaCutoff";
+    EXPECT_TRUE(warnings.empty()) << warnings.at(0);
 }
 
 TEST(GltfMaterials, BadValuesAreNamedInOneLine) {

@@ -257,4 +257,32 @@ inline glm::vec3 faceNormal(const Scene& s, std::size_t t) {
     return glm::normalize(glm::cross(b - a, c - a));
 }
 
+// A square in the plane z = `z` facing +z, half-size `half`, UVs (0, 0) at the top left to
+// (1, 1) at the bottom right (glTF's v runs down the image), scaled by `uvScale`.
+inline json square(Gltf& g, float z, float half, int material, const json& extraAttributes = json::object(), float uvScale = 1.0f) {
+    json attributes = {{"POSITION", g.vec3({{-half, -half, z}, {half, -half, z}, {half, half, z}, {-half, half, z}})},
+                       {"NORMAL", g.vec3({{0, 0, 1}, {0, 0, 1}, {0, 0, 1}, {0, 0, 1}})},
+                       {"TEXCOORD_0", g.vec2({{0, uvScale}, {uvScale, uvScale}, {uvScale, 0}, {0, 0}})}};
+    attributes.update(extraAttributes);
+    return primitive(attributes, g.indices({0, 1, 2, 0, 2, 3}), material);
+}
+
+// Writes the file as GLB (self-contained, so the fuzzer can take it as a seed) into the test's
+// directory and loads it.
+inline Scene writeAndLoad(Gltf& g, const std::vector<json>& primitives, const std::string& name) {
+    static std::string currentTest;
+    static fs::path dir;
+    const std::string test = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+    if (test != currentTest) {  // testDir() empties the directory: once per test
+        currentTest = test;
+        dir = testDir();
+    }
+    g.scene({g.node({{"mesh", g.mesh(primitives)}})});
+    const fs::path file = g.writeGlb(dir, name);
+    std::vector<std::string> warnings;
+    Scene scene = loadGltf(file.string(), warnings);
+    for (const std::string& w : warnings) std::printf("warning: %s\n", w.c_str());
+    return scene;
+}
+
 }  // namespace ml::gltf_test

@@ -1,0 +1,57 @@
+#include "renderer/transparent_pass.h"
+
+#include <utility>
+
+#include "glsl/include/bindings.h"
+#include "renderer/clustering/clustered_lighting.h"
+
+namespace ml {
+
+namespace {
+// Programs only where some material is BLEND: a scene without transparency compiles nothing.
+RasterProgram transparentProgram(const char* label, const char* fragmentShader, std::uint32_t materialFeatures,
+                                 shaders::Defines defines) {
+    if (!(materialFeatures & ML_FEATURE_BLEND)) return {};
+    defines.emplace_back("ML_TRANSPARENT", "1");
+    // Transparent ranges are never alpha-tested (BLEND ignores alphaCutoff): no masked variant.
+    return RasterProgram(label, {{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, fragmentShader}},
+                         materialFeatures & ~std::uint32_t(ML_FEATURE_ALPHA_TEST), RasterProgram::Reads::Material, std::move(defines));
+}
+}  // namespace
+
+TransparentPass::TransparentPass(std::string timerName, RasterProgram program)
+    : timerName_(std::move(timerName)), program_(std::move(program)) {}
+
+TransparentPass TransparentPass::overAllLights(std::string timerName, std::uint32_t materialFeatures, bool spotLights) {
+    return TransparentPass(std::move(timerName),
+                           transparentProgram("transparent.all-lights", "naive_forward.frag", materialFeatures, {spotLightsDefine(spotLights)}));
+}
+
+TransparentPass TransparentPass::overClusterLists(std::string timerName, std::uint32_t materialFeatures,
+                                                  const ClusteringSettings& settings) {
+    return TransparentPass(std::move(timerName),
+                           transparentProgram("transparent.cluster-lists", "forward_plus.frag", materialFeatures, lightListDefines(settings)));
+}
+
+void TransparentPass::render(const FrameContext& ctx, const ClusteredLighting* lists) const {
+    if (!program_.variant(false) || !ctx.scene.hasTransparent()) return;
+    if (lists && lists->settings().view != DebugView::Shaded) return;
+    auto pass = ctx.timer.pass(timerName_);
+    // The opaque frame may have come from compute passes' image stores.
+    glMemoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT);
+    ctx.targets.hdrFramebuffer().bind();
+    glViewport(0, 0, ctx.targets.width(), ctx.targets.height());
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_FALSE);
+    glEnable(GL_BLEND);
+    // Colour "over" the frame; the target's alpha stays 1 (the frame is opaque).
+    glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
+    ctx.lights.bindForReading();
+    if (lists) lists->bindForShading();
+    ctx.scene.drawTransparent(program_, glm::vec3(ctx.uniforms.cameraPos));
+    glDisable(GL_BLEND);
+    glDepthMask(GL_TRUE);
+}
+
+}  // namespace ml
