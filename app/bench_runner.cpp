@@ -59,6 +59,7 @@ std::string frameKeyOf(const FrameOptions& o, double radius) {
     k["bloom_threshold"] = o.bloomThreshold;
     k["bloom_strength"] = o.bloomStrength;
     k["backface_culling"] = o.backfaceCulling;  // and raster the same surfaces
+    k["transparency"] = o.transparency;          // and blend the same ones
     return k.dump();
 }
 
@@ -111,6 +112,7 @@ BenchRow configColumns(const BenchPoint& p, int index, std::uint32_t frame, cons
     row["resolve"] = p.deferred ? nlohmann::ordered_json(o.resolve) : nlohmann::ordered_json();
     row["draw"] = o.draw;
     row["backface_culling"] = o.backfaceCulling;
+    row["transparency"] = o.transparency;
     row["workgroup"] = clustered(o.workgroup);
     row["frame_index"] = frame;
     row["warmup_frames"] = run.warmupFrames;

@@ -216,6 +216,8 @@ const std::vector<AxisDef>& axisDefs() {
          }},
         {{"backface_culling", "--backface-culling", "cull back faces of single-sided materials: on, off"}, ValueKind::Boolean,
          Applies::Always, [](BenchPoint& p, const json& v) { p.frame.backfaceCulling = asBoolean(v) ? "on" : "off"; }},
+        {{"transparency", "--transparency", "draw glTF BLEND surfaces blended over the opaque frame: on, off"}, ValueKind::Boolean,
+         Applies::Always, [](BenchPoint& p, const json& v) { p.frame.transparency = asBoolean(v) ? "on" : "off"; }},
         {{"cull", "--cull", "light-vs-cluster test: aabb, sphere, cone"}, ValueKind::Text, Applies::Clustered,
          [](BenchPoint& p, const json& v) {
              (void)parseCullMode(asText(v));

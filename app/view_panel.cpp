@@ -114,12 +114,19 @@ void lightsSection(ViewSettings& s, const ViewStatistics& stats, PanelEdits& edi
 }
 
 // The shading options (issue 5): closed at start, so the panel keeps its height.
-void shadingSection(ViewSettings& s, PanelEdits& edits) {
+void shadingSection(ViewSettings& s, const ViewStatistics& stats, PanelEdits& edits) {
     // Scene submission (--draw): closed with the shading options, so the panel keeps its height.
     int draw = static_cast<int>(s.draw);
     if (comboOf("scene draws", draw, {drawSubmissionName(DrawSubmission::Direct), drawSubmissionName(DrawSubmission::Indirect)}))
         s.draw = static_cast<DrawSubmission>(draw);
     ImGui::Checkbox("back-face culling", &s.backfaceCulling);
+    // Every method draws transparent surfaces (a forward pass after the opaque frame).
+    ImGui::BeginDisabled(stats.transparentRanges == 0);
+    ImGui::Checkbox("transparency", &s.transparency);
+    ImGui::EndDisabled();
+    ImGui::SameLine();
+    if (stats.transparentRanges == 0) ImGui::TextColored(kDim, "(no BLEND material in this scene)");
+    else ImGui::TextColored(kDim, "(%zu glass ranges, back to front)", stats.transparentRanges);
     ImGui::BeginDisabled(s.method.kind != MethodKind::Deferred && s.method.kind != MethodKind::Visibility);
     int gbuffer = static_cast<int>(s.method.gbuffer);
     if (comboOf("G-buffer", gbuffer, gbufferFormatNames())) {
@@ -341,7 +348,7 @@ PanelEdits drawViewPanel(ViewSettings& settings, const ViewStatistics& stats) {
         if (ImGui::CollapsingHeader("Method", ImGuiTreeNodeFlags_DefaultOpen)) methodSection(settings, edits);
         if (ImGui::CollapsingHeader("Lights", ImGuiTreeNodeFlags_DefaultOpen)) lightsSection(settings, stats, edits);
         if (ImGui::CollapsingHeader("Cluster grid", ImGuiTreeNodeFlags_DefaultOpen)) gridSection(settings, edits);
-        if (ImGui::CollapsingHeader("Shading")) shadingSection(settings, edits);
+        if (ImGui::CollapsingHeader("Shading")) shadingSection(settings, stats, edits);
         if (ImGui::CollapsingHeader("Camera and window", ImGuiTreeNodeFlags_DefaultOpen)) cameraSection(settings, stats, edits);
         if (ImGui::CollapsingHeader("Keys")) keysSection();
         ImGui::PopItemWidth();

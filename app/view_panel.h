@@ -28,6 +28,7 @@ struct ViewSettings {
     float exposure = 1.0f;
     DrawSubmission draw = DrawSubmission::Direct;
     bool backfaceCulling = true;
+    bool transparency = true;     // draw the scene's BLEND surfaces
     bool specular = true;
     BloomSettings bloom;
     bool vsync = true;
@@ -55,6 +56,7 @@ struct ViewStatistics {
     std::size_t lights = 0;
     bool lightsFromFile = false;
     std::size_t sceneLights = 0;             // lights the scene file brings (KHR_lights_punctual)
+    std::size_t transparentRanges = 0;       // the scene's BLEND draw ranges
     float sceneSize = 1.0f;                  // bounds' diagonal: the radius slider's scale
     float flySpeed = 0.0f;
     std::vector<std::string> sceneCameras;   // the scene file's cameras as the panel lists them

@@ -90,10 +90,12 @@ ViewSession::ViewSession(const ViewOptions& options, PreparedFrame frame, std::o
     settings_.spotAngle = options.frame.spotAngle;
     settings_.sceneLights = options.frame.sceneLights == "on";
     stats_.sceneLights = frame_.scene.lights.size();
+    stats_.transparentRanges = renderer_ ? renderer_->scene().transparentRangeCount() : 0;
     settings_.lightRadius = options.frame.lightRadius.value_or(defaultLightRadius(frame_.scene.bounds));
     settings_.exposure = options.frame.exposure;
     settings_.draw = parseDrawSubmission(options.frame.draw);
     settings_.backfaceCulling = frame_.settings.backfaceCulling;
+    settings_.transparency = frame_.settings.transparency;
     settings_.specular = frame_.settings.specular;
     settings_.bloom = frame_.settings.bloom;
     settings_.vsync = !options.noVsync;
@@ -240,6 +242,7 @@ void ViewSession::applyEdits(const PanelEdits& edits) {
     renderer_->setExposure(settings_.exposure);
     renderer_->setDrawSubmission(settings_.draw);
     renderer_->setBackfaceCulling(settings_.backfaceCulling);
+    renderer_->setTransparency(settings_.transparency);
     renderer_->setSpecular(settings_.specular);
     renderer_->setBloom(settings_.bloom);
 }

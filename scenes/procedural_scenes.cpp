@@ -77,6 +77,9 @@ enum AtriumMaterial : std::uint32_t {
     kDarkStone,
     kFoliage,      // alpha-tested (MASK) leaves on cross quads in the planters
     kLanternGlow,  // emissive lantern globes on bronze posts
+    kGlassTeal,    // glass screens across the courtyard (BLEND), one material each so each is
+    kGlassRose,    // its own draw range and they blend back to front as screens
+    kGlassAmber,
     kAtriumMaterialCount
 };
 
@@ -590,6 +593,18 @@ void addLanterns(MeshBuilder& mb, const Tess& tess) {
     }
 }
 
+// Three glass screens standing across the courtyard on bronze sills, one behind another seen
+// down its length, so the transparent pass blends them over each other.
+void addGlassScreens(MeshBuilder& mb) {
+    const std::pair<float, std::uint32_t> screens[] = {{-6.0f, kGlassTeal}, {3.2f, kGlassRose}, {10.8f, kGlassAmber}};
+    const float halfWidth = 1.7f, bottom = 0.12f, top = 2.9f;
+    for (const auto& [x, glass] : screens) {
+        mb.addBox(kBronze, glm::vec3(x - 0.06f, 0.0f, -halfWidth - 0.05f), glm::vec3(x + 0.06f, bottom, halfWidth + 0.05f), 0x3bu);
+        mb.addFlatQuad(glass, {x, bottom, -halfWidth}, {x, bottom, halfWidth}, {x, top, halfWidth}, {x, top, -halfWidth},
+                       {-1.0f, 0.0f, 0.0f});
+    }
+}
+
 void addBanners(MeshBuilder& mb, const Tess& tess) {
     const std::uint32_t colours[3] = {kFabricRed, kFabricGreen, kFabricBlue};
     int n = 0;
@@ -618,6 +633,9 @@ std::vector<MaterialSpec> atriumMaterials() {
     m[kDarkStone] = {"dark_stone", {0.30f, 0.29f, 0.27f, 1.0f}, kImgMarble, 0.0f, 0.45f, 1.0f};
     m[kFoliage] = {"foliage", {1.0f, 1.0f, 1.0f, 1.0f}, kImgFoliage, 0.0f, 0.75f, 1.0f, true};
     m[kLanternGlow] = {"lantern_glow", {0.95f, 0.85f, 0.65f, 1.0f}, -1, 0.0f, 0.3f, 1.0f};
+    m[kGlassTeal] = {"glass_teal", {0.15f, 0.70f, 0.62f, 0.45f}, -1, 0.0f, 0.12f, 1.0f, true};
+    m[kGlassRose] = {"glass_rose", {0.85f, 0.25f, 0.40f, 0.45f}, -1, 0.0f, 0.12f, 1.0f, true};
+    m[kGlassAmber] = {"glass_amber", {0.95f, 0.55f, 0.10f, 0.50f}, -1, 0.0f, 0.12f, 1.0f, true};
     return m;
 }
 
@@ -666,7 +684,8 @@ Scene makeAtrium(float detail) {
     MeshBuilder mb(kAtriumMaterialCount);
     addMaterials(scene, mb, atriumMaterials());
     // What the procedural specs do not say: normal maps (tiled as their colour maps), the
-    // foliage's cut-out (clamped, so the bush's edges do not wrap), the lanterns' glow.
+    // foliage's cut-out (clamped, so the bush's edges do not wrap), the lanterns' glow, the
+    // screens' glass.
     scene.materials[kFloor].normalTexture.image = kImgFloorNormal;
     scene.materials[kStone].normalTexture.image = kImgStoneNormal;
     Sampler clamped;
@@ -677,6 +696,7 @@ Scene makeAtrium(float detail) {
     foliage.alphaCutoff = 0.5f;
     foliage.baseColorTexture.sampler = 0;
     scene.materials[kLanternGlow].emissive = glm::vec3(1.0f, 0.62f, 0.28f) * 4.0f;
+    for (std::uint32_t glass : {kGlassTeal, kGlassRose, kGlassAmber}) scene.materials[glass].alphaMode = AlphaMode::Blend;
 
     // The courtyard and gallery floor.
     mb.addFlatQuad(kFloor, {-kEndInner, 0.0f, -kBackInner}, {kEndInner, 0.0f, -kBackInner},
@@ -694,6 +714,7 @@ Scene makeAtrium(float detail) {
     addPlanters(mb);
     addLanterns(mb, tess);
     addBanners(mb, tess);
+    addGlassScreens(mb);
 
     finish(scene, mb);
     IndexRanges normalMapped;
