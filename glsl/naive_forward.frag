@@ -7,17 +7,12 @@
 #include "include/sun_lights.glsl"
 #include "include/material.glsl"
 #include "include/scene_fragment.glsl"
+#include "include/every_light.glsl"
 
 layout(location = 0) out vec4 o_color;
 
 void main() {
     SurfacePoint s = fragmentSurface();
     vec3 viewDir = normalize(u_cameraPos.xyz - s.position);
-    vec3 color = shadeUnclustered(s, viewDir);
-    uint n = lightCount();
-    for (uint i = 0u; i < n; ++i) {
-        Light l = lights[i];
-        color += shadeLight(s, viewDir, l.positionRadius, l.colorCosInner, lightCone(i));
-    }
-    o_color = vec4(color, 1.0);
+    o_color = vec4(addEveryLight(s, viewDir, shadeUnclustered(s, viewDir)), 1.0);
 }

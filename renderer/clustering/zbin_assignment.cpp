@@ -28,11 +28,12 @@ std::string mib(std::size_t bytes) { return std::to_string((bytes + (1u << 20) -
 
 }  // namespace
 
-ZBinAssignment::ZBinAssignment(bool spotLights)
+ZBinAssignment::ZBinAssignment(bool spotLights, const std::pair<std::string, std::string>& depthSamples)
     : keysPass_(zbinProgram("zbin.keys", "ML_ZBIN_KEYS", spotLights)),
       binsPass_(zbinProgram("zbin.bins", "ML_ZBIN_BINS", spotLights)),
       masksPass_(zbinProgram("zbin.tile-masks", "ML_ZBIN_TILE_MASKS", spotLights)),
-      statsPass_(zbinProgram("zbin.stats", "ML_ZBIN_STATS", spotLights)),
+      statsPass_(gl::Program("zbin.stats", {{GL_COMPUTE_SHADER, "zbin_assign.comp"}},
+                             {{"ML_ZBIN_STATS", "1"}, spotLightsDefine(spotLights), depthSamples})),
       params_("zbin.params", 16) {}
 
 void ZBinAssignment::build(const FrameContext& ctx, const ClusterGrid& grid, std::size_t maxStorageBlock) {
