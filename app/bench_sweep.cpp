@@ -480,6 +480,10 @@ Sweep expandSweep(const json& doc, const json& overrides, const std::vector<std:
 
         // Odometer over the axes, the last axis turning fastest.
         std::vector<std::size_t> digit(axes.size(), 0);
+        // --msaa above 1 where every method stores one sample per pixel is refused, as by
+        // `render`; beside naive or forward-plus those methods run at one sample.
+        std::string msaaRefused;
+        bool msaaTaken = false;
         std::set<std::string> seen;
         for (bool more = true; more;) {
             BenchPoint p;
@@ -513,6 +517,9 @@ Sweep expandSweep(const json& doc, const json& overrides, const std::vector<std:
             if (!p.deferred) p.frame.resolve = FrameOptions{}.resolve;
             if (!p.gbuffered) p.frame.gbuffer = FrameOptions{}.gbuffer;
             if (!p.forwardPlus) p.frame.prepass = FrameOptions{}.prepass;
+            if (p.frame.msaa > 1 && p.gbuffered)
+                msaaRefused = "--msaa " + std::to_string(p.frame.msaa) + ": " + msaaRefusal(parseMethod(p.frame.method));
+            if (p.frame.msaa > 1 && !p.gbuffered) msaaTaken = true;
             if (p.gbuffered) p.frame.msaa = FrameOptions{}.msaa;
             for (std::size_t i = 0; i < axes.size(); ++i)
                 if (applies(*axes[i].first, p)) key[axes[i].first->info.key] = axes[i].second[digit[i]];
@@ -532,6 +539,7 @@ Sweep expandSweep(const json& doc, const json& overrides, const std::vector<std:
                 digit[i] = 0;
             }
         }
+        if (!msaaRefused.empty() && !msaaTaken) throw std::invalid_argument(at + ": " + msaaRefused);
     }
     if (sweep.points.empty()) throw std::invalid_argument(where + ": the sweep has no points");
     return sweep;

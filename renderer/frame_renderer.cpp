@@ -10,7 +10,8 @@ FrameRenderer::FrameRenderer(const Scene& scene, const std::vector<Light>& light
     : settings_(settings),
       scene_(scene),
       lights_(lights),
-      targets_(settings.width, settings.height, false),
+      // Sampled as asked from the start, so a size the GPU cannot hold is refused before allocation.
+      targets_(settings.width, settings.height, false, TargetSampling{settings.method.msaa, settings.supersample}),
       frameUniformBuffer_("frame.uniforms", sizeof(FrameUniforms)),
       animate_(lights_.hasSpots()),
       method_(createMethod(forLights(settings.method), scene_.materialFeatures())),

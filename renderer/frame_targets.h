@@ -26,7 +26,10 @@ struct TargetSampling {
 
 class FrameTargets {
 public:
-    FrameTargets(int width, int height, bool stencil) : stencil_(stencil) { resize(width, height); }
+    FrameTargets(int width, int height, bool stencil, TargetSampling sampling = {})
+        : stencil_(stencil), sampling_(sampling) {
+        resize(width, height);
+    }
     // The output size; throws std::invalid_argument when the GPU cannot hold the drawn size.
     void resize(int width, int height);
     // Depth with an 8-bit stencil (only Forward+'s pre-pass uses it), or 32-bit float depth
