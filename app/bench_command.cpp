@@ -30,6 +30,7 @@ struct BenchOptions {
     std::optional<int> warmup, timedFrames;
     std::optional<long long> frame;
     std::optional<double> naiveBudget;
+    std::string reference;
     std::string outDir = "bench-results";
     std::string name;
     std::string backend = "auto";
@@ -85,6 +86,13 @@ Sweep sweepFromOptions(const BenchOptions& o, nlohmann::json& overrides) {
         if (!(*o.naiveBudget > 0.0)) throw std::invalid_argument("--naive-budget: must be > 0 (pixels x lights)");
         sweep.run.naiveBudget = *o.naiveBudget;
     }
+    if (!o.reference.empty()) {
+        try {
+            sweep.run.supersampledReference = parseReferenceSetting(o.reference);
+        } catch (const std::invalid_argument& e) {
+            throw std::invalid_argument("--reference " + o.reference + ": " + e.what());
+        }
+    }
     return sweep;
 }
 
@@ -94,6 +102,7 @@ nlohmann::ordered_json runJson(const RunSettings& run, const BenchRunner& runner
     r["timed_frames"] = run.timedFrames;
     r["frame_index"] = run.firstFrame;
     r["naive_budget_pixel_lights"] = runner.naiveBudget();
+    r["reference"] = referenceSettingName(run.supersampledReference);
     r["clock"] = timingClockName(runner.clock());
     return r;
 }
@@ -226,6 +235,9 @@ void addBenchCommand(CLI::App& app, int& exitCode) {
                                           kNaiveBudgetSoftware);
                             return std::string(buf);
                         }() + ")");
+    run->add_option("--reference", o->reference,
+                    "naive (the accuracy columns), or supersampled:K: also aa_rmse and aa_psnr_db against naive at K x K "
+                    "samples per pixel, box-filtered (default: the sweep's run.reference, else naive)");
     cmd->add_option("--out", o->outDir, "directory for <name>.csv and <name>.json")->capture_default_str();
     cmd->add_option("--name", o->name, "file name stem (default: the sweep's name)");
     cmd->add_option("--backend", o->backend, "offscreen GL: auto (EGL, then OSMesa), egl, osmesa")->capture_default_str();

@@ -131,8 +131,23 @@ constexpr const char* kSpots = R"json({
   ]
 })json";
 
+// antialiasing: issue 16's MSAA on the GPU: every method at 1, 2, 4 and 8 samples where it takes
+// them, each against naive at the same count and against naive supersampled 4 x 4 (the
+// time_vs_aliasing chart). The reference is 10240x5760 x 65,536 lights, about 4e12 pixel-lights.
+constexpr const char* kAntialiasing = R"json({
+  "name": "antialiasing",
+  "description": "MSAA 1/2/4/8 for naive and Forward+ (deferred and visibility at one sample) at 2560x1440 and 65,536 lights of radius overlap:32, each point against naive at its sample count and against naive supersampled 4 x 4.",
+  "run": {"warmup": 2, "timed_frames": 5, "frame": 60, "naive_budget": 5e12, "reference": "supersampled:4"},
+  "defaults": {"scene": "atrium", "size": "2560x1440", "lights": 65536, "radius": "overlap:32", "assign": "exact"},
+  "experiments": [
+    {"name": "msaa", "description": "every method at every sample count it takes",
+     "method": ["naive", "forward-plus", "deferred", "visibility"], "msaa": [1, 2, 4, 8]}
+  ]
+})json";
+
 constexpr Preset kPresets[] = {{"quick", kQuick},     {"seeds", kSeeds},     {"scale", kScale},
-                               {"culling", kCulling}, {"options", kOptions}, {"spots", kSpots}};
+                               {"culling", kCulling}, {"options", kOptions}, {"spots", kSpots},
+                               {"antialiasing", kAntialiasing}};
 
 }  // namespace
 

@@ -109,6 +109,7 @@ BenchRow configColumns(const BenchPoint& p, int index, std::uint32_t frame, cons
     row["normal_cones"] = p.gbuffered && !p.capped ? nlohmann::ordered_json(o.normalCones) : nlohmann::ordered_json();
     row["gbuffer"] = p.gbuffered ? nlohmann::ordered_json(o.gbuffer) : nlohmann::ordered_json();
     row["prepass"] = p.forwardPlus ? nlohmann::ordered_json(o.prepass) : nlohmann::ordered_json();
+    row["msaa"] = p.gbuffered ? nlohmann::ordered_json() : nlohmann::ordered_json(o.msaa);
     row["resolve"] = p.deferred ? nlohmann::ordered_json(o.resolve) : nlohmann::ordered_json();
     row["draw"] = o.draw;
     row["backface_culling"] = o.backfaceCulling;
@@ -212,13 +213,15 @@ void BenchRunner::measureInto(BenchRow& row, const BenchPoint& point) {
     // A reused renderer holds the last camera of the previous point's orbit.
     renderer_->setCamera(f.settings.camera);
 
-    // The reference: naive forward on the same frame (same lights, same animation step).
-    const std::string referenceKey = key + "@frame" + std::to_string(first);
+    // The reference: naive forward on the same frame (same lights, same animation step), with
+    // the point's MSAA, so the accuracy columns keep measuring the method against naive alone.
+    const std::string referenceKey = key + "@frame" + std::to_string(first) + "@msaa" + std::to_string(o.msaa);
     const ReferenceImages* reference = references_.find(referenceKey);
     bool referenceIsSelf = false;
     if (!naive && !reference && pixelLights <= naiveBudget_) {
         MethodSettings naiveSettings;
         naiveSettings.kind = MethodKind::Naive;
+        naiveSettings.msaa = f.settings.method.msaa;
         renderer_->setMethod(naiveSettings);
         renderer_->render(first);
         reference = &references_.insert(referenceKey, ReferenceImages{renderer_->readHdr(), renderer_->readLdr()});
@@ -297,6 +300,8 @@ void BenchRunner::measureInto(BenchRow& row, const BenchPoint& point) {
         addNote(row, "no naive reference: " + overBudget);
     }
 
+    if (run_.supersampledReference > 0) compareWithSupersampled(row, f, key, referenceIsSelf ? reference->hdr : hdr);
+
     // What the light assignment built on that frame.
     row["dropped_lights"] = 0;
     if (const ClusteredLighting* clustering = renderer_->method().clustering()) {
@@ -327,6 +332,37 @@ void BenchRunner::measureInto(BenchRow& row, const BenchPoint& point) {
     row["gbuffer_bytes"] = renderer_->method().extraTargetBytes();
     row["target_bytes"] = renderer_->targets().bytes();
     row["light_bytes"] = renderer_->lights().bytes();
+}
+
+void BenchRunner::compareWithSupersampled(BenchRow& row, const PreparedFrame& f, const std::string& frameKey,
+                                          const FloatImage& hdr) {
+    const int k = run_.supersampledReference;
+    row["aa_reference"] = referenceSettingName(k);
+    const double pixelLights = static_cast<double>(f.settings.width) * f.settings.height * k * k * static_cast<double>(f.lights.size());
+    if (pixelLights > naiveBudget_) {
+        addNote(row, "no supersampled reference: " + scientific(pixelLights) + " pixel-lights > naive budget " + scientific(naiveBudget_));
+        return;
+    }
+    const std::string key = frameKey + "@frame" + std::to_string(run_.firstFrame) + "@supersampled" + std::to_string(k);
+    const ReferenceImages* reference = references_.find(key);
+    if (!reference) {
+        // A renderer of its own: the targets are K x K times the frame's, needed for one frame.
+        FrameSettings settings = f.settings;
+        settings.method = MethodSettings{};
+        settings.supersample = k;
+        settings.timing = false;
+        try {
+            FrameRenderer supersampled(f.scene, f.lights, settings);
+            supersampled.render(run_.firstFrame);
+            reference = &references_.insert(key, ReferenceImages{supersampled.readHdr(), supersampled.readLdr()});
+        } catch (const std::invalid_argument& e) {  // a size past the GPU's texture limit
+            addNote(row, std::string("no supersampled reference: ") + e.what());
+            return;
+        }
+    }
+    const ImageDifference d = compareImages(hdr, reference->hdr);
+    row["aa_rmse"] = d.rmse;
+    row["aa_psnr_db"] = finiteOr(d.psnrDb, "inf");
 }
 
 std::string describeResult(const BenchRow& row) {

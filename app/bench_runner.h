@@ -41,6 +41,9 @@ public:
 private:
     const Scene& sceneFor(const FrameOptions& options);
     void measureInto(BenchRow& row, const BenchPoint& point);
+    // aa_rmse, aa_psnr_db: the point's HDR frame against naive at K x K samples per pixel
+    // (RunSettings::supersampledReference), cached per frame as the naive reference is.
+    void compareWithSupersampled(BenchRow& row, const PreparedFrame& frame, const std::string& frameKey, const FloatImage& hdr);
 
     RunSettings run_;
     GlInfo info_;

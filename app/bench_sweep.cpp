@@ -87,7 +87,7 @@ RadiusSpec asRadius(const json& v) {
 // ---- scene, a light set and a naive reference; method-level axes innermost.
 
 enum class ValueKind { Text, Integer, Number, Boolean, Radius, NumberOrAuto };
-enum class Applies { Always, Clustered, Deferred, GBuffered, ForwardPlus, Capped, ExactGBuffered };
+enum class Applies { Always, Clustered, Deferred, GBuffered, ForwardPlus, Capped, ExactGBuffered, Forward };
 
 struct AxisDef {
     SweepAxis info;
@@ -178,6 +178,9 @@ const std::vector<AxisDef>& axisDefs() {
          }},
         {{"prepass", "--prepass", "forward-plus depth pre-pass: on, off"}, ValueKind::Boolean, Applies::ForwardPlus,
          [](BenchPoint& p, const json& v) { p.frame.prepass = asBoolean(v) ? "on" : "off"; }},
+        {{"msaa", "--msaa", "samples per pixel of naive and forward-plus: 1, 2, 4, 8 (deferred and visibility store one)"},
+         ValueKind::Integer, Applies::Forward,
+         [](BenchPoint& p, const json& v) { p.frame.msaa = validMsaa(asInteger(v, 1, 8)); }},
         {{"resolve", "--resolve", "deferred lighting pass: compute or fragment"}, ValueKind::Text, Applies::Deferred,
          [](BenchPoint& p, const json& v) {
              (void)parseResolve(asText(v));
@@ -250,6 +253,7 @@ bool applies(const AxisDef& axis, const BenchPoint& p) {
     case Applies::ForwardPlus: return p.forwardPlus;
     case Applies::Capped: return p.capped;
     case Applies::ExactGBuffered: return p.gbuffered && !p.capped;  // normal_cones: exact lists of a G-buffer
+    case Applies::Forward: return !p.gbuffered;                       // msaa: naive and forward-plus
     }
     return true;
 }
@@ -269,7 +273,7 @@ RunSettings parseRun(const json& run, const std::string& where) {
     RunSettings r;
     if (run.is_null()) return r;
     if (!run.is_object()) throw std::invalid_argument(where + ": \"run\" must be an object");
-    requireOnly(run, {"warmup", "timed_frames", "frame", "naive_budget"}, where + ", run");
+    requireOnly(run, {"warmup", "timed_frames", "frame", "naive_budget", "reference"}, where + ", run");
     auto field = [&](const char* key, auto&& read) {
         if (!run.contains(key)) return;
         try {
@@ -286,6 +290,7 @@ RunSettings parseRun(const json& run, const std::string& where) {
         if (!(b > 0.0)) throw std::invalid_argument("must be > 0 (pixels x lights)");
         r.naiveBudget = b;
     });
+    field("reference", [&](const json& v) { r.supersampledReference = parseReferenceSetting(asText(v)); });
     return r;
 }
 
@@ -304,6 +309,19 @@ void validatePoint(const BenchPoint& p) {
 }
 
 }  // namespace
+
+int parseReferenceSetting(const std::string& text) {
+    if (text == "naive") return 0;
+    if (text.rfind("supersampled:", 0) == 0) {
+        const std::string k = text.substr(13);
+        if (k.size() == 1 && k[0] >= '2' && k[0] <= '8') return k[0] - '0';
+    }
+    throw std::invalid_argument("expected naive or supersampled:K with K from 2 to 8 (naive at K x K samples per pixel)");
+}
+
+std::string referenceSettingName(int supersampled) {
+    return supersampled > 0 ? "supersampled:" + std::to_string(supersampled) : "naive";
+}
 
 std::string RadiusSpec::text() const {
     switch (kind) {
@@ -334,6 +352,7 @@ std::string describePoint(const BenchPoint& p) {
     if (p.deferred) s += ", " + o.resolve + " resolve";
     if (p.gbuffered) s += ", " + o.gbuffer + " G-buffer";
     if (p.forwardPlus && o.prepass == "off") s += ", no pre-pass";
+    if (o.msaa > 1) s += ", MSAA " + std::to_string(o.msaa);
     if (o.specular == "off") s += ", specular off";
     if (o.bloom) s += ", bloom";
     return s;
@@ -463,6 +482,10 @@ Sweep expandSweep(const json& doc, const json& overrides, const std::vector<std:
 
         // Odometer over the axes, the last axis turning fastest.
         std::vector<std::size_t> digit(axes.size(), 0);
+        // --msaa above 1 where every method stores one sample per pixel is refused, as by
+        // `render`; beside naive or forward-plus those methods run at one sample.
+        std::string msaaRefused;
+        bool msaaTaken = false;
         std::set<std::string> seen;
         for (bool more = true; more;) {
             BenchPoint p;
@@ -496,6 +519,10 @@ Sweep expandSweep(const json& doc, const json& overrides, const std::vector<std:
             if (!p.deferred) p.frame.resolve = FrameOptions{}.resolve;
             if (!p.gbuffered) p.frame.gbuffer = FrameOptions{}.gbuffer;
             if (!p.forwardPlus) p.frame.prepass = FrameOptions{}.prepass;
+            if (p.frame.msaa > 1 && p.gbuffered)
+                msaaRefused = "--msaa " + std::to_string(p.frame.msaa) + ": " + msaaRefusal(parseMethod(p.frame.method));
+            if (p.frame.msaa > 1 && !p.gbuffered) msaaTaken = true;
+            if (p.gbuffered) p.frame.msaa = FrameOptions{}.msaa;
             for (std::size_t i = 0; i < axes.size(); ++i)
                 if (applies(*axes[i].first, p)) key[axes[i].first->info.key] = axes[i].second[digit[i]];
             try {
@@ -514,6 +541,7 @@ Sweep expandSweep(const json& doc, const json& overrides, const std::vector<std:
                 digit[i] = 0;
             }
         }
+        if (!msaaRefused.empty() && !msaaTaken) throw std::invalid_argument(at + ": " + msaaRefused);
     }
     if (sweep.points.empty()) throw std::invalid_argument(where + ": the sweep has no points");
     return sweep;

@@ -50,7 +50,14 @@ struct RunSettings {
     int timedFrames = 10;
     std::uint32_t firstFrame = 60;      // animation frame index of the first timed frame and of the accuracy frame
     std::optional<double> naiveBudget;  // pixels x lights a naive frame may cost; unset: by renderer
+    // "reference": "supersampled:K" (--reference): every point is also compared with naive drawn
+    // at K x K samples per pixel, box-filtered (aa_rmse, aa_psnr_db); 0: "naive" alone.
+    int supersampledReference = 0;
 };
+
+// "naive" -> 0, "supersampled:K" (K in 2..8) -> K. Throws std::invalid_argument with the reason.
+int parseReferenceSetting(const std::string& text);
+std::string referenceSettingName(int supersampled);
 
 
 struct BenchPoint {
@@ -60,7 +67,7 @@ struct BenchPoint {
     bool clustered = false;   // forward-plus or deferred: the grid axes apply
     bool deferred = false;    // resolve applies
     bool gbuffered = false;   // deferred or visibility: gbuffer and normal_cones apply
-    bool forwardPlus = false; // prepass applies
+    bool forwardPlus = false; // prepass applies (and msaa with naive: !gbuffered)
     bool capped = false;      // max_per_cluster applies
 };
 

@@ -49,6 +49,8 @@ void addFrameOptions(CLI::App& cmd, FrameOptions& o) {
                      "naive and forward-plus have none and ignore it")->capture_default_str();
     grid->add_option("--prepass", o.prepass, "forward-plus depth pre-pass: on, or off (one LESS pass shading overdraw; "
                      "fitted slicing falls back to log, --active-only is refused)")->capture_default_str();
+    cmd.add_option("--msaa", o.msaa, "samples per pixel: 1, 2, 4 or 8 (naive and forward-plus; resolved in linear HDR "
+                   "before the tonemap; deferred and visibility store one sample per pixel and refuse it)")->capture_default_str();
     cmd.add_option("--view", o.view, "shaded, light-count, slices, clusters, overflow, albedo, normal, depth")->capture_default_str();
     cmd.add_option("--lights", o.lights, "number of generated lights, added to the scene file's own (default: 1024, or 0 for a file with lights)");
     cmd.add_option("--spot-share", o.spotShare, "share of the generated lights that are spots, in [0, 1] (random directions)")->capture_default_str();
@@ -155,6 +157,14 @@ PreparedFrame prepareFrame(const FrameOptions& o, const Scene* loaded) {
         if (clustering.grid.slicing == Slicing::Fitted)
             f.warnings.push_back("--prepass off: no depth exists before the light lists, so fitted slicing falls back to log");
     }
+    f.settings.method.msaa = validMsaa(o.msaa);
+    if (const char* refusal = msaaRefusal(f.settings.method.kind); refusal && o.msaa > 1)
+        throw std::invalid_argument("--msaa " + std::to_string(o.msaa) + ": " + refusal);
+    if (o.supersample < 1 || o.supersample > 8)
+        throw std::invalid_argument("--supersample " + std::to_string(o.supersample) + ": must be between 1 and 8");
+    if (o.supersample > 1 && o.msaa > 1)
+        throw std::invalid_argument("--supersample with --msaa: choose one (the supersampled reference shades every drawn pixel once)");
+    f.settings.supersample = static_cast<int>(o.supersample);
     if (!(std::isfinite(o.bloomThreshold) && o.bloomThreshold >= 0.0f))
         throw std::invalid_argument("--bloom-threshold: must be a finite number >= 0");
     if (!(std::isfinite(o.bloomStrength) && o.bloomStrength >= 0.0f))

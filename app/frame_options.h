@@ -33,6 +33,8 @@ struct FrameOptions {
     std::string resolve = "compute";
     std::string gbuffer = "packed";
     std::string prepass = "on";
+    long long msaa = 1;        // --msaa: naive and forward-plus
+    long long supersample = 1; // --supersample (render only): drawn at K times the size, box-filtered down
     std::string view = "shaded";
     std::optional<long long> lights;  // generated lights; default 1024, or 0 when the scene file has lights
     float spotShare = 0.0f;           // share of generated lights that are spots

@@ -202,6 +202,9 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
     cmd->add_option("--out", options->out,
                     "tonemapped 8-bit sRGB PNG; a sequence needs a frame-number field, e.g. shots/frame_%04d.png")
         ->capture_default_str();
+    cmd->add_option("--supersample", options->frame.supersample,
+                    "draw at K times the size (K = 1..8) and box-filter down in linear HDR before the tonemap: with naive, "
+                    "the anti-aliased reference")->capture_default_str();
     cmd->add_option("--out-float", options->outFloat, "linear HDR before the tonemap, as PFM (the same pattern rule as --out)");
     cmd->add_flag("--overwrite", options->overwrite, "replace existing files of a sequence, --video or --timing-csv");
     cmd->add_option("--camera-path", options->cameraPath,

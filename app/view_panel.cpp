@@ -113,6 +113,21 @@ void lightsSection(ViewSettings& s, const ViewStatistics& stats, PanelEdits& edi
     ImGui::SliderFloat("exposure", &s.exposure, 0.05f, 20.0f, "%.2f", ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
 }
 
+// --msaa: greyed out, with the reason, for the methods that store one sample per pixel.
+void msaaControl(ViewSettings& s, PanelEdits& edits) {
+    const char* refusal = msaaRefusal(s.method.kind);
+    static const std::vector<std::string> levels = {"1x (off)", "2x", "4x", "8x"};
+    int level = s.method.msaa >= 8 ? 3 : s.method.msaa >= 4 ? 2 : s.method.msaa >= 2 ? 1 : 0;
+    ImGui::BeginDisabled(refusal != nullptr);
+    if (comboOf("MSAA", level, levels)) {
+        s.method.msaa = 1 << level;
+        edits.method = true;
+    }
+    ImGui::EndDisabled();
+    if (refusal && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) ImGui::SetTooltip("%s", refusal);
+    if (refusal && s.method.msaa > 1) ImGui::TextColored(kDim, "MSAA off: %s", refusal);
+}
+
 // The shading options (issue 5): closed at start, so the panel keeps its height.
 void shadingSection(ViewSettings& s, const ViewStatistics& stats, PanelEdits& edits) {
     // Scene submission (--draw): closed with the shading options, so the panel keeps its height.
@@ -137,6 +152,7 @@ void shadingSection(ViewSettings& s, const ViewStatistics& stats, PanelEdits& ed
     ImGui::BeginDisabled(s.method.kind != MethodKind::ForwardPlus);
     if (ImGui::Checkbox("depth pre-pass (Forward+)", &s.method.prepass)) edits.method = true;
     ImGui::EndDisabled();
+    msaaControl(s, edits);
     ImGui::Checkbox("specular (Blinn-Phong)", &s.specular);
     ImGui::Checkbox("bloom", &s.bloom.enabled);
     ImGui::BeginDisabled(!s.bloom.enabled);
@@ -323,6 +339,7 @@ void keysSection() {
 MethodSettings effectiveMethod(const MethodSettings& chosen) {
     MethodSettings m = chosen;
     if (m.kind == MethodKind::Naive) m.clustering.view = DebugView::Shaded;
+    if (msaaRefusal(m.kind)) m.msaa = 1;  // kept in the panel for the methods that take it
     if ((m.kind != MethodKind::Deferred && m.kind != MethodKind::Visibility) || m.clustering.assign == AssignMode::Capped)
         m.clustering.normalCones = false;
     return m;

@@ -78,7 +78,7 @@ struct PanelEdits {
 PanelEdits drawViewPanel(ViewSettings& settings, const ViewStatistics& stats);
 
 // The settings a FrameRenderer gets: naive shows no debug view (the tonemap would otherwise
-// treat its shaded colour as a debug colour).
+// treat its shaded colour as a debug colour); deferred and visibility draw without MSAA.
 MethodSettings effectiveMethod(const MethodSettings& chosen);
 
 }  // namespace ml::app

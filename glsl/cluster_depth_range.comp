@@ -6,9 +6,9 @@
 #include "include/frame_uniforms.glsl"
 #define ML_CLUSTER_GRID_WRITABLE
 #include "include/cluster_grid.glsl"
+#include "include/depth_samples.glsl"
 
 layout(local_size_x = ML_SCREEN_TILE, local_size_y = ML_SCREEN_TILE) in;
-layout(binding = ML_TEX_DEPTH) uniform sampler2D u_depth;
 uniform uint u_phase;
 
 shared uint s_min[ML_SCREEN_TILE * ML_SCREEN_TILE];
@@ -32,20 +32,22 @@ void main() {
     // Each invocation reduces a block of ML_DEPTH_RANGE_BLOCK^2 pixels first: a workgroup per
     // 8x8 pixels made 57,600 workgroups at 2560x1440, whose barriers cost more than the reads.
     ivec2 first = ivec2(gl_GlobalInvocationID.xy) * ML_DEPTH_RANGE_BLOCK;
-    ivec2 size = textureSize(u_depth, 0);
+    ivec2 size = depthSize();
     uint lane = gl_LocalInvocationIndex;
-    // View depth of every pixel, as the shading passes compute it (so the range holds each one
-    // exactly, rounding included).
+    // View depth of every pixel (every sample with --msaa), as the shading passes compute it
+    // (so the range holds each one exactly, rounding included).
     uint lo = 0xFFFFFFFFu, hi = 0u;
     for (int y = 0; y < ML_DEPTH_RANGE_BLOCK; ++y) {
         for (int x = 0; x < ML_DEPTH_RANGE_BLOCK; ++x) {
             ivec2 p = first + ivec2(x, y);
             if (any(greaterThanEqual(p, size))) continue;
-            float d = texelFetch(u_depth, p, 0).r;
-            if (d < 1.0) {
-                uint bits = floatBitsToUint(viewDepthFromWindowDepth(d));
-                lo = min(lo, bits);
-                hi = max(hi, bits);
+            for (int s = 0; s < ML_MSAA_SAMPLES; ++s) {
+                float d = depthSample(p, s);
+                if (d < 1.0) {
+                    uint bits = floatBitsToUint(viewDepthFromWindowDepth(d));
+                    lo = min(lo, bits);
+                    hi = max(hi, bits);
+                }
             }
         }
     }

@@ -14,8 +14,27 @@
 #include "include/normal_bins.glsl"
 #include "include/cluster_lists.glsl"
 #include "include/debug_views.glsl"
+#include "include/every_light.glsl"
 
 layout(location = 0) out vec4 o_color;
+
+#ifndef ML_MSAA_SAMPLES
+#define ML_MSAA_SAMPLES 1
+#endif
+#if ML_MSAA_SAMPLES > 1 && !defined(ML_ZBIN)
+layout(std430, binding = ML_SSBO_CLUSTER_ACTIVE) readonly buffer ClusterActive { uint clusterActive[]; };
+// With --msaa a fragment is shaded once, at the pixel centre, which may lie off the samples it
+// covers (its surface extended to the centre), so in a cluster no sample marked: --active-only
+// gave that cluster no lights. Such a fragment (a few on edges) loops over every light instead.
+bool clusterListSkipped(uint cluster) { return grid.options.z != 0u && clusterActive[cluster] == 0u; }
+#else
+bool clusterListSkipped(uint cluster) { return false; }
+#endif
+
+vec3 shadeLights(SurfacePoint s, vec3 viewDir, uint cluster, float viewDepth) {
+    if (clusterListSkipped(cluster)) return addEveryLight(s, viewDir, vec3(0.0));
+    return shadeClusterLights(s, viewDir, cluster, viewDepth);
+}
 
 void main() {
     float alpha;
@@ -24,11 +43,11 @@ void main() {
     float viewDepth = -(u_view * vec4(v_worldPos, 1.0)).z;
     uint cluster = clusterForFragment(gl_FragCoord.xy, viewDepth);
 #if ML_TRANSPARENT
-    o_color = vec4(shadeUnclustered(s, viewDir) + shadeClusterLights(s, viewDir, cluster, viewDepth), alpha);
+    o_color = vec4(shadeUnclustered(s, viewDir) + shadeLights(s, viewDir, cluster, viewDepth), alpha);
 #else
     uint view = grid.options.w;
     vec3 color = vec3(0.0);
-    if (view == ML_VIEW_SHADED || view == ML_VIEW_OVERFLOW) color = shadeUnclustered(s, viewDir) + shadeClusterLights(s, viewDir, cluster, viewDepth);
+    if (view == ML_VIEW_SHADED || view == ML_VIEW_OVERFLOW) color = shadeUnclustered(s, viewDir) + shadeLights(s, viewDir, cluster, viewDepth);
     o_color = vec4(debugViewColor(view, s, cluster, viewDepth, color), 1.0);
 #endif
 }

@@ -8,6 +8,7 @@
 #include "include/sun_lights.glsl"
 #include "include/material.glsl"
 #include "include/scene_fragment.glsl"
+#include "include/every_light.glsl"
 
 layout(location = 0) out vec4 o_color;
 
@@ -15,11 +16,5 @@ void main() {
     float alpha;
     SurfacePoint s = fragmentSurfaceAndAlpha(alpha);
     vec3 viewDir = normalize(u_cameraPos.xyz - s.position);
-    vec3 color = shadeUnclustered(s, viewDir);
-    uint n = lightCount();
-    for (uint i = 0u; i < n; ++i) {
-        Light l = lights[i];
-        color += shadeLight(s, viewDir, l.positionRadius, l.colorCosInner, lightCone(i));
-    }
-    o_color = vec4(color, ML_TRANSPARENT != 0 ? alpha : 1.0);
+    o_color = vec4(addEveryLight(s, viewDir, shadeUnclustered(s, viewDir)), ML_TRANSPARENT != 0 ? alpha : 1.0);
 }

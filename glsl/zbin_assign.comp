@@ -125,8 +125,8 @@ void main() {
 }
 
 #elif defined(ML_ZBIN_STATS)
-layout(binding = ML_TEX_DEPTH) uniform sampler2D u_depth;
-// Per workgroup: visible pixels, lights walked, lights passing the tile bit.
+#include "include/depth_samples.glsl"
+// Per workgroup: visible samples (pixels without --msaa), lights walked, lights passing the tile bit.
 layout(std430, binding = ML_SSBO_ZBIN_STATS) writeonly buffer ZBinStats { uvec4 groupStats[]; };
 shared uint s_pixels, s_walked, s_passed;
 
@@ -135,8 +135,9 @@ void main() {
     barrier();
     ivec2 p = ivec2(gl_GlobalInvocationID.xy);
     if (all(lessThan(p, ivec2(u_viewport.xy)))) {
-        float depth = texelFetch(u_depth, p, 0).r;
-        if (depth < 1.0) {
+        for (int i = 0; i < ML_MSAA_SAMPLES; ++i) {
+            float depth = depthSample(p, i);
+            if (depth >= 1.0) continue;
             float viewDepth = viewDepthFromWindowDepth(depth);
             uvec2 t = tileForPixel(vec2(p) + 0.5);
             uvec2 range = zbinRanges[zbinForDepth(viewDepth)];

@@ -48,13 +48,13 @@ std::size_t BloomPass::bytes() const {
 
 void BloomPass::run(const FrameTargets& targets, const BloomSettings& settings, PassTimer& timer) {
     if (!settings.enabled) return;
-    prepare(targets.width(), targets.height());
+    prepare(targets.outputWidth(), targets.outputHeight());
     const GLuint halfX = gl::groupsFor(half_[0].width(), ML_BLOOM_TILE), halfY = gl::groupsFor(half_[0].height(), ML_BLOOM_TILE);
     {
         auto pass = timer.pass("bloom.bright-pass");
         bright_.use();
         bright_.set("u_threshold", settings.threshold);
-        glBindImageTexture(ML_IMG_HDR, targets.hdr().id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
+        glBindImageTexture(ML_IMG_HDR, targets.outputHdr().id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
         glBindImageTexture(ML_IMG_BLOOM_OUT, half_[0].id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
         glDispatchCompute(halfX, halfY, 1);
         glMemoryBarrier(kImageToImage);
@@ -74,9 +74,9 @@ void BloomPass::run(const FrameTargets& targets, const BloomSettings& settings, 
         auto pass = timer.pass("bloom.composite");
         composite_.use();
         composite_.set("u_strength", settings.strength);
-        glBindImageTexture(ML_IMG_HDR, targets.hdr().id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
+        glBindImageTexture(ML_IMG_HDR, targets.outputHdr().id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
         glBindImageTexture(ML_IMG_BLOOM_IN, half_[0].id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
-        glDispatchCompute(gl::groupsFor(targets.width(), ML_BLOOM_TILE), gl::groupsFor(targets.height(), ML_BLOOM_TILE), 1);
+        glDispatchCompute(gl::groupsFor(targets.outputWidth(), ML_BLOOM_TILE), gl::groupsFor(targets.outputHeight(), ML_BLOOM_TILE), 1);
         glMemoryBarrier(kImageToImage | GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
     }
 }

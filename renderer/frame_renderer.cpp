@@ -10,13 +10,19 @@ FrameRenderer::FrameRenderer(const Scene& scene, const std::vector<Light>& light
     : settings_(settings),
       scene_(scene),
       lights_(lights),
-      targets_(settings.width, settings.height, false),
+      // Sampled as asked from the start, so a size the GPU cannot hold is refused before allocation.
+      targets_(settings.width, settings.height, false, TargetSampling{settings.method.msaa, settings.supersample}),
       frameUniformBuffer_("frame.uniforms", sizeof(FrameUniforms)),
       animate_(lights_.hasSpots()),
       method_(createMethod(forLights(settings.method), scene_.materialFeatures())),
       timer_(settings.timing, settings.clock, settings.readback) {
     settings_.method = forLights(settings_.method);
+    configureTargets();
+}
+
+void FrameRenderer::configureTargets() {
     targets_.setStencil(method_->needsStencil());
+    targets_.setSampling(TargetSampling{settings_.method.msaa, settings_.supersample});
 }
 
 void FrameRenderer::resize(int width, int height) {
@@ -33,7 +39,7 @@ MethodSettings FrameRenderer::forLights(MethodSettings method) const {
 void FrameRenderer::setMethod(const MethodSettings& method) {
     settings_.method = forLights(method);
     method_ = createMethod(settings_.method, scene_.materialFeatures());
-    targets_.setStencil(method_->needsStencil());
+    configureTargets();
 }
 
 void FrameRenderer::setLights(const std::vector<Light>& lights) {
@@ -47,7 +53,8 @@ void FrameRenderer::setLights(const std::vector<Light>& lights) {
 
 void FrameRenderer::updateUniforms(float time) {
     const Camera& c = settings_.camera;
-    const float w = static_cast<float>(settings_.width), h = static_cast<float>(settings_.height);
+    // The size the method draws at (times --supersample); the aspect ratio is the output's.
+    const float w = static_cast<float>(targets_.width()), h = static_cast<float>(targets_.height());
     uniforms_.view = c.view();
     uniforms_.proj = c.projection(w / h);
     uniforms_.viewProj = uniforms_.proj * uniforms_.view;
@@ -77,6 +84,11 @@ std::vector<PassTime> FrameRenderer::renderAt(float time) {
     scene_.setBackfaceCulling(settings_.backfaceCulling);
     scene_.setTransparency(settings_.transparency);
     method_->render(FrameContext{scene_, lights_, frameUniformBuffer_, uniforms_, targets_, timer_});
+    // After the method and anything it drew last (a transparent pass lands in the samples too).
+    if (targets_.sampling().resolves()) {
+        auto pass = timer_.pass(ResolvePass::passName(targets_.sampling()));
+        resolve_.run(targets_);
+    }
     const bool debugView = settings_.method.clustering.view != DebugView::Shaded;
     // After shading, so every method gets the same bloom; debug views' colours get none.
     if (!debugView) bloom_.run(targets_, settings_.bloom, timer_);
@@ -88,7 +100,7 @@ std::vector<PassTime> FrameRenderer::renderAt(float time) {
 }
 
 RgbaImage FrameRenderer::readLdr() const {
-    RgbaImage image{targets_.width(), targets_.height(), {}};
+    RgbaImage image{targets_.outputWidth(), targets_.outputHeight(), {}};
     const std::size_t row = static_cast<std::size_t>(image.width) * 4;
     std::vector<std::uint8_t> bottomUp(row * image.height);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
@@ -101,11 +113,11 @@ RgbaImage FrameRenderer::readLdr() const {
 }
 
 FloatImage FrameRenderer::readHdr() const {
-    FloatImage image{targets_.width(), targets_.height(), {}};
+    FloatImage image{targets_.outputWidth(), targets_.outputHeight(), {}};
     const std::size_t row = static_cast<std::size_t>(image.width) * 3;
     std::vector<float> bottomUp(row * image.height);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glGetTextureImage(targets_.hdr().id(), 0, GL_RGB, GL_FLOAT, static_cast<GLsizei>(bottomUp.size() * sizeof(float)),
+    glGetTextureImage(targets_.outputHdr().id(), 0, GL_RGB, GL_FLOAT, static_cast<GLsizei>(bottomUp.size() * sizeof(float)),
                       bottomUp.data());
     image.pixels.resize(bottomUp.size());
     for (int y = 0; y < image.height; ++y)

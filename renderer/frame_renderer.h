@@ -14,6 +14,7 @@
 #include "renderer/light_buffers.h"
 #include "renderer/methods/shading_method.h"
 #include "renderer/pass_timer.h"
+#include "renderer/resolve_pass.h"
 #include "renderer/scene_gpu.h"
 #include "renderer/tonemap_pass.h"
 
@@ -27,6 +28,9 @@ struct FrameSettings {
     int height = 720;
     Camera camera;
     MethodSettings method;
+    // --supersample K: the method draws at K*width x K*height, box-filtered down in linear HDR
+    // before bloom and the tonemap (the anti-aliased reference, with naive).
+    int supersample = 1;
     float exposure = 1.0f;
     float ambient = 0.03f;
     DrawSubmission draw = DrawSubmission::Direct;  // --draw: how raster passes submit the scene
@@ -74,6 +78,8 @@ public:
 
 private:
     void updateUniforms(float time);
+    // The targets' stencil and sampling as the method needs them.
+    void configureTargets();
     // The method's settings with ClusteringSettings::spotLights from the current lights.
     MethodSettings forLights(MethodSettings method) const;
 
@@ -84,6 +90,7 @@ private:
     gl::Buffer frameUniformBuffer_;
     FrameUniforms uniforms_{};
     AnimateLightsPass animate_;
+    ResolvePass resolve_;
     BloomPass bloom_;
     TonemapPass tonemap_;
     std::unique_ptr<ShadingMethod> method_;

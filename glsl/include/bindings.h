@@ -71,6 +71,7 @@
 #define ML_TEX_GBUFFER1 3
 #define ML_TEX_GBUFFER2 4
 #define ML_TEX_VISIBILITY 5
+#define ML_TEX_RESOLVE_SOURCE 10  // the methods' colour (multisampled or supersampled), read by the resolve
 
 // Image units
 #define ML_IMG_HDR 0

@@ -69,9 +69,9 @@ std::string mib(std::size_t bytes) { return std::to_string((bytes + (1u << 20) -
 ClusteredLighting::ClusteredLighting(const ClusteringSettings& settings, std::uint32_t materialFeatures,
                                      const shaders::Defines& gbufferDefines)
     : settings_(settings),
-      depthRange_(gl::Program::compute("cluster_depth_range.comp")),
+      depthRange_(gl::Program::compute("cluster_depth_range.comp", {depthSamplesDefine(settings)})),
       bounds_(gl::Program::compute("cluster_bounds.comp")),
-      active_(gl::Program::compute("cluster_active.comp")),
+      active_(gl::Program::compute("cluster_active.comp", {depthSamplesDefine(settings)})),
       normalBins_(settings.normalCones ? gl::Program::compute("cluster_normal_bins.comp", gbufferDefines) : gl::Program()),
       ranges_(exactProgram("assign.ranges", "ML_EXACT_RANGES", settings)),
       dispatch_(exactProgram("assign.dispatch", "ML_EXACT_DISPATCH", settings)),
@@ -88,7 +88,7 @@ ClusteredLighting::ClusteredLighting(const ClusteringSettings& settings, std::ui
       counters_("clusters.counters", 32),
       dispatchArgs_("assign.dispatch-args", 16) {
     validateGridConfig(settings.grid);
-    if (settings.assign == AssignMode::ZBin) zbin_ = std::make_unique<ZBinAssignment>(settings.spotLights);
+    if (settings.assign == AssignMode::ZBin) zbin_ = std::make_unique<ZBinAssignment>(settings.spotLights, depthSamplesDefine(settings));
     if (settings.normalCones && settings.assign == AssignMode::Capped)
         throw std::invalid_argument("--normal-cones: needs exact lists (--assign exact or per-cluster), not capped ones");
     GLint64 maxBlock = 0;
@@ -168,6 +168,7 @@ void ClusteredLighting::bindForShading() const {
     counts_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_CLUSTER_COUNTS);
     offsets_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_CLUSTER_OFFSETS);
     indices_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_LIGHT_INDICES);
+    activeFlags_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_CLUSTER_ACTIVE);  // Forward+ with --msaa
     if (zbin_) zbin_->bindForShading();
 }
 
@@ -549,8 +550,12 @@ const char* assignModeName(AssignMode mode) {
     return "?";
 }
 
+std::pair<std::string, std::string> depthSamplesDefine(const ClusteringSettings& settings) {
+    return {"ML_MSAA_SAMPLES", std::to_string(settings.depthSamples)};
+}
+
 shaders::Defines lightListDefines(const ClusteringSettings& settings) {
-    shaders::Defines defines{spotLightsDefine(settings.spotLights)};
+    shaders::Defines defines{spotLightsDefine(settings.spotLights), depthSamplesDefine(settings)};
     if (settings.assign == AssignMode::ZBin) defines.emplace_back("ML_ZBIN", "1");
     if (settings.normalCones) defines.emplace_back("ML_NORMAL_CONES", "1");
     return defines;

@@ -41,10 +41,15 @@ struct ClusteringSettings {
     // Whether the light set holds spots. FrameRenderer sets it from its lights; without spots
     // every program that reads lights compiles its spot paths out (ML_SPOT_LIGHTS 0).
     bool spotLights = true;
+    // Samples per pixel of the depth the passes read (--msaa, Forward+): each compiles with
+    // ML_MSAA_SAMPLES and reads every sample, so the lists hold for every shaded sample.
+    std::uint32_t depthSamples = 1;
 };
 
 // Defines of the shading programs that read the lists (cluster_lists.glsl picks its light loop,
 // and with --normal-cones its list by the normal's bin).
 shaders::Defines lightListDefines(const ClusteringSettings& settings);
+// ML_MSAA_SAMPLES: how many depth samples a pixel has (glsl/include/depth_samples.glsl).
+std::pair<std::string, std::string> depthSamplesDefine(const ClusteringSettings& settings);
 
 }  // namespace ml

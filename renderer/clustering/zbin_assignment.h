@@ -34,7 +34,8 @@ namespace ml {
 
 class ZBinAssignment {
 public:
-    explicit ZBinAssignment(bool spotLights);
+    // depthSamples: ML_MSAA_SAMPLES of the statistics pass, which reads every depth sample.
+    ZBinAssignment(bool spotLights, const std::pair<std::string, std::string>& depthSamples);
 
     // Builds sort, bins and masks for `grid` from the lights; the grid buffer (slicing) must be
     // bound and final. Throws std::runtime_error naming what to lower when the masks cannot

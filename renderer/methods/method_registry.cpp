@@ -1,4 +1,5 @@
 #include <stdexcept>
+#include <string>
 
 #include "renderer/methods/clustered_deferred.h"
 #include "renderer/methods/forward_plus.h"
@@ -44,7 +45,24 @@ std::string methodName(MethodKind kind) {
     return "?";
 }
 
+const char* msaaRefusal(MethodKind kind) {
+    switch (kind) {
+    case MethodKind::Deferred: return "deferred stores one sample per pixel in its G-buffer (MSAA needs naive or forward-plus)";
+    case MethodKind::Visibility:
+        return "visibility stores one triangle id per pixel and lights one sample per pixel (MSAA needs naive or forward-plus)";
+    default: return nullptr;
+    }
+}
+
+int validMsaa(long long samples) {
+    if (samples != 1 && samples != 2 && samples != 4 && samples != 8)
+        throw std::invalid_argument("--msaa " + std::to_string(samples) + ": must be 1, 2, 4 or 8");
+    return static_cast<int>(samples);
+}
+
 std::unique_ptr<ShadingMethod> createMethod(const MethodSettings& settings, std::uint32_t materialFeatures) {
+    if (const char* refusal = msaaRefusal(settings.kind); refusal && settings.msaa > 1)
+        throw std::invalid_argument("--msaa " + std::to_string(settings.msaa) + ": " + refusal);
     switch (settings.kind) {
     case MethodKind::Naive: return std::make_unique<NaiveForward>(materialFeatures, settings.clustering.spotLights);
     case MethodKind::ForwardPlus: {
@@ -52,6 +70,7 @@ std::unique_ptr<ShadingMethod> createMethod(const MethodSettings& settings, std:
         // `render` and greyed out in `view`; here it is ignored).
         ClusteringSettings clustering = settings.clustering;
         clustering.normalCones = false;
+        clustering.depthSamples = static_cast<std::uint32_t>(settings.msaa);
         return std::make_unique<ForwardPlus>(clustering, settings.prepass, materialFeatures);
     }
     case MethodKind::Deferred:

@@ -58,7 +58,15 @@ struct MethodSettings {
     // 3.7 ms instead of 5.3 at 2560x1440, within the accuracy contract (64 dB against naive).
     GBufferFormat gbuffer = GBufferFormat::Packed;
     bool prepass = true;  // forward-plus: depth pre-pass, then shading with EQUAL (off: one LESS pass)
+    // --msaa: samples per pixel of the colour and depth the method draws into (1, 2, 4, 8).
+    int msaa = 1;
 };
+
+// Why a method cannot draw with --msaa above 1, or null where it can (naive, forward-plus).
+const char* msaaRefusal(MethodKind kind);
+// --msaa N: 1, 2, 4 or 8 (GL's sample counts; the GPU's own limit is checked by FrameTargets).
+// Throws std::invalid_argument naming the flag and the value.
+int validMsaa(long long samples);
 
 // Names as the command line spells them.
 const std::vector<std::string>& methodNames();

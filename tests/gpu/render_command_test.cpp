@@ -111,7 +111,15 @@ INSTANTIATE_TEST_SUITE_P(Flags, RenderCommandBadFlag,
                       BadFlag{"--method forward-plus --normal-cones", "--normal-cones"},
                       BadFlag{"--method naive --normal-cones", "--normal-cones"},
                       BadFlag{"--assign capped --normal-cones", "--normal-cones"}, BadFlag{"--method naive --view light-count", "--view"},
-                      BadFlag{"--scene boxes --size 320x180 --assign capped --tiles-x 64", "GL_MAX_SHADER_STORAGE_BLOCK_SIZE"}),
+                      BadFlag{"--scene boxes --size 320x180 --assign capped --tiles-x 64", "GL_MAX_SHADER_STORAGE_BLOCK_SIZE"},
+                      BadFlag{"--method naive --msaa 3", "--msaa 3"}, BadFlag{"--method naive --msaa 16", "--msaa 16"},
+                      BadFlag{"--method forward-plus --msaa 0", "--msaa 0"},
+                      BadFlag{"--method deferred --msaa 4", "one sample per pixel"},
+                      BadFlag{"--method visibility --msaa 2", "one sample per pixel"},
+                      BadFlag{"--method naive --supersample 9", "--supersample 9"},
+                      BadFlag{"--method naive --supersample 0", "--supersample 0"},
+                      BadFlag{"--method naive --supersample 2 --msaa 2", "--supersample"},
+                      BadFlag{"--method naive --scene boxes --lights 1 --size 5000x100 --supersample 4", "texture limit"}),
     [](const auto& info) { return testNameOf(info.param.args); });
 
 }  // namespace

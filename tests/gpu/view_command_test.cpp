@@ -55,6 +55,28 @@ TEST(ViewCommand, ScreenshotMatchesRenderForEveryMethod) {
     EXPECT_GT(compareImages(readPng(dir + "/view_naive.png"), readPng(dir + "/render_11.png")).maxAbs, kMaxAbs);
 }
 
+// --msaa in the window: the same resolved frame as `render --msaa`.
+TEST(ViewCommand, MsaaScreenshotMatchesRender) {
+    REQUIRE_XVFB();
+    const std::string dir = testOutputDir().string();
+    const std::string common = "--scene boxes --detail 0.5 --size 160x90 --lights 64 --seed 3 --method forward-plus --msaa 4";
+    std::string output;
+    ASSERT_EQ(runViewUnderXvfb(common + " --frames 12 --screenshot " + dir + "/view.png", output), 0) << output;
+    ASSERT_EQ(runManylights("render " + common + " --frames 12 --out " + dir + "/render.png", output), 0) << output;
+    const RgbaImage view = readPng(dir + "/view.png");
+    const RgbaImage render = readPng(dir + "/render.png");
+    EXPECT_LE(compareImages(view, render).maxAbs, kMaxAbs) << "images in " << writeFailureImages("msaa", view, render);
+}
+
+TEST(ViewCommand, MsaaForAOneSampleMethodIsRefusedBeforeAWindowOpens) {
+    std::string output;
+    EXPECT_NE(runManylights("view --scene boxes --detail 0.25 --method visibility --msaa 4", output, "",
+                            "env -u DISPLAY -u WAYLAND_DISPLAY"),
+              0);
+    EXPECT_EQ(std::count(output.begin(), output.end(), '\n'), 1) << output;
+    EXPECT_NE(output.find("one sample per pixel"), std::string::npos) << output;
+}
+
 // On llvmpipe the view starts at a reduced internal resolution, says so in one line, and still
 // fills the window; --render-scale 1 turns it off.
 TEST(ViewCommand, RenderScaleEngagesOnASoftwareRenderer) {
