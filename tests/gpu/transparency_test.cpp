@@ -191,6 +191,29 @@ TEST_F(Transparency, NormalConesHoldTheTransparentSamples) {
     }
 }
 
+// With --msaa the glass blends into every covered sample: Forward+ (with --active-only, whose
+// transparent samples are marked at the same pixel centres the pass shades at) against naive at
+// the same sample count.
+TEST_F(Transparency, MultisampledForwardPlusMatchesNaiveOnTheGlass) {
+    const Scene scene = nearPaneScene();
+    const std::vector<Light> lights = lightsNearPanes();
+    for (int samples : {2, 4}) {
+        FrameSettings s = test::smallFrame(scene, kFrontView, kWidth, kHeight);
+        s.method.msaa = samples;
+        FrameRenderer renderer(scene, lights, s);
+        const test::ReferenceFrame naive = test::renderReference(renderer, 0);
+        for (bool activeOnly : {false, true}) {
+            MethodSettings m;
+            m.kind = MethodKind::ForwardPlus;
+            m.msaa = samples;
+            m.clustering.activeOnly = activeOnly;
+            renderer.setMethod(m);
+            renderer.render(0);
+            test::expectWithinContract(renderer, naive, "msaa " + std::to_string(samples) + (activeOnly ? " active-only" : ""));
+        }
+    }
+}
+
 // --transparency off draws the scene as if its BLEND ranges were not there.
 TEST_F(Transparency, OffLeavesTheTransparentSurfacesOut) {
     Gltf g;
