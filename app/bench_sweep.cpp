@@ -341,6 +341,7 @@ std::string describePoint(const BenchPoint& p) {
     if (o.scene != "atrium") s += ", " + o.scene;
     if (o.nearPlane) s += ", near " + formatNumber(*o.nearPlane);
     if (o.farPlane) s += ", far " + formatNumber(*o.farPlane);
+    if (o.transparency != "on") s += ", transparency " + o.transparency;
     if (p.clustered) {
         s += ", grid " + std::to_string(o.tilesX) + " across x " + std::to_string(o.slices) + " " + o.slicing + ", " + o.assign;
         if (p.capped) s += " cap " + std::to_string(o.maxPerCluster);
