@@ -23,6 +23,7 @@ namespace {
 // Enough for a handful of 2560x1440 references (59 MB each); points are ordered so that the
 // ones sharing a reference run one after another, so the cache rarely needs more than one.
 constexpr std::size_t kReferenceCacheBytes = std::size_t{1} << 30;
+constexpr std::size_t kSupersampledReferenceBytes = std::size_t{4} << 30;  // two 2560x1440 references at K = 4
 
 double volumeOf(const Bounds& b) {
     const glm::vec3 e = b.max - b.min;
@@ -130,7 +131,8 @@ BenchRunner::BenchRunner(const RunSettings& run, const GlInfo& info)
       info_(info),
       clock_(info.software ? TimingClock::WallClockAfterFinish : TimingClock::GpuQueries),
       naiveBudget_(run.naiveBudget.value_or(info.software ? kNaiveBudgetSoftware : kNaiveBudgetGpu)),
-      references_(kReferenceCacheBytes) {
+      references_(kReferenceCacheBytes),
+      supersampledReferences_(kSupersampledReferenceBytes) {
     glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxTextureSize_);
 }
 
@@ -261,15 +263,22 @@ void BenchRunner::measureInto(BenchRow& row, const BenchPoint& point) {
         }
         for (auto& p : passes) p.second.resize(static_cast<std::size_t>(i) + 1, 0.0);  // a pass this frame skipped
     }
+    // A pass the GPU clock gave no interval for (PassTimer: NaN) leaves the frame to the wall clock.
+    const auto unknown = [](const std::vector<double>& v) { return std::any_of(v.begin(), v.end(), [](double x) { return std::isnan(x); }); };
+    if (unknown(totals)) {
+        totals = walls;
+        addNote(row, "the GPU timer queries gave no interval for some pass (seconds long): frame_ms is the wall clock");
+    }
     const SampleSpread frame = spreadOf(totals);
     row["frame_ms"] = frame.median;
     row["frame_ms_p10"] = frame.p10;
     row["frame_ms_p90"] = frame.p90;
     row["wall_ms"] = spreadOf(walls).median;
     for (const auto& [name, samples] : passes) {
-        const SampleSpread s = spreadOf(samples);
         const std::string column = passColumn(name);
         passNames_[column] = name;
+        if (unknown(samples)) continue;  // left empty
+        const SampleSpread s = spreadOf(samples);
         row[column] = s.median;
         row[column + "_p10"] = s.p10;
         row[column + "_p90"] = s.p90;
@@ -344,7 +353,7 @@ void BenchRunner::compareWithSupersampled(BenchRow& row, const PreparedFrame& f,
         return;
     }
     const std::string key = frameKey + "@frame" + std::to_string(run_.firstFrame) + "@supersampled" + std::to_string(k);
-    const ReferenceImages* reference = references_.find(key);
+    const ReferenceImages* reference = supersampledReferences_.find(key);
     if (!reference) {
         // A renderer of its own: the targets are K x K times the frame's, needed for one frame.
         FrameSettings settings = f.settings;
@@ -354,7 +363,7 @@ void BenchRunner::compareWithSupersampled(BenchRow& row, const PreparedFrame& f,
         try {
             FrameRenderer supersampled(f.scene, f.lights, settings);
             supersampled.render(run_.firstFrame);
-            reference = &references_.insert(key, ReferenceImages{supersampled.readHdr(), supersampled.readLdr()});
+            reference = &supersampledReferences_.insert(key, ReferenceImages{supersampled.readHdr(), supersampled.readLdr()});
         } catch (const std::invalid_argument& e) {  // a size past the GPU's texture limit
             addNote(row, std::string("no supersampled reference: ") + e.what());
             return;

@@ -58,6 +58,9 @@ private:
     std::string frameKey_;  // what renderer_ was built for
     std::unique_ptr<FrameRenderer> renderer_;
     ReferenceCache references_;
+    // Supersampled references apart: 16 times a naive reference's size at K = 4, so sharing one
+    // budget would evict the naive reference a comparison still holds (and themselves each point).
+    ReferenceCache supersampledReferences_;
 };
 
 // "12.345 ms (p10 12.1, p90 13.0), PSNR 87.3 dB [note]": a measured row, for the progress output.

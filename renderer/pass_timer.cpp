@@ -1,6 +1,7 @@
 #include "renderer/pass_timer.h"
 
 #include <algorithm>
+#include <limits>
 
 namespace ml {
 
@@ -98,7 +99,9 @@ std::vector<PassTime> PassTimer::collect(const std::vector<Pending>& frame) cons
             GLuint64 t0 = 0, t1 = 0;
             glGetQueryObjectui64v(p.startQuery, GL_QUERY_RESULT, &t0);
             glGetQueryObjectui64v(p.endQuery, GL_QUERY_RESULT, &t1);
-            ms = static_cast<double>(t1 - t0) * 1e-6;
+            // NVIDIA 580 on an H100 returned an end before the start for a pass of 20 s (naive,
+            // 65,536 lights, 2560x1440): such an interval is unknown (NaN), not 2^64 ns.
+            ms = t1 >= t0 && t0 != 0 ? static_cast<double>(t1 - t0) * 1e-6 : std::numeric_limits<double>::quiet_NaN();
         } else {
             ms = std::chrono::duration<double, std::milli>(p.end - p.start).count();
         }
