@@ -21,7 +21,6 @@ using namespace gltf_test;
 using test::GpuTest;
 
 constexpr int kWidth = 160, kHeight = 90;
-const CameraPose kFrontView{{0.0f, 0.0f, 4.0f}, {0.0f, 0.0f, 0.0f}, 60.0f};
 
 // An RGBA8 image as an embedded PNG, and a texture of it with a sampler.
 int addTexture(Gltf& g, int width, int height, const std::vector<std::uint8_t>& rgba, const json& sampler = json::object()) {

@@ -21,7 +21,6 @@ using namespace gltf_test;
 using test::GpuTest;
 
 constexpr int kWidth = 160, kHeight = 90;
-const CameraPose kFrontView{{0.0f, 0.0f, 4.0f}, {0.0f, 0.0f, 0.0f}, 60.0f};
 const CameraPose kBackView{{0.0f, 0.0f, -4.0f}, {0.0f, 0.0f, 0.0f}, 60.0f};
 const std::vector<Light> kOneLight{{{0.3f, 0.2f, 3.0f}, 12.0f, {3.0f, 3.0f, 3.0f}}};
 

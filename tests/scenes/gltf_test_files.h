@@ -257,6 +257,9 @@ inline glm::vec3 faceNormal(const Scene& s, std::size_t t) {
     return glm::normalize(glm::cross(b - a, c - a));
 }
 
+// The camera the GPU tests of generated files look at their squares from (down -z at z = 4).
+inline const CameraPose kFrontView{{0.0f, 0.0f, 4.0f}, {0.0f, 0.0f, 0.0f}, 60.0f};
+
 // A square in the plane z = `z` facing +z, half-size `half`, UVs (0, 0) at the top left to
 // (1, 1) at the bottom right (glTF's v runs down the image), scaled by `uvScale`.
 inline json square(Gltf& g, float z, float half, int material, const json& extraAttributes = json::object(), float uvScale = 1.0f) {
