@@ -309,7 +309,6 @@ void BenchRunner::measureInto(BenchRow& row, const BenchPoint& point) {
         addNote(row, "no naive reference: " + overBudget);
     }
 
-    if (run_.supersampledReference > 0) compareWithSupersampled(row, f, key, referenceIsSelf ? reference->hdr : hdr);
 
     // What the light assignment built on that frame.
     row["dropped_lights"] = 0;
@@ -338,6 +337,8 @@ void BenchRunner::measureInto(BenchRow& row, const BenchPoint& point) {
             row["zbin_lights_shaded"] = s.zbinStats.meanPassedPerPixel;
         }
     }
+    // Last: it renders with a renderer of its own.
+    if (run_.supersampledReference > 0) compareWithSupersampled(row, f, key, referenceIsSelf ? reference->hdr : hdr);
     row["gbuffer_bytes"] = renderer_->method().extraTargetBytes();
     row["target_bytes"] = renderer_->targets().bytes();
     row["light_bytes"] = renderer_->lights().bytes();

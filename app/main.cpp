@@ -6,10 +6,12 @@
 #include <CLI/CLI.hpp>
 
 #include "app/bench_command.h"
+#include "app/crash_report.h"
 #include "app/render_command.h"
 #include "app/view_command.h"
 
 int main(int argc, char** argv) {
+    ml::app::installCrashReport();
     CLI::App app{"manylights: many-light rendering by naive, clustered forward and clustered deferred shading"};
     app.require_subcommand(0, 1);
     int exitCode = 0;

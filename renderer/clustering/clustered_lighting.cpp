@@ -426,6 +426,9 @@ std::vector<std::vector<std::uint32_t>> ClusteredLighting::downloadLists() const
     for (std::uint32_t c = 0; c < clusters; ++c) {
         const std::uint32_t first = capped ? c * settings_.maxPerCluster : offsets[c];
         const std::uint32_t n = capped ? std::min(counts[c], settings_.maxPerCluster) : counts[c];
+        if (std::uint64_t(first) + n > indices.size())
+            throw std::runtime_error("cluster lists read back inconsistent: list " + std::to_string(c) + " holds entries " +
+                                     std::to_string(first) + "+" + std::to_string(n) + " of " + std::to_string(indices.size()));
         lists[c].assign(indices.begin() + first, indices.begin() + first + n);
     }
     return lists;
