@@ -131,8 +131,22 @@ constexpr const char* kSpots = R"json({
   ]
 })json";
 
+// cameras: issue 17's fixed camera set (app/camera_sets.h), at the light counts of its targets;
+// 30 timed frames after 5 warm-up, as the H100 numbers are taken.
+constexpr const char* kCameras = R"json({
+  "name": "cameras",
+  "description": "Deferred and the visibility buffer at 65,536 and 1,048,576 lights, 2560x1440, overlap:32, exact lists, on the atrium's fixed camera set (atrium-set: default, gallery, roof, corner); median of 30 frames after 5 warm-up.",
+  "run": {"warmup": 5, "timed_frames": 30, "frame": 60},
+  "defaults": {"scene": "atrium", "size": "2560x1440", "radius": "overlap:32", "assign": "exact", "camera": "atrium-set"},
+  "experiments": [
+    {"name": "cameras", "description": "frame and pass times per camera",
+     "method": ["deferred", "visibility"], "lights": [65536, 1048576]}
+  ]
+})json";
+
 constexpr Preset kPresets[] = {{"quick", kQuick},     {"seeds", kSeeds},     {"scale", kScale},
-                               {"culling", kCulling}, {"options", kOptions}, {"spots", kSpots}};
+                               {"culling", kCulling}, {"options", kOptions}, {"spots", kSpots},
+                               {"cameras", kCameras}};
 
 }  // namespace
 
