@@ -49,7 +49,7 @@ void addFrameOptions(CLI::App& cmd, FrameOptions& o) {
                      "naive and forward-plus have none and ignore it")->capture_default_str();
     grid->add_option("--prepass", o.prepass, "forward-plus depth pre-pass: on, or off (one LESS pass shading overdraw; "
                      "fitted slicing falls back to log, --active-only is refused)")->capture_default_str();
-    cmd.add_option("--view", o.view, "shaded, light-count, slices, clusters, overflow, albedo, normal, depth")->capture_default_str();
+    cmd.add_option("--view", o.view, "shaded, light-count, slices, clusters, overflow, albedo, normal, depth, overdraw (fragments shaded per pixel, any method)")->capture_default_str();
     cmd.add_option("--lights", o.lights, "number of generated lights, added to the scene file's own (default: 1024, or 0 for a file with lights)");
     cmd.add_option("--spot-share", o.spotShare, "share of the generated lights that are spots, in [0, 1] (random directions)")->capture_default_str();
     cmd.add_option("--spot-angle", o.spotAngle, "generated spots' outer cone angle in degrees, (0, 90] (inner: 0.7 of it); 0: each spot's in [20, 60]")->capture_default_str();
@@ -142,7 +142,7 @@ PreparedFrame prepareFrame(const FrameOptions& o, const Scene* loaded) {
     if (o.normalCones && clustering.assign == AssignMode::Capped)
         throw std::invalid_argument("--normal-cones: needs exact lists (--assign exact or per-cluster), not --assign capped");
     clustering.view = parseDebugView(o.view);
-    if (f.settings.method.kind == MethodKind::Naive && clustering.view != DebugView::Shaded)
+    if (f.settings.method.kind == MethodKind::Naive && clustering.view != DebugView::Shaded && clustering.view != DebugView::Overdraw)
         throw std::invalid_argument("--view " + o.view + ": needs a clustered method (--method forward-plus or deferred)");
     f.settings.method.resolve = parseResolve(o.resolve);
     f.settings.specular = parseOnOff("--specular", o.specular);

@@ -75,7 +75,13 @@ std::vector<PassTime> FrameRenderer::renderAt(float time) {
     }
     scene_.setSubmission(settings_.draw);
     scene_.setBackfaceCulling(settings_.backfaceCulling);
-    method_->render(FrameContext{scene_, lights_, frameUniformBuffer_, uniforms_, targets_, timer_});
+    if (settings_.method.clustering.view == DebugView::Overdraw) {
+        // The raster work itself, whatever the method: the view replaces the method's frame.
+        if (!overdraw_) overdraw_ = std::make_unique<OverdrawPass>(scene_.materialFeatures());
+        overdraw_->run(scene_, targets_, timer_);
+    } else {
+        method_->render(FrameContext{scene_, lights_, frameUniformBuffer_, uniforms_, targets_, timer_});
+    }
     const bool debugView = settings_.method.clustering.view != DebugView::Shaded;
     // After shading, so every method gets the same bloom; debug views' colours get none.
     if (!debugView) bloom_.run(targets_, settings_.bloom, timer_);

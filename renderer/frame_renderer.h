@@ -13,6 +13,7 @@
 #include "renderer/image.h"
 #include "renderer/light_buffers.h"
 #include "renderer/methods/shading_method.h"
+#include "renderer/overdraw_pass.h"
 #include "renderer/pass_timer.h"
 #include "renderer/scene_gpu.h"
 #include "renderer/tonemap_pass.h"
@@ -69,6 +70,8 @@ public:
     const FrameTargets& targets() const { return targets_; }
     const FrameUniforms& uniforms() const { return uniforms_; }
     const SceneGpu& scene() const { return scene_; }
+    // --view overdraw's pass, once a frame has been rendered with that view (else null).
+    const OverdrawPass* overdraw() const { return overdraw_.get(); }
 
 private:
     void updateUniforms(float time);
@@ -85,6 +88,7 @@ private:
     BloomPass bloom_;
     TonemapPass tonemap_;
     std::unique_ptr<ShadingMethod> method_;
+    std::unique_ptr<OverdrawPass> overdraw_;  // built on first use of --view overdraw
     PassTimer timer_;
 };
 

@@ -152,6 +152,7 @@
 #define ML_VIEW_ALBEDO 5
 #define ML_VIEW_NORMAL 6
 #define ML_VIEW_DEPTH 7
+#define ML_VIEW_OVERDRAW 8  // fragments shaded per pixel in the raster passes' draw order (renderer/overdraw_pass.h)
 
 // --cull: the light-vs-cluster test of the assignment (the ML_CULL define of its shaders).
 #define ML_CULL_AABB 0    // sphere against the cluster's view-space AABB
@@ -182,5 +183,6 @@
 #define ML_BLOOM_RADIUS 8
 #define ML_IMG_BLOOM_IN 5
 #define ML_IMG_BLOOM_OUT 6
+#define ML_TEX_OVERDRAW_COUNTS 10 // --view overdraw: the per-pixel fragment counts, read by its colour pass
 
 #endif

@@ -1,0 +1,78 @@
+#include "renderer/raster_floors.h"
+
+namespace ml {
+
+const std::vector<RasterFloors::Probe>& RasterFloors::probes() {
+    static const std::vector<Probe> all = {Probe::Clear, Probe::Fullscreen, Probe::FullscreenDepth,
+                                           Probe::Scene, Probe::SceneDepthOnly, Probe::SceneNoRaster};
+    return all;
+}
+
+const char* RasterFloors::name(Probe probe) {
+    switch (probe) {
+    case Probe::Clear: return "clear";
+    case Probe::Fullscreen: return "fullscreen";
+    case Probe::FullscreenDepth: return "fullscreen-depth";
+    case Probe::Scene: return "scene";
+    case Probe::SceneDepthOnly: return "scene-depth-only";
+    case Probe::SceneNoRaster: return "scene-no-raster";
+    }
+    return "?";
+}
+
+RasterFloors::RasterFloors(std::uint32_t materialFeatures)
+    : sceneIds_("raster-floors.scene", {{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "visibility.frag"}}, materialFeatures,
+                RasterProgram::Reads::CoverageOnly),
+      sceneDepth_("raster-floors.scene-depth", {{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "depth_only.frag"}},
+                  materialFeatures, RasterProgram::Reads::CoverageOnly),
+      fullscreenIds_("raster-floors.fullscreen", {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "raster_floor_id.frag"}}),
+      fullscreenDepth_("raster-floors.fullscreen-depth",
+                       {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "raster_floor_depth.frag"}}) {
+    GLuint vao = 0;
+    glCreateVertexArrays(1, &vao);
+    emptyVao_ = gl::Handle<gl::VertexArrayDeleter>(vao);
+}
+
+void RasterFloors::prepareTargets(const FrameTargets& targets) {
+    if (targets.width() == width_ && targets.height() == height_ && targets.depth().id() == depthId_) return;
+    width_ = targets.width();
+    height_ = targets.height();
+    depthId_ = targets.depth().id();
+    ids_ = gl::Texture2D("raster-floors.ids", GL_R32UI, width_, height_);
+    idsFbo_ = gl::Framebuffer("raster-floors.ids", {&ids_}, &targets.depth());
+    depthFbo_ = gl::Framebuffer("raster-floors.depth", {}, &targets.depth());
+}
+
+void RasterFloors::run(Probe probe, const SceneGpu& scene, const FrameTargets& targets) {
+    prepareTargets(targets);
+    const bool depthOnly = probe == Probe::FullscreenDepth || probe == Probe::SceneDepthOnly;
+    const gl::Framebuffer& fbo = depthOnly ? depthFbo_ : idsFbo_;
+    fbo.bind();
+    glViewport(0, 0, width_, height_);
+    const GLuint background = 0;
+    const float clearDepth = 1.0f;
+    if (!depthOnly) glClearNamedFramebufferuiv(fbo.id(), GL_COLOR, 0, &background);
+    glClearNamedFramebufferfv(fbo.id(), GL_DEPTH, 0, &clearDepth);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    switch (probe) {
+    case Probe::Clear: break;
+    case Probe::Fullscreen:
+    case Probe::FullscreenDepth:
+        (probe == Probe::Fullscreen ? fullscreenIds_ : fullscreenDepth_).use();
+        glBindVertexArray(emptyVao_.id());
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+        break;
+    case Probe::Scene: scene.draw(sceneIds_); break;
+    case Probe::SceneDepthOnly: scene.draw(sceneDepth_); break;
+    case Probe::SceneNoRaster:
+        glEnable(GL_RASTERIZER_DISCARD);
+        scene.draw(sceneIds_);
+        glDisable(GL_RASTERIZER_DISCARD);
+        break;
+    }
+    glBindVertexArray(0);
+}
+
+}  // namespace ml

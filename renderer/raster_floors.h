@@ -1,0 +1,50 @@
+// The costs that bound the visibility raster, each measured on its own (`manylights
+// raster-floors`): the clears; a full-screen triangle writing what the pass writes (depth and an
+// R32UI id) and depth alone, which is the pixel floor; the scene drawn as the pass draws it,
+// with depth alone, and with rasterization discarded (vertex and primitive work only).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "renderer/frame_targets.h"
+#include "renderer/gl/framebuffer.h"
+#include "renderer/gl/program.h"
+#include "renderer/gl/texture.h"
+#include "renderer/raster_program.h"
+#include "renderer/scene_gpu.h"
+
+namespace ml {
+
+class RasterFloors {
+public:
+    enum class Probe {
+        Clear,            // depth and id cleared, nothing drawn
+        Fullscreen,       // + one full-screen triangle: depth and id at every pixel
+        FullscreenDepth,  // + one full-screen triangle, depth alone
+        Scene,            // the visibility raster as it runs (depth and triangle id)
+        SceneDepthOnly,   // the same draws with depth alone (no colour target, empty shader)
+        SceneNoRaster,    // the same draws with GL_RASTERIZER_DISCARD: vertices and primitives only
+    };
+    static const std::vector<Probe>& probes();
+    static const char* name(Probe probe);  // "clear", "fullscreen", ...
+
+    explicit RasterFloors(std::uint32_t materialFeatures);
+
+    // Runs one probe into the frame's depth and its own id target (the frame uniforms bound).
+    void run(Probe probe, const SceneGpu& scene, const FrameTargets& targets);
+
+private:
+    void prepareTargets(const FrameTargets& targets);
+
+    RasterProgram sceneIds_, sceneDepth_;
+    gl::Program fullscreenIds_, fullscreenDepth_;
+    gl::Handle<gl::VertexArrayDeleter> emptyVao_;
+    gl::Texture2D ids_;
+    gl::Framebuffer idsFbo_, depthFbo_;
+    int width_ = 0, height_ = 0;
+    GLuint depthId_ = 0;
+};
+
+}  // namespace ml
