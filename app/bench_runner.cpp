@@ -61,6 +61,7 @@ std::string frameKeyOf(const FrameOptions& o, double radius) {
     k["bloom_threshold"] = o.bloomThreshold;
     k["bloom_strength"] = o.bloomStrength;
     k["backface_culling"] = o.backfaceCulling;  // and raster the same surfaces
+    k["triangle_order"] = o.triangleOrder;      // the scene's upload
     return k.dump();
 }
 
@@ -113,6 +114,7 @@ BenchRow configColumns(const BenchPoint& p, int index, std::uint32_t frame, cons
     row["resolve"] = p.deferred ? nlohmann::ordered_json(o.resolve) : nlohmann::ordered_json();
     row["draw"] = o.draw;
     row["backface_culling"] = o.backfaceCulling;
+    row["triangle_order"] = o.triangleOrder;
     row["workgroup"] = clustered(o.workgroup);
     row["frame_index"] = frame;
     row["warmup_frames"] = run.warmupFrames;

@@ -217,6 +217,12 @@ const std::vector<AxisDef>& axisDefs() {
          }},
         {{"backface_culling", "--backface-culling", "cull back faces of single-sided materials: on, off"}, ValueKind::Boolean,
          Applies::Always, [](BenchPoint& p, const json& v) { p.frame.backfaceCulling = asBoolean(v) ? "on" : "off"; }},
+        {{"triangle_order", "--triangle-order", "each draw range's triangles at upload: as-loaded, vertex-cache, overdraw"},
+         ValueKind::Text, Applies::Always,
+         [](BenchPoint& p, const json& v) {
+             (void)parseTriangleOrder(asText(v));
+             p.frame.triangleOrder = v.get<std::string>();
+         }},
         {{"cull", "--cull", "light-vs-cluster test: aabb, sphere, cone"}, ValueKind::Text, Applies::Clustered,
          [](BenchPoint& p, const json& v) {
              (void)parseCullMode(asText(v));

@@ -67,6 +67,7 @@ void addFrameOptions(CLI::App& cmd, FrameOptions& o) {
     cmd.add_option("--frames", o.frames, "advance the light animation this many frames (1/60 s each) first")->capture_default_str();
     cmd.add_option("--exposure", o.exposure, "exposure before the tonemap")->capture_default_str();
     cmd.add_option("--draw", o.draw, "scene submission: direct (a draw call per draw range) or indirect (multi-draw indirect, a call per texture)")->capture_default_str();
+    cmd.add_option("--triangle-order", o.triangleOrder, "each draw range's triangles at upload: as-loaded, vertex-cache or overdraw (meshoptimizer; renderer/triangle_order.h)")->capture_default_str();
     cmd.add_option("--backface-culling", o.backfaceCulling, "on: raster passes cull the back faces of single-sided materials (glTF doubleSided false); off: draw both sides of everything")->capture_default_str();
     cmd.add_flag("--bloom", o.bloom, "bloom: bright pass, half-resolution Gaussian, added to the HDR image before the tonemap");
     cmd.add_option("--bloom-threshold", o.bloomThreshold, "luminance above which pixels bloom")->capture_default_str();
@@ -211,6 +212,7 @@ PreparedFrame prepareFrame(const FrameOptions& o, const Scene* loaded) {
     f.settings.exposure = o.exposure;
     f.settings.draw = parseDrawSubmission(o.draw);
     f.settings.backfaceCulling = parseOnOff("--backface-culling", o.backfaceCulling);
+    f.settings.triangleOrder = parseTriangleOrder(o.triangleOrder);
     f.settings.timing = o.time;
     const Bounds volume = lightVolume(f.scene.bounds);
     f.settings.animation = verticalDrift(volume, o.driftSpeed);

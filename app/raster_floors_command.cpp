@@ -51,7 +51,7 @@ int runRasterFloors(const RasterFloorsOptions& o) {
     OffscreenSession session = openOffscreen(first, frame);
     std::FILE* out = o.out.empty() ? stdout : std::fopen(o.out.c_str(), "w");
     if (!out) throw std::runtime_error(o.out + ": cannot write");
-    std::fprintf(out, "scene,camera,width,height,triangles,draw_calls,covered_pixels,fragments_per_covered_pixel,probe,ms,ms_p10,ms_p90,"
+    std::fprintf(out, "scene,detail,triangle_order,camera,width,height,triangles,draw_calls,covered_pixels,fragments_per_covered_pixel,probe,ms,ms_p10,ms_p90,"
                       "sm_clock_mhz,renderer\n");
 
     FrameSettings settings = frame.settings;
@@ -87,7 +87,8 @@ int runRasterFloors(const RasterFloorsOptions& o) {
             if (const auto end = querySmClockMhz()) clock = clock ? std::min(*clock, *end) : *end;
         for (const RasterFloors::Probe probe : RasterFloors::probes()) {
             const SampleSpread s = spreadOf(samples[RasterFloors::name(probe)]);
-            std::fprintf(out, "%s,\"%s\",%d,%d,%zu,%zu,%zu,%.4f,%s,%.4f,%.4f,%.4f,%s,\"%s\"\n", frame.scene.name.c_str(),
+            std::fprintf(out, "%s,%g,%s,\"%s\",%d,%d,%zu,%zu,%zu,%.4f,%s,%.4f,%.4f,%.4f,%s,\"%s\"\n", frame.scene.name.c_str(),
+                         o.frame.detail, triangleOrderName(settings.triangleOrder),
                          camera.empty() ? "default" : camera.c_str(), settings.width, settings.height,
                          renderer.scene().triangleCount(), renderer.scene().drawCallsPerPass(), od.coveredPixels,
                          od.meanPerCoveredPixel(), RasterFloors::name(probe), s.median, s.p10, s.p90,

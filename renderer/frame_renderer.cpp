@@ -8,7 +8,7 @@ namespace ml {
 
 FrameRenderer::FrameRenderer(const Scene& scene, const std::vector<Light>& lights, const FrameSettings& settings)
     : settings_(settings),
-      scene_(scene),
+      scene_(scene, settings.triangleOrder),
       lights_(lights),
       targets_(settings.width, settings.height, false),
       frameUniformBuffer_("frame.uniforms", sizeof(FrameUniforms)),

@@ -3,14 +3,15 @@
 namespace ml {
 
 const std::vector<RasterFloors::Probe>& RasterFloors::probes() {
-    static const std::vector<Probe> all = {Probe::Clear, Probe::Fullscreen, Probe::FullscreenDepth,
+    static const std::vector<Probe> all = {Probe::ClearDepth, Probe::ClearIds, Probe::Fullscreen, Probe::FullscreenDepth,
                                            Probe::Scene, Probe::SceneDepthOnly, Probe::SceneNoRaster};
     return all;
 }
 
 const char* RasterFloors::name(Probe probe) {
     switch (probe) {
-    case Probe::Clear: return "clear";
+    case Probe::ClearDepth: return "clear-depth";
+    case Probe::ClearIds: return "clear-ids";
     case Probe::Fullscreen: return "fullscreen";
     case Probe::FullscreenDepth: return "fullscreen-depth";
     case Probe::Scene: return "scene";
@@ -49,15 +50,19 @@ void RasterFloors::run(Probe probe, const SceneGpu& scene, const FrameTargets& t
     const gl::Framebuffer& fbo = depthOnly ? depthFbo_ : idsFbo_;
     fbo.bind();
     glViewport(0, 0, width_, height_);
-    const GLuint background = 0;
+    if (probe == Probe::ClearIds) {
+        const GLuint background = 0;
+        glClearNamedFramebufferuiv(fbo.id(), GL_COLOR, 0, &background);
+        return;
+    }
     const float clearDepth = 1.0f;
-    if (!depthOnly) glClearNamedFramebufferuiv(fbo.id(), GL_COLOR, 0, &background);
     glClearNamedFramebufferfv(fbo.id(), GL_DEPTH, 0, &clearDepth);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDepthMask(GL_TRUE);
     switch (probe) {
-    case Probe::Clear: break;
+    case Probe::ClearDepth:
+    case Probe::ClearIds: break;
     case Probe::Fullscreen:
     case Probe::FullscreenDepth:
         (probe == Probe::Fullscreen ? fullscreenIds_ : fullscreenDepth_).use();

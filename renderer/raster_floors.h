@@ -1,7 +1,8 @@
 // The costs that bound the visibility raster, each measured on its own (`manylights
-// raster-floors`): the clears; a full-screen triangle writing what the pass writes (depth and an
-// R32UI id) and depth alone, which is the pixel floor; the scene drawn as the pass draws it,
-// with depth alone, and with rasterization discarded (vertex and primitive work only).
+// raster-floors`): the clears of depth and of the id target; a full-screen triangle writing what
+// the pass writes (depth and an R32UI id) and depth alone, which is the pixel floor; the scene
+// drawn as the pass draws it, with depth alone, and with rasterization discarded (vertex and
+// primitive work only). Every probe but clear-ids clears depth alone, as the pass does.
 #pragma once
 
 #include <cstdint>
@@ -20,7 +21,8 @@ namespace ml {
 class RasterFloors {
 public:
     enum class Probe {
-        Clear,            // depth and id cleared, nothing drawn
+        ClearDepth,       // depth cleared, nothing drawn
+        ClearIds,         // the id target cleared, nothing drawn (the pass no longer does it)
         Fullscreen,       // + one full-screen triangle: depth and id at every pixel
         FullscreenDepth,  // + one full-screen triangle, depth alone
         Scene,            // the visibility raster as it runs (depth and triangle id)

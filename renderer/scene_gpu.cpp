@@ -60,9 +60,9 @@ gl::Buffer vertexStream(GLuint vao, const char* label, const std::vector<T>& dat
 
 }  // namespace
 
-SceneGpu::SceneGpu(const Scene& scene) : features_(ml::materialFeatures(scene)), indexCount_(scene.indices.size()) {
+SceneGpu::SceneGpu(const Scene& scene, TriangleOrder order) : features_(ml::materialFeatures(scene)), indexCount_(scene.indices.size()) {
     vertices_ = gl::Buffer::fromSpan<Vertex>("scene.vertices", scene.vertices, 0);
-    indices_ = gl::Buffer::fromSpan<std::uint32_t>("scene.indices", scene.indices, 0);
+    indices_ = gl::Buffer::fromSpan<std::uint32_t>("scene.indices", orderTriangles(scene, order), 0);
 
     GLuint vao = 0;
     glCreateVertexArrays(1, &vao);

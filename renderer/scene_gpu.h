@@ -13,6 +13,7 @@
 #include "renderer/gl/program.h"
 #include "renderer/gl/texture.h"
 #include "renderer/raster_program.h"
+#include "renderer/triangle_order.h"
 #include "scenes/scene.h"
 
 namespace ml {
@@ -29,7 +30,8 @@ const char* drawSubmissionName(DrawSubmission submission);
 
 class SceneGpu {
 public:
-    explicit SceneGpu(const Scene& scene);
+    // `order`: each draw range's triangles as loaded or reordered at upload (renderer/triangle_order.h).
+    explicit SceneGpu(const Scene& scene, TriangleOrder order = TriangleOrder::AsLoaded);
 
     // ML_FEATURE_* bits of what the drawn materials use (renderer/material_features.h): every
     // program that reads a material or a G-buffer is built with them.
