@@ -51,7 +51,7 @@ struct FrameOptions {
     float exposure = 1.0f;
     std::string draw = "direct";
     std::string backfaceCulling = "on";
-    std::string triangleOrder = "as-loaded";
+    std::string triangleOrder = "overdraw";
     std::string specular = "on";
     bool bloom = false;
     float bloomThreshold = BloomSettings{}.threshold;

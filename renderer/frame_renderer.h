@@ -32,7 +32,7 @@ struct FrameSettings {
     float ambient = 0.03f;
     DrawSubmission draw = DrawSubmission::Direct;  // --draw: how raster passes submit the scene
     bool backfaceCulling = true;                   // --backface-culling (SceneGpu::setBackfaceCulling)
-    TriangleOrder triangleOrder = TriangleOrder::AsLoaded;  // --triangle-order, applied at upload
+    TriangleOrder triangleOrder = TriangleOrder::Overdraw;  // --triangle-order, applied at upload
     bool specular = true;  // the Blinn-Phong term (--specular), a frame uniform: no recompile
     BloomSettings bloom;
     LightAnimation animation;

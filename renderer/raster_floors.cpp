@@ -1,10 +1,13 @@
 #include "renderer/raster_floors.h"
 
+#include "glsl/include/bindings.h"
+
 namespace ml {
 
 const std::vector<RasterFloors::Probe>& RasterFloors::probes() {
     static const std::vector<Probe> all = {Probe::ClearDepth, Probe::ClearIds, Probe::Fullscreen, Probe::FullscreenDepth,
-                                           Probe::Scene, Probe::SceneDepthOnly, Probe::SceneNoRaster};
+                                           Probe::Scene, Probe::SceneDepthOnly, Probe::SceneNoRaster,
+                                           Probe::ClearIdsCompute, Probe::SceneIdAtomics};
     return all;
 }
 
@@ -17,6 +20,8 @@ const char* RasterFloors::name(Probe probe) {
     case Probe::Scene: return "scene";
     case Probe::SceneDepthOnly: return "scene-depth-only";
     case Probe::SceneNoRaster: return "scene-no-raster";
+    case Probe::ClearIdsCompute: return "clear-ids-compute";
+    case Probe::SceneIdAtomics: return "scene-id-atomics";
     }
     return "?";
 }
@@ -26,9 +31,13 @@ RasterFloors::RasterFloors(std::uint32_t materialFeatures)
                 RasterProgram::Reads::CoverageOnly),
       sceneDepth_("raster-floors.scene-depth", {{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "depth_only.frag"}},
                   materialFeatures, RasterProgram::Reads::CoverageOnly),
+      sceneIdAtomics_("raster-floors.scene-id-atomics",
+                      {{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "raster_floor_id_atomic.frag"}}, materialFeatures,
+                      RasterProgram::Reads::CoverageOnly),
       fullscreenIds_("raster-floors.fullscreen", {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "raster_floor_id.frag"}}),
       fullscreenDepth_("raster-floors.fullscreen-depth",
-                       {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "raster_floor_depth.frag"}}) {
+                       {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "raster_floor_depth.frag"}}),
+      clearIds_(gl::Program::compute("raster_floor_clear_ids.comp")) {
     GLuint vao = 0;
     glCreateVertexArrays(1, &vao);
     emptyVao_ = gl::Handle<gl::VertexArrayDeleter>(vao);
@@ -46,7 +55,14 @@ void RasterFloors::prepareTargets(const FrameTargets& targets) {
 
 void RasterFloors::run(Probe probe, const SceneGpu& scene, const FrameTargets& targets) {
     prepareTargets(targets);
-    const bool depthOnly = probe == Probe::FullscreenDepth || probe == Probe::SceneDepthOnly;
+    if (probe == Probe::ClearIdsCompute) {
+        clearIds_.use();
+        glBindImageTexture(ML_IMG_RASTER_FLOOR_IDS, ids_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32UI);
+        glDispatchCompute(gl::groupsFor(width_, ML_SCREEN_TILE), gl::groupsFor(height_, ML_SCREEN_TILE), 1);
+        glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+        return;
+    }
+    const bool depthOnly = probe == Probe::FullscreenDepth || probe == Probe::SceneDepthOnly || probe == Probe::SceneIdAtomics;
     const gl::Framebuffer& fbo = depthOnly ? depthFbo_ : idsFbo_;
     fbo.bind();
     glViewport(0, 0, width_, height_);
@@ -62,7 +78,13 @@ void RasterFloors::run(Probe probe, const SceneGpu& scene, const FrameTargets& t
     glDepthMask(GL_TRUE);
     switch (probe) {
     case Probe::ClearDepth:
-    case Probe::ClearIds: break;
+    case Probe::ClearIds:
+    case Probe::ClearIdsCompute: break;
+    case Probe::SceneIdAtomics:
+        glBindImageTexture(ML_IMG_RASTER_FLOOR_IDS, ids_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
+        scene.draw(sceneIdAtomics_);
+        glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+        break;
     case Probe::Fullscreen:
     case Probe::FullscreenDepth:
         (probe == Probe::Fullscreen ? fullscreenIds_ : fullscreenDepth_).use();

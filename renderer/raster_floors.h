@@ -28,6 +28,9 @@ public:
         Scene,            // the visibility raster as it runs (depth and triangle id)
         SceneDepthOnly,   // the same draws with depth alone (no colour target, empty shader)
         SceneNoRaster,    // the same draws with GL_RASTERIZER_DISCARD: vertices and primitives only
+        ClearIdsCompute,  // the id target cleared by a compute pass
+        SceneIdAtomics,   // ids by imageAtomicMax behind an early depth test, no colour target
+                          // (with ClearIdsCompute, a visibility raster that bypasses the colour ROPs)
     };
     static const std::vector<Probe>& probes();
     static const char* name(Probe probe);  // "clear", "fullscreen", ...
@@ -40,8 +43,8 @@ public:
 private:
     void prepareTargets(const FrameTargets& targets);
 
-    RasterProgram sceneIds_, sceneDepth_;
-    gl::Program fullscreenIds_, fullscreenDepth_;
+    RasterProgram sceneIds_, sceneDepth_, sceneIdAtomics_;
+    gl::Program fullscreenIds_, fullscreenDepth_, clearIds_;
     gl::Handle<gl::VertexArrayDeleter> emptyVao_;
     gl::Texture2D ids_;
     gl::Framebuffer idsFbo_, depthFbo_;

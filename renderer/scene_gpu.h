@@ -31,7 +31,7 @@ const char* drawSubmissionName(DrawSubmission submission);
 class SceneGpu {
 public:
     // `order`: each draw range's triangles as loaded or reordered at upload (renderer/triangle_order.h).
-    explicit SceneGpu(const Scene& scene, TriangleOrder order = TriangleOrder::AsLoaded);
+    explicit SceneGpu(const Scene& scene, TriangleOrder order = TriangleOrder::Overdraw);
 
     // ML_FEATURE_* bits of what the drawn materials use (renderer/material_features.h): every
     // program that reads a material or a G-buffer is built with them.
