@@ -24,11 +24,8 @@ OverdrawPass::OverdrawPass(std::uint32_t materialFeatures)
       colorProgram_(gl::Program::compute("overdraw_colors.comp")) {}
 
 void OverdrawPass::prepareTargets(const FrameTargets& targets) {
-    if (targets.width() == width_ && targets.height() == height_ && targets.depth().id() == depthId_) return;
-    width_ = targets.width();
-    height_ = targets.height();
-    depthId_ = targets.depth().id();
-    counts_ = gl::Texture2D("overdraw.counts", GL_R32F, width_, height_);
+    if (!stamp_.update(targets)) return;
+    counts_ = gl::Texture2D("overdraw.counts", GL_R32F, stamp_.width(), stamp_.height());
     fbo_ = gl::Framebuffer("overdraw", {&counts_}, &targets.depth());
 }
 
@@ -37,7 +34,7 @@ void OverdrawPass::run(const SceneGpu& scene, const FrameTargets& targets, PassT
     {
         auto pass = timer.pass("overdraw.count");
         fbo_.bind();
-        glViewport(0, 0, width_, height_);
+        glViewport(0, 0, stamp_.width(), stamp_.height());
         const float zero = 0.0f, clearDepth = 1.0f;
         glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 0, &zero);
         glClearNamedFramebufferfv(fbo_.id(), GL_DEPTH, 0, &clearDepth);
@@ -56,13 +53,13 @@ void OverdrawPass::run(const SceneGpu& scene, const FrameTargets& targets, PassT
         colorProgram_.use();
         glBindTextureUnit(ML_TEX_OVERDRAW_COUNTS, counts_.id());
         glBindImageTexture(ML_IMG_HDR, targets.hdr().id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-        glDispatchCompute(gl::groupsFor(width_, ML_SCREEN_TILE), gl::groupsFor(height_, ML_SCREEN_TILE), 1);
+        glDispatchCompute(gl::groupsFor(stamp_.width(), ML_SCREEN_TILE), gl::groupsFor(stamp_.height(), ML_SCREEN_TILE), 1);
         glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
     }
 }
 
 std::vector<std::uint32_t> OverdrawPass::readCounts() const {
-    const std::size_t w = static_cast<std::size_t>(width_), h = static_cast<std::size_t>(height_);
+    const std::size_t w = static_cast<std::size_t>(stamp_.width()), h = static_cast<std::size_t>(stamp_.height());
     std::vector<float> bottomUp(w * h);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     glGetTextureImage(counts_.id(), 0, GL_RED, GL_FLOAT, static_cast<GLsizei>(bottomUp.size() * sizeof(float)), bottomUp.data());

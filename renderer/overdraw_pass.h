@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "renderer/frame_targets.h"
+#include "renderer/frame_targets_stamp.h"
 #include "renderer/gl/framebuffer.h"
 #include "renderer/gl/program.h"
 #include "renderer/gl/texture.h"
@@ -46,8 +47,7 @@ private:
     gl::Program colorProgram_;
     gl::Texture2D counts_;  // R32F: exact up to 2^24 fragments a pixel
     gl::Framebuffer fbo_;
-    int width_ = 0, height_ = 0;
-    GLuint depthId_ = 0;
+    FrameTargetsStamp stamp_;
 };
 
 }  // namespace ml

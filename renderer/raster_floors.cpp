@@ -44,11 +44,8 @@ RasterFloors::RasterFloors(std::uint32_t materialFeatures)
 }
 
 void RasterFloors::prepareTargets(const FrameTargets& targets) {
-    if (targets.width() == width_ && targets.height() == height_ && targets.depth().id() == depthId_) return;
-    width_ = targets.width();
-    height_ = targets.height();
-    depthId_ = targets.depth().id();
-    ids_ = gl::Texture2D("raster-floors.ids", GL_R32UI, width_, height_);
+    if (!stamp_.update(targets)) return;
+    ids_ = gl::Texture2D("raster-floors.ids", GL_R32UI, stamp_.width(), stamp_.height());
     idsFbo_ = gl::Framebuffer("raster-floors.ids", {&ids_}, &targets.depth());
     depthFbo_ = gl::Framebuffer("raster-floors.depth", {}, &targets.depth());
 }
@@ -58,14 +55,14 @@ void RasterFloors::run(Probe probe, const SceneGpu& scene, const FrameTargets& t
     if (probe == Probe::ClearIdsCompute) {
         clearIds_.use();
         glBindImageTexture(ML_IMG_RASTER_FLOOR_IDS, ids_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32UI);
-        glDispatchCompute(gl::groupsFor(width_, ML_SCREEN_TILE), gl::groupsFor(height_, ML_SCREEN_TILE), 1);
+        glDispatchCompute(gl::groupsFor(stamp_.width(), ML_SCREEN_TILE), gl::groupsFor(stamp_.height(), ML_SCREEN_TILE), 1);
         glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
         return;
     }
     const bool depthOnly = probe == Probe::FullscreenDepth || probe == Probe::SceneDepthOnly || probe == Probe::SceneIdAtomics;
     const gl::Framebuffer& fbo = depthOnly ? depthFbo_ : idsFbo_;
     fbo.bind();
-    glViewport(0, 0, width_, height_);
+    glViewport(0, 0, stamp_.width(), stamp_.height());
     if (probe == Probe::ClearIds) {
         const GLuint background = 0;
         glClearNamedFramebufferuiv(fbo.id(), GL_COLOR, 0, &background);

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "renderer/frame_targets.h"
+#include "renderer/frame_targets_stamp.h"
 #include "renderer/gl/framebuffer.h"
 #include "renderer/gl/program.h"
 #include "renderer/gl/texture.h"
@@ -48,8 +49,7 @@ private:
     gl::Handle<gl::VertexArrayDeleter> emptyVao_;
     gl::Texture2D ids_;
     gl::Framebuffer idsFbo_, depthFbo_;
-    int width_ = 0, height_ = 0;
-    GLuint depthId_ = 0;
+    FrameTargetsStamp stamp_;
 };
 
 }  // namespace ml
