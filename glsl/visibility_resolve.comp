@@ -5,10 +5,6 @@
 // give the UV gradients the rasterizer's 2x2 quads would. The surface is written to the
 // G-buffer images, which deferred_lighting.comp then lights.
 //
-// The id target is not cleared (a colour clear costs as much as a full-screen layer of writes
-// on an H100: 0.25 ms at 2560x1440): a pixel is background where its depth kept the clear value
-// 1.0, which no fragment can write under GL_LESS, and its id is then last frame's, unread.
-//
 // Textures cannot be chosen per pixel without bindless textures, so the pass runs once per
 // texture set (the textures a material binds, SceneGpu's grouping; u_textureSet) plus once for
 // untextured materials (-1); each pixel is written by exactly the one dispatch whose set is its
@@ -23,7 +19,6 @@
 
 layout(local_size_x = ML_SCREEN_TILE, local_size_y = ML_SCREEN_TILE) in;
 layout(binding = ML_TEX_VISIBILITY) uniform usampler2D u_visibility;
-layout(binding = ML_TEX_DEPTH) uniform sampler2D u_depth;
 layout(std430, binding = ML_SSBO_VERTICES) readonly buffer Vertices { float vertexData[]; };  // 8 floats a vertex
 layout(std430, binding = ML_SSBO_INDICES) readonly buffer Indices { uint indexData[]; };
 layout(std430, binding = ML_SSBO_TRIANGLE_MATERIALS) readonly buffer TriangleMaterials { uint triangleMaterial[]; };
@@ -96,8 +91,8 @@ void interpolateCoords(vec2 a0, vec2 a1, vec2 a2, vec3 w, vec3 wq[3], out vec2 v
 void main() {
     ivec2 p = ivec2(gl_GlobalInvocationID.xy);
     if (any(greaterThanEqual(p, ivec2(u_viewport.xy)))) return;
-    if (texelFetch(u_depth, p, 0).r >= 1.0) return;  // background: nothing was drawn here
     uint id = texelFetch(u_visibility, p, 0).r;
+    if (id == 0u) return;
     uint triangle = id - 1u;
     uint materialIndex = triangleMaterial[triangle];
     Material m = materials[materialIndex];

@@ -5,9 +5,9 @@
 namespace ml {
 
 const std::vector<RasterFloors::Probe>& RasterFloors::probes() {
-    static const std::vector<Probe> all = {Probe::ClearDepth, Probe::ClearIds, Probe::Fullscreen, Probe::FullscreenDepth,
-                                           Probe::Scene, Probe::SceneDepthOnly, Probe::SceneNoRaster,
-                                           Probe::ClearIdsCompute, Probe::SceneIdAtomics};
+    static const std::vector<Probe> all = {Probe::ClearDepth,      Probe::ClearIds, Probe::ClearIdsCompute,
+                                           Probe::Fullscreen,      Probe::FullscreenDepth, Probe::Scene,
+                                           Probe::SceneRopIds,     Probe::SceneDepthOnly,  Probe::SceneNoRaster};
     return all;
 }
 
@@ -21,7 +21,7 @@ const char* RasterFloors::name(Probe probe) {
     case Probe::SceneDepthOnly: return "scene-depth-only";
     case Probe::SceneNoRaster: return "scene-no-raster";
     case Probe::ClearIdsCompute: return "clear-ids-compute";
-    case Probe::SceneIdAtomics: return "scene-id-atomics";
+    case Probe::SceneRopIds: return "scene-rop-ids";
     }
     return "?";
 }
@@ -31,13 +31,12 @@ RasterFloors::RasterFloors(std::uint32_t materialFeatures)
                 RasterProgram::Reads::CoverageOnly),
       sceneDepth_("raster-floors.scene-depth", {{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "depth_only.frag"}},
                   materialFeatures, RasterProgram::Reads::CoverageOnly),
-      sceneIdAtomics_("raster-floors.scene-id-atomics",
-                      {{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "raster_floor_id_atomic.frag"}}, materialFeatures,
-                      RasterProgram::Reads::CoverageOnly),
+      sceneRopIds_("raster-floors.scene-rop-ids", {{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "raster_floor_rop_ids.frag"}},
+                   materialFeatures, RasterProgram::Reads::CoverageOnly),
       fullscreenIds_("raster-floors.fullscreen", {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "raster_floor_id.frag"}}),
       fullscreenDepth_("raster-floors.fullscreen-depth",
                        {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "raster_floor_depth.frag"}}),
-      clearIds_(gl::Program::compute("raster_floor_clear_ids.comp")) {
+      clearIds_(gl::Program::compute("visibility_clear_ids.comp")) {
     GLuint vao = 0;
     glCreateVertexArrays(1, &vao);
     emptyVao_ = gl::Handle<gl::VertexArrayDeleter>(vao);
@@ -54,12 +53,13 @@ void RasterFloors::run(Probe probe, const SceneGpu& scene, const FrameTargets& t
     prepareTargets(targets);
     if (probe == Probe::ClearIdsCompute) {
         clearIds_.use();
-        glBindImageTexture(ML_IMG_RASTER_FLOOR_IDS, ids_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32UI);
+        glBindImageTexture(ML_IMG_VISIBILITY_IDS, ids_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32UI);
         glDispatchCompute(gl::groupsFor(stamp_.width(), ML_SCREEN_TILE), gl::groupsFor(stamp_.height(), ML_SCREEN_TILE), 1);
         glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
         return;
     }
-    const bool depthOnly = probe == Probe::FullscreenDepth || probe == Probe::SceneDepthOnly || probe == Probe::SceneIdAtomics;
+    // The scene probe draws its opaque ranges into depth alone (ids by atomics), the rest as it says.
+    const bool depthOnly = probe == Probe::FullscreenDepth || probe == Probe::SceneDepthOnly || probe == Probe::Scene;
     const gl::Framebuffer& fbo = depthOnly ? depthFbo_ : idsFbo_;
     fbo.bind();
     glViewport(0, 0, stamp_.width(), stamp_.height());
@@ -77,18 +77,21 @@ void RasterFloors::run(Probe probe, const SceneGpu& scene, const FrameTargets& t
     case Probe::ClearDepth:
     case Probe::ClearIds:
     case Probe::ClearIdsCompute: break;
-    case Probe::SceneIdAtomics:
-        glBindImageTexture(ML_IMG_RASTER_FLOOR_IDS, ids_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
-        scene.draw(sceneIdAtomics_);
-        glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-        break;
     case Probe::Fullscreen:
     case Probe::FullscreenDepth:
         (probe == Probe::Fullscreen ? fullscreenIds_ : fullscreenDepth_).use();
         glBindVertexArray(emptyVao_.id());
         glDrawArrays(GL_TRIANGLES, 0, 3);
         break;
-    case Probe::Scene: scene.draw(sceneIds_); break;
+    case Probe::Scene:
+        glBindImageTexture(ML_IMG_VISIBILITY_IDS, ids_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
+        scene.draw(sceneIds_, SceneGpu::Ranges::Opaque);
+        glMemoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT);
+        idsFbo_.bind();
+        scene.draw(sceneIds_, SceneGpu::Ranges::AlphaTested);
+        glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+        break;
+    case Probe::SceneRopIds: scene.draw(sceneRopIds_); break;
     case Probe::SceneDepthOnly: scene.draw(sceneDepth_); break;
     case Probe::SceneNoRaster:
         glEnable(GL_RASTERIZER_DISCARD);

@@ -23,15 +23,14 @@ class RasterFloors {
 public:
     enum class Probe {
         ClearDepth,       // depth cleared, nothing drawn
-        ClearIds,         // the id target cleared, nothing drawn (the pass no longer does it)
-        Fullscreen,       // + one full-screen triangle: depth and id at every pixel
+        ClearIds,         // the id target cleared by the ROPs, nothing drawn
+        ClearIdsCompute,  // the id target cleared by a compute pass (what the pass does)
+        Fullscreen,       // + one full-screen triangle: depth and an id colour output at every pixel
         FullscreenDepth,  // + one full-screen triangle, depth alone
-        Scene,            // the visibility raster as it runs (depth and triangle id)
+        Scene,            // the visibility raster's draws: ids by image atomics (without its clear)
+        SceneRopIds,      // the same draws writing ids through the ROPs, as the pass did before
         SceneDepthOnly,   // the same draws with depth alone (no colour target, empty shader)
         SceneNoRaster,    // the same draws with GL_RASTERIZER_DISCARD: vertices and primitives only
-        ClearIdsCompute,  // the id target cleared by a compute pass
-        SceneIdAtomics,   // ids by imageAtomicMax behind an early depth test, no colour target
-                          // (with ClearIdsCompute, a visibility raster that bypasses the colour ROPs)
     };
     static const std::vector<Probe>& probes();
     static const char* name(Probe probe);  // "clear", "fullscreen", ...
@@ -44,7 +43,7 @@ public:
 private:
     void prepareTargets(const FrameTargets& targets);
 
-    RasterProgram sceneIds_, sceneDepth_, sceneIdAtomics_;
+    RasterProgram sceneIds_, sceneDepth_, sceneRopIds_;
     gl::Program fullscreenIds_, fullscreenDepth_, clearIds_;
     gl::Handle<gl::VertexArrayDeleter> emptyVao_;
     gl::Texture2D ids_;

@@ -50,7 +50,12 @@ public:
     // Draws every draw range: opaque ranges first with the program's opaque variant, then the
     // alpha-tested ones with its masked variant. Textures are bound where the program reads the
     // material, and for masked ranges always (coverage needs the base colour's alpha).
-    void draw(const RasterProgram& program) const;
+    // `which` draws the opaque ranges or the alpha-tested ones alone, for a pass that treats
+    // them differently (the visibility raster: image atomics behind an early depth test for the
+    // opaque ones, which a discard would break).
+    enum class Ranges { All, Opaque, AlphaTested };
+    void draw(const RasterProgram& program, Ranges which = Ranges::All) const;
+    bool hasAlphaTestedRanges() const;
     // Draw calls one pass issues with the current submission.
     std::size_t drawCallsPerPass() const;
     std::size_t drawRangeCount() const { return draws_.size(); }

@@ -183,7 +183,7 @@
 #define ML_BLOOM_RADIUS 8
 #define ML_IMG_BLOOM_IN 5
 #define ML_IMG_BLOOM_OUT 6
-#define ML_IMG_RASTER_FLOOR_IDS 7  // raster-floors: the id target written by image atomics
+#define ML_IMG_VISIBILITY_IDS 7  // the visibility raster's triangle ids, written by image atomics (visibility.frag)
 #define ML_TEX_OVERDRAW_COUNTS 10 // --view overdraw: the per-pixel fragment counts, read by its colour pass
 
 #endif

@@ -9,6 +9,7 @@ VisibilityBuffer::VisibilityBuffer(const ClusteringSettings& settings, GBufferFo
     : gbuffer_(gbuffer, materialFeatures),
       rasterProgram_("visibility.raster", {{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "visibility.frag"}},
                      materialFeatures, RasterProgram::Reads::CoverageOnly),
+      clearIdsProgram_(gl::Program::compute("visibility_clear_ids.comp")),
       resolveProgram_(gl::Program::compute("visibility_resolve.comp", gbuffer_.defines())),
       lightingProgram_(gl::Program::compute("deferred_lighting.comp", deferredLightingDefines(settings, gbuffer_))),
       clustering_(settings, gbuffer_.defines()) {}
@@ -20,6 +21,7 @@ void VisibilityBuffer::prepareTargets(const FrameTargets& frame) {
     depthId_ = frame.depth().id();
     triangleIds_ = gl::Texture2D("visibility.triangle-ids", GL_R32UI, width_, height_);
     fbo_ = gl::Framebuffer("visibility", {&triangleIds_}, &frame.depth());
+    depthFbo_ = gl::Framebuffer("visibility.depth", {}, &frame.depth());
 }
 
 void VisibilityBuffer::render(const FrameContext& ctx) {
@@ -27,17 +29,27 @@ void VisibilityBuffer::render(const FrameContext& ctx) {
     gbuffer_.prepare(ctx.targets);
     {
         auto pass = ctx.timer.pass("visibility.raster");
-        fbo_.bind();
+        // The ids by compute (the ROPs' clear costs a full-screen layer of writes on an H100);
+        // the opaque ranges' atomics keep the largest id (visibility.frag).
+        clearIdsProgram_.use();
+        glBindImageTexture(ML_IMG_VISIBILITY_IDS, triangleIds_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
+        glDispatchCompute(gl::groupsFor(width_, ML_SCREEN_TILE), gl::groupsFor(height_, ML_SCREEN_TILE), 1);
+        glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+        depthFbo_.bind();
         glViewport(0, 0, ctx.targets.width(), ctx.targets.height());
-        // Depth alone is cleared: the resolve takes depth 1.0 as background, so the ids need no
-        // clear, which would cost as much as a full-screen layer of writes (0.25 ms on an H100).
         const float clearDepth = 1.0f;
-        glClearNamedFramebufferfv(fbo_.id(), GL_DEPTH, 0, &clearDepth);
+        glClearNamedFramebufferfv(depthFbo_.id(), GL_DEPTH, 0, &clearDepth);
         glEnable(GL_DEPTH_TEST);
         glDepthFunc(GL_LESS);
         glDepthMask(GL_TRUE);
-        ctx.scene.draw(rasterProgram_);
-        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+        ctx.scene.draw(rasterProgram_, SceneGpu::Ranges::Opaque);
+        if (ctx.scene.hasAlphaTestedRanges()) {
+            // Drawn last, through the ROPs: their ids overwrite where they pass the depth test.
+            glMemoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT);
+            fbo_.bind();
+            ctx.scene.draw(rasterProgram_, SceneGpu::Ranges::AlphaTested);
+        }
+        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     }
     {
         auto pass = ctx.timer.pass("visibility.resolve");
@@ -45,7 +57,6 @@ void VisibilityBuffer::render(const FrameContext& ctx) {
         ctx.scene.bindGeometryForCompute();
         gbuffer_.bindForWriting();
         glBindTextureUnit(ML_TEX_VISIBILITY, triangleIds_.id());
-        glBindTextureUnit(ML_TEX_DEPTH, ctx.targets.depth().id());
         const GLuint groupsX = gl::groupsFor(ctx.targets.width(), ML_SCREEN_TILE);
         const GLuint groupsY = gl::groupsFor(ctx.targets.height(), ML_SCREEN_TILE);
         // One dispatch per texture set, and one for untextured materials.

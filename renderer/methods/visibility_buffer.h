@@ -28,12 +28,14 @@ private:
 
     GBuffer gbuffer_;
     RasterProgram rasterProgram_;
+    gl::Program clearIdsProgram_;
     gl::Program resolveProgram_;
     gl::Program lightingProgram_;
     int width_ = 0, height_ = 0;
     GLuint depthId_ = 0;
     gl::Texture2D triangleIds_;
-    gl::Framebuffer fbo_;
+    gl::Framebuffer fbo_;        // ids and depth: the alpha-tested ranges write ids as colour
+    gl::Framebuffer depthFbo_;   // depth alone: the opaque ranges write ids by image atomics
     ClusteredLighting clustering_;
 };
 

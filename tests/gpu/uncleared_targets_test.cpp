@@ -1,7 +1,7 @@
-// The visibility buffer's triangle ids and deferred's G-buffer are not cleared between frames
-// (a colour clear costs a full-screen layer of writes on an H100): every reader takes depth 1.0
-// as background. A frame whose background was covered in the frame before must therefore be
-// identical to the same frame rendered first.
+// Deferred's G-buffer is not cleared between frames (a colour clear costs a full-screen layer of
+// writes on an H100): every reader takes depth 1.0 as background; the visibility buffer's ids
+// are cleared by compute. A frame whose background was covered in the frame before must be
+// identical to the same frame rendered first, for both.
 #include <gtest/gtest.h>
 
 #include "gpu_test.h"
