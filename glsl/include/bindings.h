@@ -34,6 +34,10 @@
 #define ML_SSBO_LIGHT_VIEW 17      // exact assignment: each light's view-space centre and radius
 #define ML_SSBO_CANDIDATE_OFFSETS 18   // exact assignment: prefix sum of candidates per light
 #define ML_SSBO_DISPATCH 19        // exact assignment: indirect dispatch arguments of the test passes
+// The visibility resolve's tile lists (renderer/methods/visibility_buffer.h); free in that pass.
+#define ML_SSBO_RESOLVE_TILES 16       // per texture set slot, the screen tiles holding its pixels
+#define ML_SSBO_RESOLVE_DISPATCH 17    // per slot, the indirect dispatch of its resolve: tiles, 1, 1
+#define ML_RESOLVE_MAX_SLOTS 32        // slots a tile's mask holds (texture sets + untextured); more: full-screen dispatches
 // Radix sort (glsl/radix_sort.comp) and z-binning (--assign zbin, glsl/zbin_assign.comp). Kept
 // below 32: llvmpipe offers 32 storage-buffer bindings.
 #define ML_SSBO_RADIX_KEYS_IN 20       // keys to sort (one pass reads these...)

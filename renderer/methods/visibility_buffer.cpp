@@ -10,6 +10,7 @@ VisibilityBuffer::VisibilityBuffer(const ClusteringSettings& settings, GBufferFo
       rasterProgram_("visibility.raster", {{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "visibility.frag"}},
                      materialFeatures, RasterProgram::Reads::CoverageOnly),
       clearIdsProgram_(gl::Program::compute("visibility_clear_ids.comp")),
+      classifyProgram_(gl::Program::compute("visibility_classify.comp", gbuffer_.defines())),
       resolveProgram_(gl::Program::compute("visibility_resolve.comp", gbuffer_.defines())),
       lightingProgram_(gl::Program::compute("deferred_lighting.comp", deferredLightingDefines(settings, gbuffer_))),
       clustering_(settings, gbuffer_.defines()) {}
@@ -22,6 +23,23 @@ void VisibilityBuffer::prepareTargets(const FrameTargets& frame) {
     triangleIds_ = gl::Texture2D("visibility.triangle-ids", GL_R32UI, width_, height_);
     fbo_ = gl::Framebuffer("visibility", {&triangleIds_}, &frame.depth());
     depthFbo_ = gl::Framebuffer("visibility.depth", {}, &frame.depth());
+}
+
+void VisibilityBuffer::classifyTiles(std::size_t slots, GLuint groupsX, GLuint groupsY) {
+    const std::size_t tileBytes = slots * groupsX * groupsY * sizeof(GLuint);
+    if (resolveTiles_.size() != tileBytes) {
+        resolveTiles_ = gl::Buffer("visibility.resolve-tiles", tileBytes);
+        resolveDispatch_ = gl::Buffer("visibility.resolve-dispatch", slots * 3 * sizeof(GLuint));
+        emptyDispatch_.assign(slots * 3, 1u);
+        for (std::size_t s = 0; s < slots; ++s) emptyDispatch_[3 * s] = 0u;
+    }
+    resolveDispatch_.upload(emptyDispatch_.data(), emptyDispatch_.size() * sizeof(GLuint));
+    resolveTiles_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_RESOLVE_TILES);
+    resolveDispatch_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_RESOLVE_DISPATCH);
+    classifyProgram_.use();
+    glDispatchCompute(groupsX, groupsY, 1);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, resolveDispatch_.id());
 }
 
 void VisibilityBuffer::render(const FrameContext& ctx) {
@@ -59,12 +77,21 @@ void VisibilityBuffer::render(const FrameContext& ctx) {
         glBindTextureUnit(ML_TEX_VISIBILITY, triangleIds_.id());
         const GLuint groupsX = gl::groupsFor(ctx.targets.width(), ML_SCREEN_TILE);
         const GLuint groupsY = gl::groupsFor(ctx.targets.height(), ML_SCREEN_TILE);
+        const std::size_t slots = ctx.scene.textureSetCount() + 1;
+        const bool tileLists = slots <= ML_RESOLVE_MAX_SLOTS;
+        if (tileLists) classifyTiles(slots, groupsX, groupsY);
+        resolveProgram_.use();
+        resolveProgram_.set("u_tileLists", tileLists ? 1u : 0u);
+        resolveProgram_.set("u_tileCount", groupsX * groupsY);
+        resolveProgram_.set("u_tilesX", groupsX);
         // One dispatch per texture set, and one for untextured materials.
         for (int set = -1; set < static_cast<int>(ctx.scene.textureSetCount()); ++set) {
             ctx.scene.bindTextureSet(set);
             resolveProgram_.set("u_textureSet", set);
-            glDispatchCompute(groupsX, groupsY, 1);
+            if (tileLists) glDispatchComputeIndirect(static_cast<GLintptr>(std::size_t(set + 1) * 3 * sizeof(GLuint)));
+            else glDispatchCompute(groupsX, groupsY, 1);
         }
+        if (tileLists) glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
         ctx.scene.unbindSamplers();
         glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     }
