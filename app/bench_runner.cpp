@@ -4,10 +4,12 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <stdexcept>
 
 #include "app/camera_track.h"
 #include "app/sample_spread.h"
+#include "app/sm_clock.h"
 #include "renderer/clustering/clustered_lighting.h"
 #include "renderer/clustering/cull_accuracy.h"
 #include "renderer/gl/debug_output.h"
@@ -61,6 +63,7 @@ std::string frameKeyOf(const FrameOptions& o, double radius) {
     k["bloom_strength"] = o.bloomStrength;
     k["backface_culling"] = o.backfaceCulling;  // and raster the same surfaces
     k["transparency"] = o.transparency;          // and blend the same ones
+    k["triangle_order"] = o.triangleOrder;      // the scene's upload
     return k.dump();
 }
 
@@ -115,11 +118,13 @@ BenchRow configColumns(const BenchPoint& p, int index, std::uint32_t frame, cons
     row["draw"] = o.draw;
     row["backface_culling"] = o.backfaceCulling;
     row["transparency"] = o.transparency;
+    row["triangle_order"] = o.triangleOrder;
     row["workgroup"] = clustered(o.workgroup);
     row["frame_index"] = frame;
     row["warmup_frames"] = run.warmupFrames;
     row["timed_frames"] = run.timedFrames;
     row["clock"] = clockColumnValue(clock);
+    row["sm_clock_mhz"] = nullptr;  // measured with the timed frames
     row["renderer"] = info.renderer;
     return row;
 }
@@ -244,6 +249,17 @@ void BenchRunner::measureInto(BenchRow& row, const BenchPoint& point) {
     // Warm-up: shader compilation (llvmpipe compiles on first draw) and first-use allocation.
     for (int i = 0; i < run_.warmupFrames; ++i) renderFrame(first + static_cast<std::uint32_t>(i));
 
+    // The SM clock after the warm-up (the GPU has left its idle clock) and after the timed frames;
+    // the lower of the two is the column, so a clock drop during the point shows.
+    std::optional<int> smClock;
+    auto sampleSmClock = [&] {
+        if (info_.software) return;  // no nvidia-smi on llvmpipe; keeps CI free of process starts
+        glFinish();
+        const std::optional<int> mhz = querySmClockMhz();
+        if (mhz) smClock = smClock ? std::min(*smClock, *mhz) : *mhz;
+    };
+    sampleSmClock();
+
     // Timed frames, the lights moving on by one animation step each.
     std::vector<double> totals, walls;
     std::vector<std::pair<std::string, std::vector<double>>> passes;
@@ -269,6 +285,8 @@ void BenchRunner::measureInto(BenchRow& row, const BenchPoint& point) {
         totals = walls;
         addNote(row, "the GPU timer queries gave no interval for some pass (seconds long): frame_ms is the wall clock");
     }
+    sampleSmClock();
+    row["sm_clock_mhz"] = smClock ? nlohmann::ordered_json(*smClock) : nlohmann::ordered_json();
     const SampleSpread frame = spreadOf(totals);
     row["frame_ms"] = frame.median;
     row["frame_ms_p10"] = frame.p10;

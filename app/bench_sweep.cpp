@@ -10,6 +10,7 @@
 #include <set>
 #include <stdexcept>
 
+#include "app/camera_sets.h"
 #include "app/camera_spec.h"
 #include "renderer/camera.h"
 #include "renderer/clustering/clustering_settings.h"
@@ -119,7 +120,7 @@ const std::vector<AxisDef>& axisDefs() {
              if (!(d > 0.0 && d <= 16.0)) throw std::invalid_argument("must be in (0, 16]");
              p.frame.detail = static_cast<float>(d);
          }},
-        {{"camera", "--camera", "px,py,pz,tx,ty,tz,fovy_deg, gltf:N (the file's Nth camera), \"default\" (the scene's view), or orbit:... (the timed frames follow the turntable, app/camera_spec.h); the flag separates cameras by ';'"}, ValueKind::Text,
+        {{"camera", "--camera", "px,py,pz,tx,ty,tz,fovy_deg, gltf:N (the file's Nth camera), \"default\" (the scene's view), orbit:... (the timed frames follow the turntable, app/camera_spec.h), or a named set of cameras (atrium-set: app/camera_sets.h); the flag separates cameras by ';'"}, ValueKind::Text,
          Applies::Always,
          [](BenchPoint& p, const json& v) {
              const std::string s = asText(v);
@@ -221,6 +222,12 @@ const std::vector<AxisDef>& axisDefs() {
          Applies::Always, [](BenchPoint& p, const json& v) { p.frame.backfaceCulling = asBoolean(v) ? "on" : "off"; }},
         {{"transparency", "--transparency", "draw glTF BLEND surfaces blended over the opaque frame: on, off"}, ValueKind::Boolean,
          Applies::Always, [](BenchPoint& p, const json& v) { p.frame.transparency = asBoolean(v) ? "on" : "off"; }},
+        {{"triangle_order", "--triangle-order", "each draw range's triangles at upload: as-loaded, vertex-cache, overdraw"},
+         ValueKind::Text, Applies::Always,
+         [](BenchPoint& p, const json& v) {
+             (void)parseTriangleOrder(asText(v));
+             p.frame.triangleOrder = v.get<std::string>();
+         }},
         {{"cull", "--cull", "light-vs-cluster test: aabb, sphere, cone"}, ValueKind::Text, Applies::Clustered,
          [](BenchPoint& p, const json& v) {
              (void)parseCullMode(asText(v));
@@ -268,6 +275,20 @@ void requireOnly(const json& object, const std::set<std::string>& allowed, const
 }
 
 json asList(const json& v) { return v.is_array() ? v : json::array({v}); }
+
+// A camera axis's values with each named set (app/camera_sets.h) replaced by its cameras.
+json expandCameraSets(const json& values) {
+    json out = json::array();
+    for (const json& v : values) {
+        const auto set = v.is_string() ? namedCameraSet(v.get<std::string>()) : std::nullopt;
+        if (!set) {
+            out.push_back(v);
+            continue;
+        }
+        for (const std::string& camera : *set) out.push_back(camera);
+    }
+    return out;
+}
 
 RunSettings parseRun(const json& run, const std::string& where) {
     RunSettings r;
@@ -339,6 +360,7 @@ std::string describePoint(const BenchPoint& p) {
     if (p.radius.kind != RadiusSpec::Kind::SceneDefault) s += " (radius " + p.radius.text() + ")";
     s += ", " + o.size;
     if (o.scene != "atrium") s += ", " + o.scene;
+    if (!o.camera.empty()) s += ", camera " + o.camera;
     if (o.nearPlane) s += ", near " + formatNumber(*o.nearPlane);
     if (o.farPlane) s += ", far " + formatNumber(*o.farPlane);
     if (o.transparency != "on") s += ", transparency " + o.transparency;
@@ -477,6 +499,7 @@ Sweep expandSweep(const json& doc, const json& overrides, const std::vector<std:
             else if (defaults.contains(a.info.key)) values = defaults.at(a.info.key);
             else continue;
             values = asList(values);
+            if (a.info.key == std::string("camera")) values = expandCameraSets(values);
             if (values.empty()) throw std::invalid_argument(at + ", " + a.info.key + ": empty list");
             axes.emplace_back(&a, values);
         }

@@ -51,7 +51,7 @@ void addFrameOptions(CLI::App& cmd, FrameOptions& o) {
                      "fitted slicing falls back to log, --active-only is refused)")->capture_default_str();
     cmd.add_option("--msaa", o.msaa, "samples per pixel: 1, 2, 4 or 8 (naive and forward-plus; resolved in linear HDR "
                    "before the tonemap; deferred and visibility store one sample per pixel and refuse it)")->capture_default_str();
-    cmd.add_option("--view", o.view, "shaded, light-count, slices, clusters, overflow, albedo, normal, depth")->capture_default_str();
+    cmd.add_option("--view", o.view, "shaded, light-count, slices, clusters, overflow, albedo, normal, depth, overdraw (fragments shaded per pixel, any method)")->capture_default_str();
     cmd.add_option("--lights", o.lights, "number of generated lights, added to the scene file's own (default: 1024, or 0 for a file with lights)");
     cmd.add_option("--spot-share", o.spotShare, "share of the generated lights that are spots, in [0, 1] (random directions)")->capture_default_str();
     cmd.add_option("--spot-angle", o.spotAngle, "generated spots' outer cone angle in degrees, (0, 90] (inner: 0.7 of it); 0: each spot's in [20, 60]")->capture_default_str();
@@ -69,6 +69,7 @@ void addFrameOptions(CLI::App& cmd, FrameOptions& o) {
     cmd.add_option("--frames", o.frames, "advance the light animation this many frames (1/60 s each) first")->capture_default_str();
     cmd.add_option("--exposure", o.exposure, "exposure before the tonemap")->capture_default_str();
     cmd.add_option("--draw", o.draw, "scene submission: direct (a draw call per draw range) or indirect (multi-draw indirect, a call per texture)")->capture_default_str();
+    cmd.add_option("--triangle-order", o.triangleOrder, "each draw range's triangles at upload: as-loaded, vertex-cache or overdraw (meshoptimizer; renderer/triangle_order.h)")->capture_default_str();
     cmd.add_option("--backface-culling", o.backfaceCulling, "on: raster passes cull the back faces of single-sided materials (glTF doubleSided false); off: draw both sides of everything")->capture_default_str();
     cmd.add_option("--transparency", o.transparency, "on: draw glTF BLEND surfaces (the atrium's glass) blended over the opaque frame, back to front; off: leave them out")->capture_default_str();
     cmd.add_flag("--bloom", o.bloom, "bloom: bright pass, half-resolution Gaussian, added to the HDR image before the tonemap");
@@ -145,7 +146,7 @@ PreparedFrame prepareFrame(const FrameOptions& o, const Scene* loaded) {
     if (o.normalCones && clustering.assign == AssignMode::Capped)
         throw std::invalid_argument("--normal-cones: needs exact lists (--assign exact or per-cluster), not --assign capped");
     clustering.view = parseDebugView(o.view);
-    if (f.settings.method.kind == MethodKind::Naive && clustering.view != DebugView::Shaded)
+    if (f.settings.method.kind == MethodKind::Naive && clustering.view != DebugView::Shaded && clustering.view != DebugView::Overdraw)
         throw std::invalid_argument("--view " + o.view + ": needs a clustered method (--method forward-plus or deferred)");
     f.settings.method.resolve = parseResolve(o.resolve);
     f.settings.specular = parseOnOff("--specular", o.specular);
@@ -223,6 +224,7 @@ PreparedFrame prepareFrame(const FrameOptions& o, const Scene* loaded) {
     f.settings.draw = parseDrawSubmission(o.draw);
     f.settings.backfaceCulling = parseOnOff("--backface-culling", o.backfaceCulling);
     f.settings.transparency = parseOnOff("--transparency", o.transparency);
+    f.settings.triangleOrder = parseTriangleOrder(o.triangleOrder);
     f.settings.timing = o.time;
     const Bounds volume = lightVolume(f.scene.bounds);
     f.settings.animation = verticalDrift(volume, o.driftSpeed);

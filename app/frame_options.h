@@ -54,6 +54,7 @@ struct FrameOptions {
     std::string draw = "direct";
     std::string backfaceCulling = "on";
     std::string transparency = "on";
+    std::string triangleOrder = "overdraw";
     std::string specular = "on";
     bool bloom = false;
     float bloomThreshold = BloomSettings{}.threshold;

@@ -7,6 +7,7 @@
 
 #include "app/bench_command.h"
 #include "app/crash_report.h"
+#include "app/raster_floors_command.h"
 #include "app/render_command.h"
 #include "app/view_command.h"
 
@@ -18,6 +19,7 @@ int main(int argc, char** argv) {
     ml::app::addRenderCommand(app, exitCode);
     ml::app::addBenchCommand(app, exitCode);
     ml::app::addViewCommand(app, exitCode);
+    ml::app::addRasterFloorsCommand(app, exitCode);
     try {
         app.parse(argc, argv);
         // With no subcommand, do the main job: render the default scene.

@@ -147,13 +147,19 @@ int runRender(RenderOptions o) {
                     drawSubmissionName(renderer.scene().submission()), renderer.scene().drawCallsPerPass(),
                     renderer.scene().drawRangeCount());
         printShadingOptions(frame.settings);
-        if (clustering) {
+        if (const OverdrawPass* overdraw = renderer.overdraw()) {
+            // The view replaced the method's frame, so no light lists were built.
+            const OverdrawStatistics s = overdrawStatistics(overdraw->readCounts());
+            std::printf("overdraw: %zu pixels covered, %llu fragments shaded (%.3f per covered pixel), at most %u on one pixel\n",
+                        s.coveredPixels, static_cast<unsigned long long>(s.fragments), s.meanPerCoveredPixel(), s.maxPerPixel);
+        } else if (clustering) {
             const ClusterStatistics stats = clustering->statistics();
             printClusterStatistics(stats);
             printCullAccuracy(stats, measureCullAccuracy(*clustering, renderer.lights().downloadAnimated(), renderer.uniforms()));
+        } else {
+            std::printf("stats: naive shading builds no light lists (every fragment loops over all %zu lights)\n",
+                        frame.lights.size());
         }
-        else std::printf("stats: naive shading builds no light lists (every fragment loops over all %zu lights)\n",
-                         frame.lights.size());
     }
     if (!o.dumpClusters.empty()) {
         if (!clustering) throw std::invalid_argument("--dump-clusters: needs --method forward-plus or deferred");

@@ -8,7 +8,8 @@
 // Textures cannot be chosen per pixel without bindless textures, so the pass runs once per
 // texture set (the textures a material binds, SceneGpu's grouping; u_textureSet) plus once for
 // untextured materials (-1); each pixel is written by exactly the one dispatch whose set is its
-// material's. The optional vertex streams (tangents, TEXCOORD_1, COLOR_0) are read only where the
+// material's. Each dispatch visits the 8x8 tiles visibility_classify.comp listed for its set
+// (a workgroup per tile), or, where a scene has more sets than a tile's mask holds, the screen. The optional vertex streams (tangents, TEXCOORD_1, COLOR_0) are read only where the
 // scene has them (ML_MATERIAL_FEATURES), interpolated with the same barycentrics.
 #include "include/bindings.h"
 #include "include/frame_uniforms.glsl"
@@ -41,6 +42,16 @@ layout(binding = ML_IMG_GBUFFER2, rgba16f) uniform writeonly image2D u_gTarget2O
 #endif
 #endif
 uniform int u_textureSet;
+uniform uint u_tileLists;  // 1: a workgroup per tile of the set's list; 0: the whole screen
+uniform uint u_tileCount;  // tiles on screen (each slot's list holds up to this many)
+uniform uint u_tilesX;
+layout(std430, binding = ML_SSBO_RESOLVE_TILES) readonly buffer ResolveTiles { uint resolveTiles[]; };
+
+ivec2 resolvedPixel() {
+    if (u_tileLists == 0u) return ivec2(gl_GlobalInvocationID.xy);
+    uint tile = resolveTiles[uint(u_textureSet + 1) * u_tileCount + gl_WorkGroupID.x];
+    return ivec2(tile % u_tilesX, tile / u_tilesX) * ML_SCREEN_TILE + ivec2(gl_LocalInvocationID.xy);
+}
 
 void storeGBuffer(ivec2 p, GBufferTexel t) {
 #if ML_GBUFFER_FLOAT_TARGETS == 0
@@ -89,7 +100,7 @@ void interpolateCoords(vec2 a0, vec2 a1, vec2 a2, vec3 w, vec3 wq[3], out vec2 v
 }
 
 void main() {
-    ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+    ivec2 p = resolvedPixel();
     if (any(greaterThanEqual(p, ivec2(u_viewport.xy)))) return;
     uint id = texelFetch(u_visibility, p, 0).r;
     if (id == 0u) return;

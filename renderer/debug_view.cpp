@@ -7,7 +7,7 @@ namespace ml {
 const std::vector<std::string>& debugViewNames() {
     // Indexed by the enum's value.
     static const std::vector<std::string> names{"shaded", "light-count", "slices", "clusters",
-                                                "overflow", "albedo", "normal", "depth"};
+                                                "overflow", "albedo", "normal", "depth", "overdraw"};
     return names;
 }
 

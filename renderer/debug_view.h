@@ -18,6 +18,7 @@ enum class DebugView : std::uint32_t {
     Albedo = ML_VIEW_ALBEDO,
     Normal = ML_VIEW_NORMAL,
     Depth = ML_VIEW_DEPTH,
+    Overdraw = ML_VIEW_OVERDRAW,  // every method: drawn by OverdrawPass instead of the method
 };
 
 const std::vector<std::string>& debugViewNames();

@@ -8,7 +8,7 @@ namespace ml {
 
 FrameRenderer::FrameRenderer(const Scene& scene, const std::vector<Light>& lights, const FrameSettings& settings)
     : settings_(settings),
-      scene_(scene),
+      scene_(scene, settings.triangleOrder),
       lights_(lights),
       // Sampled as asked from the start, so a size the GPU cannot hold is refused before allocation.
       targets_(settings.width, settings.height, false, TargetSampling{settings.method.msaa, settings.supersample}),
@@ -83,7 +83,13 @@ std::vector<PassTime> FrameRenderer::renderAt(float time) {
     scene_.setSubmission(settings_.draw);
     scene_.setBackfaceCulling(settings_.backfaceCulling);
     scene_.setTransparency(settings_.transparency);
-    method_->render(FrameContext{scene_, lights_, frameUniformBuffer_, uniforms_, targets_, timer_});
+    if (settings_.method.clustering.view == DebugView::Overdraw) {
+        // The raster work itself, whatever the method: the view replaces the method's frame.
+        if (!overdraw_) overdraw_ = std::make_unique<OverdrawPass>(scene_.materialFeatures());
+        overdraw_->run(scene_, targets_, timer_);
+    } else {
+        method_->render(FrameContext{scene_, lights_, frameUniformBuffer_, uniforms_, targets_, timer_});
+    }
     // After the method and anything it drew last (a transparent pass lands in the samples too).
     if (targets_.sampling().resolves()) {
         auto pass = timer_.pass(ResolvePass::passName(targets_.sampling()));

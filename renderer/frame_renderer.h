@@ -13,6 +13,7 @@
 #include "renderer/image.h"
 #include "renderer/light_buffers.h"
 #include "renderer/methods/shading_method.h"
+#include "renderer/overdraw_pass.h"
 #include "renderer/pass_timer.h"
 #include "renderer/resolve_pass.h"
 #include "renderer/scene_gpu.h"
@@ -36,6 +37,7 @@ struct FrameSettings {
     DrawSubmission draw = DrawSubmission::Direct;  // --draw: how raster passes submit the scene
     bool backfaceCulling = true;                   // --backface-culling (SceneGpu::setBackfaceCulling)
     bool transparency = true;                      // --transparency: draw glTF BLEND surfaces (SceneGpu::setTransparency)
+    TriangleOrder triangleOrder = TriangleOrder::Overdraw;  // --triangle-order, applied at upload
     bool specular = true;  // the Blinn-Phong term (--specular), a frame uniform: no recompile
     BloomSettings bloom;
     LightAnimation animation;
@@ -75,6 +77,8 @@ public:
     const FrameTargets& targets() const { return targets_; }
     const FrameUniforms& uniforms() const { return uniforms_; }
     const SceneGpu& scene() const { return scene_; }
+    // --view overdraw's pass, once a frame has been rendered with that view (else null).
+    const OverdrawPass* overdraw() const { return overdraw_.get(); }
 
 private:
     void updateUniforms(float time);
@@ -94,6 +98,7 @@ private:
     BloomPass bloom_;
     TonemapPass tonemap_;
     std::unique_ptr<ShadingMethod> method_;
+    std::unique_ptr<OverdrawPass> overdraw_;  // built on first use of --view overdraw
     PassTimer timer_;
 };
 

@@ -61,16 +61,14 @@ gl::Buffer vertexStream(GLuint vao, const char* label, const std::vector<T>& dat
 
 }  // namespace
 
-SceneGpu::SceneGpu(const Scene& scene) : features_(ml::materialFeatures(scene)), indexCount_(scene.indices.size()) {
+SceneGpu::SceneGpu(const Scene& scene, TriangleOrder order) : features_(ml::materialFeatures(scene)) {
     vertices_ = gl::Buffer::fromSpan<Vertex>("scene.vertices", scene.vertices, 0);
-    indices_ = gl::Buffer::fromSpan<std::uint32_t>("scene.indices", scene.indices, 0);
 
     GLuint vao = 0;
     glCreateVertexArrays(1, &vao);
     vao_ = gl::Handle<gl::VertexArrayDeleter>(vao);
     gl::label(GL_VERTEX_ARRAY, vao, "scene.vao");
     glVertexArrayVertexBuffer(vao, 0, vertices_.id(), 0, sizeof(Vertex));
-    glVertexArrayElementBuffer(vao, indices_.id());
     const GLuint offsets[3] = {offsetof(Vertex, position), offsetof(Vertex, normal), offsetof(Vertex, uv)};
     const GLint sizes[3] = {3, 3, 2};
     for (GLuint a = 0; a < 3; ++a) {
@@ -153,9 +151,6 @@ SceneGpu::SceneGpu(const Scene& scene) : features_(ml::materialFeatures(scene)),
     materials_ = gl::Buffer::fromSpan<GpuMaterial>("scene.materials", materials, 0);
 
     const auto materialOf = [&](const DrawRange& d) { return d.material < scene.materials.size() ? d.material : 0u; };
-    std::vector<std::uint32_t> triangleMaterials(scene.indices.size() / 3, 0u);
-    for (const DrawRange& d : scene.draws) std::fill_n(triangleMaterials.begin() + d.firstIndex / 3, d.indexCount / 3, materialOf(d));
-    triangleMaterials_ = gl::Buffer::fromSpan<std::uint32_t>("scene.triangle-materials", triangleMaterials, 0);
 
     // Draw ranges in group order (opaque before alpha-tested, then texture set, then sidedness),
     // for both submissions: where surfaces tie in depth the first drawn wins, so direct and
@@ -180,6 +175,23 @@ SceneGpu::SceneGpu(const Scene& scene) : features_(ml::materialFeatures(scene)),
     std::stable_sort(draws_.begin(), draws_.end(), [&](const DrawRange& a, const DrawRange& b) {
         return std::tuple(blended(a), groupOf(a).key()) < std::tuple(blended(b), groupOf(b).key());
     });
+    // The index buffer is laid out in the same order, so triangle ids (a range's first triangle
+    // plus gl_PrimitiveID) grow with the draw order: the visibility raster keeps, per pixel, the
+    // last fragment to pass its early depth test as the largest id (visibility.frag).
+    const std::vector<std::uint32_t> ordered = orderTriangles(scene, order);
+    std::vector<std::uint32_t> indices;
+    indices.reserve(ordered.size());
+    for (DrawRange& d : draws_) {
+        const std::uint32_t first = static_cast<std::uint32_t>(indices.size());
+        indices.insert(indices.end(), ordered.begin() + d.firstIndex, ordered.begin() + d.firstIndex + d.indexCount);
+        d.firstIndex = first;
+    }
+    indexCount_ = indices.size();
+    indices_ = gl::Buffer::fromSpan<std::uint32_t>("scene.indices", indices, 0);
+    glVertexArrayElementBuffer(vao, indices_.id());
+    std::vector<std::uint32_t> triangleMaterials(indices.size() / 3, 0u);
+    for (const DrawRange& d : draws_) std::fill_n(triangleMaterials.begin() + d.firstIndex / 3, d.indexCount / 3, materialOf(d));
+    triangleMaterials_ = gl::Buffer::fromSpan<std::uint32_t>("scene.triangle-materials", triangleMaterials, 0);
     std::vector<glm::uvec2> params;
     std::vector<DrawElementsIndirectCommand> commands;
     for (std::uint32_t i = 0; i < draws_.size(); ++i) {
@@ -189,7 +201,7 @@ SceneGpu::SceneGpu(const Scene& scene) : features_(ml::materialFeatures(scene)),
         const DrawGroup g = groupOf(d);
         if (blended(d)) {
             TransparentRange t{i, g.textureSet, g.doubleSided, {}};
-            for (std::uint32_t k = 0; k < d.indexCount; ++k) t.bounds.extend(scene.vertices[scene.indices[d.firstIndex + k]].position);
+            for (std::uint32_t k = 0; k < d.indexCount; ++k) t.bounds.extend(scene.vertices[indices[d.firstIndex + k]].position);
             transparent_.push_back(t);
             continue;
         }
@@ -254,17 +266,25 @@ void SceneGpu::drawGroups(std::size_t first, std::size_t end) const {
     }
 }
 
+bool SceneGpu::hasAlphaTestedRanges() const {
+    return std::any_of(groups_.begin(), groups_.end(), [](const DrawGroup& g) { return g.alphaTested; });
+}
+
 void SceneGpu::bindDrawState() const {
     glBindVertexArray(vao_.id());
     materials_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_MATERIALS);
 }
 
-void SceneGpu::draw(const RasterProgram& program) const {
+void SceneGpu::draw(const RasterProgram& program, Ranges which) const {
     bindDrawState();
     if (submission_ == DrawSubmission::Indirect) glBindBuffer(GL_DRAW_INDIRECT_BUFFER, commands_.id());
     const gl::Program* current = nullptr;
     for (std::size_t first = 0; first < groups_.size();) {
         const DrawGroup& g = groups_[first];
+        if ((which == Ranges::Opaque && g.alphaTested) || (which == Ranges::AlphaTested && !g.alphaTested)) {
+            ++first;
+            continue;
+        }
         const bool textured = program.readsMaterial() || g.alphaTested;
         std::size_t end = first + 1;
         // Without textures, one call covers every following group with the same cull state.

@@ -16,6 +16,7 @@
 #include "renderer/gl/program.h"
 #include "renderer/gl/texture.h"
 #include "renderer/raster_program.h"
+#include "renderer/triangle_order.h"
 #include "scenes/scene.h"
 
 namespace ml {
@@ -32,7 +33,8 @@ const char* drawSubmissionName(DrawSubmission submission);
 
 class SceneGpu {
 public:
-    explicit SceneGpu(const Scene& scene);
+    // `order`: each draw range's triangles as loaded or reordered at upload (renderer/triangle_order.h).
+    explicit SceneGpu(const Scene& scene, TriangleOrder order = TriangleOrder::Overdraw);
 
     // ML_FEATURE_* bits of what the drawn materials use (renderer/material_features.h): every
     // program that reads a material or a G-buffer is built with them.
@@ -51,8 +53,12 @@ public:
     // Draws every draw range that is not transparent: opaque ranges first with the program's
     // opaque variant, then the alpha-tested ones with its masked variant. Textures are bound where
     // the program reads the material, and for masked ranges always (coverage needs the base
-    // colour's alpha).
-    void draw(const RasterProgram& program) const;
+    // colour's alpha). `which` draws the opaque ranges or the alpha-tested ones alone, for a pass
+    // that treats them differently (the visibility raster: image atomics behind an early depth
+    // test for the opaque ones, which a discard would break).
+    enum class Ranges { All, Opaque, AlphaTested };
+    void draw(const RasterProgram& program, Ranges which = Ranges::All) const;
+    bool hasAlphaTestedRanges() const;
 
     // Transparent (glTF BLEND) draw ranges, drawn after the opaque frame by drawTransparent and by
     // nothing else. Off (--transparency off), the scene draws as if it had none.

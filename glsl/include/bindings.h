@@ -34,6 +34,10 @@
 #define ML_SSBO_LIGHT_VIEW 17      // exact assignment: each light's view-space centre and radius
 #define ML_SSBO_CANDIDATE_OFFSETS 18   // exact assignment: prefix sum of candidates per light
 #define ML_SSBO_DISPATCH 19        // exact assignment: indirect dispatch arguments of the test passes
+// The visibility resolve's tile lists (renderer/methods/visibility_buffer.h); free in that pass.
+#define ML_SSBO_RESOLVE_TILES 16       // per texture set slot, the screen tiles holding its pixels
+#define ML_SSBO_RESOLVE_DISPATCH 17    // per slot, the indirect dispatch of its resolve: tiles, 1, 1
+#define ML_RESOLVE_MAX_SLOTS 32        // slots a tile's mask holds (texture sets + untextured); more: full-screen dispatches
 // Radix sort (glsl/radix_sort.comp) and z-binning (--assign zbin, glsl/zbin_assign.comp). Kept
 // below 32: llvmpipe offers 32 storage-buffer bindings.
 #define ML_SSBO_RADIX_KEYS_IN 20       // keys to sort (one pass reads these...)
@@ -154,6 +158,7 @@
 #define ML_VIEW_ALBEDO 5
 #define ML_VIEW_NORMAL 6
 #define ML_VIEW_DEPTH 7
+#define ML_VIEW_OVERDRAW 8  // fragments shaded per pixel in the raster passes' draw order (renderer/overdraw_pass.h)
 
 // --cull: the light-vs-cluster test of the assignment (the ML_CULL define of its shaders).
 #define ML_CULL_AABB 0    // sphere against the cluster's view-space AABB
@@ -184,5 +189,7 @@
 #define ML_BLOOM_RADIUS 8
 #define ML_IMG_BLOOM_IN 5
 #define ML_IMG_BLOOM_OUT 6
+#define ML_IMG_VISIBILITY_IDS 7  // the visibility raster's triangle ids, written by image atomics (visibility.frag)
+#define ML_TEX_OVERDRAW_COUNTS 10 // --view overdraw: the per-pixel fragment counts, read by its colour pass
 
 #endif

@@ -51,19 +51,6 @@ const gl::Framebuffer& GBuffer::prepare(const FrameTargets& frame) {
     return fbo_;
 }
 
-void GBuffer::clear() const {
-    for (std::size_t i = 0; i < targets_.size(); ++i) {
-        const GLint draw = static_cast<GLint>(i);
-        if (targets_[i].format() == GL_RGBA32UI) {
-            const GLuint zero[4] = {0, 0, 0, 0};
-            glClearNamedFramebufferuiv(fbo_.id(), GL_COLOR, draw, zero);
-        } else {
-            const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
-            glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, draw, zero);
-        }
-    }
-}
-
 void GBuffer::bindForReading() const {
     for (std::size_t i = 0; i < targets_.size(); ++i) glBindTextureUnit(ML_TEX_GBUFFER0 + static_cast<GLuint>(i), targets_[i].id());
 }

@@ -23,7 +23,6 @@ public:
     shaders::Defines defines() const;
     // Re-creates the targets when the frame size changed; returns the framebuffer.
     const gl::Framebuffer& prepare(const FrameTargets& frame);
-    void clear() const;  // every colour target to zero (the depth is the caller's)
     // At ML_TEX_GBUFFER0.. (one texture per target); read with fetchGBuffer/decodeGBuffer
     // (include/gbuffer_fetch.glsl) by the lighting and by --normal-cones' normal bins.
     void bindForReading() const;

@@ -9,6 +9,8 @@ VisibilityBuffer::VisibilityBuffer(const ClusteringSettings& settings, GBufferFo
     : gbuffer_(gbuffer, materialFeatures),
       rasterProgram_("visibility.raster", {{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "visibility.frag"}},
                      materialFeatures, RasterProgram::Reads::CoverageOnly),
+      clearIdsProgram_(gl::Program::compute("visibility_clear_ids.comp")),
+      classifyProgram_(gl::Program::compute("visibility_classify.comp", gbuffer_.defines())),
       resolveProgram_(gl::Program::compute("visibility_resolve.comp", gbuffer_.defines())),
       lightingProgram_(gl::Program::compute("deferred_lighting.comp", deferredLightingDefines(settings, gbuffer_))),
       clustering_(settings, materialFeatures, gbuffer_.defines()),
@@ -21,6 +23,24 @@ void VisibilityBuffer::prepareTargets(const FrameTargets& frame) {
     depthId_ = frame.depth().id();
     triangleIds_ = gl::Texture2D("visibility.triangle-ids", GL_R32UI, width_, height_);
     fbo_ = gl::Framebuffer("visibility", {&triangleIds_}, &frame.depth());
+    depthFbo_ = gl::Framebuffer("visibility.depth", {}, &frame.depth());
+}
+
+void VisibilityBuffer::classifyTiles(std::size_t slots, GLuint groupsX, GLuint groupsY) {
+    const std::size_t tileBytes = slots * groupsX * groupsY * sizeof(GLuint);
+    if (resolveTiles_.size() != tileBytes) {
+        resolveTiles_ = gl::Buffer("visibility.resolve-tiles", tileBytes);
+        resolveDispatch_ = gl::Buffer("visibility.resolve-dispatch", slots * 3 * sizeof(GLuint));
+        emptyDispatch_.assign(slots * 3, 1u);
+        for (std::size_t s = 0; s < slots; ++s) emptyDispatch_[3 * s] = 0u;
+    }
+    resolveDispatch_.upload(emptyDispatch_.data(), emptyDispatch_.size() * sizeof(GLuint));
+    resolveTiles_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_RESOLVE_TILES);
+    resolveDispatch_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_RESOLVE_DISPATCH);
+    classifyProgram_.use();
+    glDispatchCompute(groupsX, groupsY, 1);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, resolveDispatch_.id());
 }
 
 void VisibilityBuffer::render(const FrameContext& ctx) {
@@ -28,17 +48,27 @@ void VisibilityBuffer::render(const FrameContext& ctx) {
     gbuffer_.prepare(ctx.targets);
     {
         auto pass = ctx.timer.pass("visibility.raster");
-        fbo_.bind();
+        // The ids by compute (the ROPs' clear costs a full-screen layer of writes on an H100);
+        // the opaque ranges' atomics keep the largest id (visibility.frag).
+        clearIdsProgram_.use();
+        glBindImageTexture(ML_IMG_VISIBILITY_IDS, triangleIds_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
+        glDispatchCompute(gl::groupsFor(width_, ML_SCREEN_TILE), gl::groupsFor(height_, ML_SCREEN_TILE), 1);
+        glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+        depthFbo_.bind();
         glViewport(0, 0, ctx.targets.width(), ctx.targets.height());
-        const GLuint background = 0;
         const float clearDepth = 1.0f;
-        glClearNamedFramebufferuiv(fbo_.id(), GL_COLOR, 0, &background);
-        glClearNamedFramebufferfv(fbo_.id(), GL_DEPTH, 0, &clearDepth);
+        glClearNamedFramebufferfv(depthFbo_.id(), GL_DEPTH, 0, &clearDepth);
         glEnable(GL_DEPTH_TEST);
         glDepthFunc(GL_LESS);
         glDepthMask(GL_TRUE);
-        ctx.scene.draw(rasterProgram_);
-        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+        ctx.scene.draw(rasterProgram_, SceneGpu::Ranges::Opaque);
+        if (ctx.scene.hasAlphaTestedRanges()) {
+            // Drawn last, through the ROPs: their ids overwrite where they pass the depth test.
+            glMemoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT);
+            fbo_.bind();
+            ctx.scene.draw(rasterProgram_, SceneGpu::Ranges::AlphaTested);
+        }
+        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     }
     {
         auto pass = ctx.timer.pass("visibility.resolve");
@@ -48,12 +78,21 @@ void VisibilityBuffer::render(const FrameContext& ctx) {
         glBindTextureUnit(ML_TEX_VISIBILITY, triangleIds_.id());
         const GLuint groupsX = gl::groupsFor(ctx.targets.width(), ML_SCREEN_TILE);
         const GLuint groupsY = gl::groupsFor(ctx.targets.height(), ML_SCREEN_TILE);
+        const std::size_t slots = ctx.scene.textureSetCount() + 1;
+        const bool tileLists = slots <= ML_RESOLVE_MAX_SLOTS;
+        if (tileLists) classifyTiles(slots, groupsX, groupsY);
+        resolveProgram_.use();
+        resolveProgram_.set("u_tileLists", tileLists ? 1u : 0u);
+        resolveProgram_.set("u_tileCount", groupsX * groupsY);
+        resolveProgram_.set("u_tilesX", groupsX);
         // One dispatch per texture set, and one for untextured materials.
         for (int set = -1; set < static_cast<int>(ctx.scene.textureSetCount()); ++set) {
             ctx.scene.bindTextureSet(set);
             resolveProgram_.set("u_textureSet", set);
-            glDispatchCompute(groupsX, groupsY, 1);
+            if (tileLists) glDispatchComputeIndirect(static_cast<GLintptr>(std::size_t(set + 1) * 3 * sizeof(GLuint)));
+            else glDispatchCompute(groupsX, groupsY, 1);
         }
+        if (tileLists) glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
         ctx.scene.unbindSamplers();
         glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     }

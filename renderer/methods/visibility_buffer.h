@@ -5,7 +5,10 @@
 // target + depth took 0.9 ms where three RGBA16F targets took 2.6-7.1 ms) raster work is kept small.
 #pragma once
 
+#include <vector>
+
 #include "renderer/clustering/clustered_lighting.h"
+#include "renderer/gl/buffer.h"
 #include "renderer/gl/framebuffer.h"
 #include "renderer/gl/program.h"
 #include "renderer/gl/texture.h"
@@ -22,19 +25,32 @@ public:
     std::string name() const override { return "visibility"; }
     void render(const FrameContext& ctx) override;
     const ClusteredLighting* clustering() const override { return &clustering_; }
-    std::size_t extraTargetBytes() const override { return gbuffer_.bytes() + std::size_t(width_) * height_ * 4; }
+    std::size_t extraTargetBytes() const override {
+        return gbuffer_.bytes() + std::size_t(width_) * height_ * 4 + resolveTiles_.size() + resolveDispatch_.size();
+    }
 
 private:
     void prepareTargets(const FrameTargets& frame);
+    // Lists, per texture-set slot, the screen tiles whose pixels need it (visibility_classify.comp),
+    // and leaves the indirect dispatches bound for the resolve.
+    void classifyTiles(std::size_t slots, GLuint groupsX, GLuint groupsY);
 
     GBuffer gbuffer_;
     RasterProgram rasterProgram_;
+    gl::Program clearIdsProgram_;
+    gl::Program classifyProgram_;
     gl::Program resolveProgram_;
     gl::Program lightingProgram_;
     int width_ = 0, height_ = 0;
     GLuint depthId_ = 0;
     gl::Texture2D triangleIds_;
-    gl::Framebuffer fbo_;
+    gl::Framebuffer fbo_;        // ids and depth: the alpha-tested ranges write ids as colour
+    gl::Framebuffer depthFbo_;   // depth alone: the opaque ranges write ids by image atomics
+    // The resolve's tile lists per texture-set slot (set + 1; visibility_classify.comp) and
+    // their indirect dispatches: 4 B per tile and slot (2560x1440, 10 slots: 2.3 MiB).
+    gl::Buffer resolveTiles_;
+    gl::Buffer resolveDispatch_;
+    std::vector<GLuint> emptyDispatch_;  // {0, 1, 1} per slot, uploaded before each classification
     ClusteredLighting clustering_;
     TransparentPass transparent_;
 };

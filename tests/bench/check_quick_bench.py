@@ -22,7 +22,7 @@ import time
 
 REQUIRED = ["method", "lights", "radius", "width", "height", "tiles_x", "tiles_y", "slices", "slicing", "assign",
             "gbuffer", "resolve", "workgroup", "frame_ms", "frame_ms_p10", "frame_ms_p90", "max_abs_err", "rmse",
-            "psnr_db", "bad_pixel_share", "dropped_lights", "renderer"]
+            "psnr_db", "bad_pixel_share", "dropped_lights", "renderer", "sm_clock_mhz"]
 CHARTS = ["frame_time_vs_lights", "time_vs_error", "pass_breakdown", "workgroup", "tiles_by_cap", "cluster_occupancy",
           "slicing", "memory"]
 
@@ -64,6 +64,8 @@ def check_csv(path):
         pass_sum = sum(num(r[c]) or 0.0 for c in passes)
         check(pass_sum > 0, "point %s: no pass time" % r["point"])
         check(r["renderer"] != "", "point %s: empty renderer" % r["point"])
+        check(r["sm_clock_mhz"] == "", "point %s: an SM clock (%s) on llvmpipe, which has no nvidia-smi"
+              % (r["point"], r["sm_clock_mhz"]))
         check(int(r["width"]) > 0 and int(r["height"]) > 0 and num(r["radius"]) > 0, "point %s: bad size or radius" % r["point"])
 
     # Accuracy: exact methods match naive; capped lists that drop light references do not.
@@ -138,6 +140,18 @@ def check_bad_flag(manylights):
           "expected one line naming --lights and -5, got: %r" % run.stderr)
 
 
+def check_camera_set(manylights):
+    """--camera atrium-set expands to the four cameras of the set, in order."""
+    run = subprocess.run([manylights, "bench", "--method", "deferred", "--camera", "atrium-set", "--print-sweep"],
+                         capture_output=True, text=True)
+    check(run.returncode == 0, "bench --camera atrium-set --print-sweep exited %d: %s" % (run.returncode, run.stderr))
+    run = subprocess.run([manylights, "bench", "--method", "deferred", "--camera", "atrium-set", "--dry-run"],
+                         capture_output=True, text=True)
+    text = run.stdout + run.stderr
+    for camera in ("-15,1.7,-6.3,15,1.7,-6.3,60", "0,28,0.5,0,0,0,60", "-16,3,-4.5,16,1.5,4.5,60"):
+        check(camera in text, "bench --camera atrium-set --dry-run does not list camera %s: %r" % (camera, text[-2000:]))
+
+
 def check_interrupt(manylights, out):
     """Ctrl-C after the first point: exit 130, and the CSV and JSON keep what was measured."""
     directory = os.path.join(out, "interrupted")
@@ -170,6 +184,7 @@ def main():
     os.makedirs(args.out)
 
     check_bad_flag(args.manylights)
+    check_camera_set(args.manylights)
 
     start = time.monotonic()
     run = subprocess.run([args.manylights, "bench", "--preset", "quick", "--out", args.out], capture_output=True, text=True)
