@@ -19,11 +19,10 @@ run bench --method visibility --lights 4194304 --light-radius overlap:32 --size 
     --transparency off,on --active-only off,on --warmup 5 --timed-frames 30 --out $OUT --name 4m > $OUT/4m.log 2>&1
 fi
 c=(--lights 1024 --size 2560x1440 --frames 60)
-mkdir -p $OUT/img
-run render --method naive "${c[@]}" --out $OUT/img/naive.png
-run render --method visibility "${c[@]}" --out $OUT/img/visibility.png
-run render --method visibility --gbuffer standard "${c[@]}" --out $OUT/img/visibility-standard.png
-run render --method deferred "${c[@]}" --out $OUT/img/deferred.png
+run render --method naive "${c[@]}" --out $OUT/naive.png
+run render --method visibility "${c[@]}" --out $OUT/visibility.png
+run render --method visibility --gbuffer standard "${c[@]}" --out $OUT/visibility-standard.png
+run render --method deferred "${c[@]}" --out $OUT/deferred.png
 tail -n 2 $OUT/*.log
 kill %1
-cd $OUT && tar cf results.tar ./*.csv ./*.json ./*.log ./gpu.txt && tar cf images.tar img && rm -rf ./*.json ./*.log img
+cd $OUT && tar cf results.tar ./*.csv ./*.json ./*.log ./gpu.txt && rm -f ./*.json ./*.log ./*.csv
