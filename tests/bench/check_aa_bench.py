@@ -10,25 +10,17 @@ line, and that the chart is written. Asserts no timing.
     check_aa_bench.py --manylights BIN --plot tools/plot --out DIR
 """
 
-import argparse
 import csv
 import math
 import os
-import shutil
 import subprocess
 import sys
 
-from check_quick_bench import check, failures  # the same reporting: a FAIL line per check, all counted
+from check_quick_bench import bench_test_args, check, failures  # the same reporting: a FAIL line per check, all counted
 
 
 def main():
-    parser = argparse.ArgumentParser()
-    parser.add_argument("--manylights", required=True)
-    parser.add_argument("--plot", required=True)
-    parser.add_argument("--out", required=True)
-    args = parser.parse_args()
-    shutil.rmtree(args.out, ignore_errors=True)
-    os.makedirs(args.out)
+    args = bench_test_args()
     common = [args.manylights, "bench", "--scene", "boxes", "--size", "160x90", "--lights", "16", "--warmup", "0",
               "--timed-frames", "1", "--out", args.out]
     run = subprocess.run(common + ["--method", "naive,forward-plus,deferred", "--msaa", "1,4",

@@ -174,7 +174,9 @@ def check_interrupt(manylights, out):
     check(record.get("status") == "interrupted", "interrupted run's status is %r" % record.get("status"))
 
 
-def main():
+def bench_test_args():
+    """The arguments every bench check takes (the executable, tools/plot, an output directory,
+    emptied here)."""
     parser = argparse.ArgumentParser()
     parser.add_argument("--manylights", required=True)
     parser.add_argument("--plot", required=True)
@@ -182,6 +184,11 @@ def main():
     args = parser.parse_args()
     shutil.rmtree(args.out, ignore_errors=True)
     os.makedirs(args.out)
+    return args
+
+
+def main():
+    args = bench_test_args()
 
     check_bad_flag(args.manylights)
     check_camera_set(args.manylights)
