@@ -12,6 +12,7 @@
 #include "app/sm_clock.h"
 #include "renderer/clustering/clustered_lighting.h"
 #include "renderer/clustering/cull_accuracy.h"
+#include "renderer/context/gl_context.h"
 #include "renderer/gl/debug_output.h"
 #include "renderer/gl/gl_api.h"
 #include "renderer/image_compare.h"
@@ -160,6 +161,8 @@ BenchRow BenchRunner::measure(const BenchPoint& point, int index) {
     const int errorsBefore = gl::debugErrorCount();
     try {
         measureInto(row, point);
+    } catch (const GpuResetError&) {
+        throw;  // the context is lost: no later point can be measured
     } catch (const std::exception& e) {
         addNote(row, std::string("error: ") + e.what());
         renderer_.reset();  // its state is unknown now; the next point builds a fresh one
@@ -279,6 +282,7 @@ void BenchRunner::measureInto(BenchRow& row, const BenchPoint& point) {
         }
         for (auto& p : passes) p.second.resize(static_cast<std::size_t>(i) + 1, 0.0);  // a pass this frame skipped
     }
+    checkNoGpuReset("the timed frames");
     // A pass the GPU clock gave no interval for (PassTimer: NaN) leaves the frame to the wall clock.
     const auto unknown = [](const std::vector<double>& v) { return std::any_of(v.begin(), v.end(), [](double x) { return std::isnan(x); }); };
     if (unknown(totals)) {

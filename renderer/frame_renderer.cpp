@@ -3,6 +3,7 @@
 #include <cstring>
 
 #include "glsl/include/bindings.h"
+#include "renderer/context/gl_context.h"
 
 namespace ml {
 
@@ -111,6 +112,7 @@ RgbaImage FrameRenderer::readLdr() const {
     std::vector<std::uint8_t> bottomUp(row * image.height);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     glGetTextureImage(targets_.ldr().id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, static_cast<GLsizei>(bottomUp.size()), bottomUp.data());
+    checkNoGpuReset("the frame");  // the read-back waited for it
     image.pixels.resize(bottomUp.size());
     // GL's first row is the bottom one; images are stored top row first.
     for (int y = 0; y < image.height; ++y)
@@ -125,6 +127,7 @@ FloatImage FrameRenderer::readHdr() const {
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     glGetTextureImage(targets_.outputHdr().id(), 0, GL_RGB, GL_FLOAT, static_cast<GLsizei>(bottomUp.size() * sizeof(float)),
                       bottomUp.data());
+    checkNoGpuReset("the frame");
     image.pixels.resize(bottomUp.size());
     for (int y = 0; y < image.height; ++y)
         std::memcpy(&image.pixels[y * row], &bottomUp[(image.height - 1 - y) * row], row * sizeof(float));

@@ -78,12 +78,22 @@ std::unique_ptr<GlContext> tryDisplay(EGLDisplay display, const std::string& pla
         if (!eglChooseConfig(display, configAttribs, &config, 1, &count) || count == 0)
             return fail("no OpenGL-capable config");
     }
+    // With reset notification where the driver offers it: a GPU reset (NVIDIA's watchdog ends a
+    // draw of many seconds, leaving a black frame and no GL error) is then reported by
+    // glGetGraphicsResetStatus, which checkNoGpuReset turns into an error.
+    const EGLint robustAttribs[] = {EGL_CONTEXT_MAJOR_VERSION, 4,
+                                    EGL_CONTEXT_MINOR_VERSION, 5,
+                                    EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
+                                    EGL_CONTEXT_OPENGL_DEBUG, options.debug ? EGL_TRUE : EGL_FALSE,
+                                    EGL_CONTEXT_OPENGL_RESET_NOTIFICATION_STRATEGY, EGL_LOSE_CONTEXT_ON_RESET,
+                                    EGL_NONE};
     const EGLint contextAttribs[] = {EGL_CONTEXT_MAJOR_VERSION, 4,
                                      EGL_CONTEXT_MINOR_VERSION, 5,
                                      EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
                                      EGL_CONTEXT_OPENGL_DEBUG, options.debug ? EGL_TRUE : EGL_FALSE,
                                      EGL_NONE};
-    EGLContext context = eglCreateContext(display, config, EGL_NO_CONTEXT, contextAttribs);
+    EGLContext context = eglCreateContext(display, config, EGL_NO_CONTEXT, robustAttribs);
+    if (context == EGL_NO_CONTEXT) context = eglCreateContext(display, config, EGL_NO_CONTEXT, contextAttribs);
     if (context == EGL_NO_CONTEXT) return fail("could not create a GL 4.5 core context");
     if (!eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, context)) {
         eglDestroyContext(display, context);

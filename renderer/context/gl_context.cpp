@@ -1,5 +1,8 @@
 #include "renderer/context/gl_context.h"
 
+#include <stdexcept>
+#include <string>
+
 #include "renderer/context/keep_modules_loaded.h"
 #include "renderer/gl/gl_api.h"
 
@@ -48,6 +51,19 @@ std::unique_ptr<GlContext> createOffscreenContext(const ContextOptions& options,
         notices.push_back(std::string("EGL unavailable (") + e.what() + "); falling back to OSMesa");
     }
     return createOsMesaContext(options);
+}
+
+}  // namespace ml
+
+namespace ml {
+
+void checkNoGpuReset(const char* during) {
+    const GLenum status = glGetGraphicsResetStatus();
+    if (status == GL_NO_ERROR) return;
+    const char* who = status == GL_GUILTY_CONTEXT_RESET ? "this context's work" : status == GL_INNOCENT_CONTEXT_RESET ? "another context's work" : "an unknown cause";
+    throw GpuResetError(std::string("the GPU reset the GL context during ") + during + " (" + who +
+                             "; a single draw of many seconds meets the driver's watchdog, e.g. naive at millions of pixels x tens of "
+                             "thousands of lights): the frame is lost; lower --lights or --size");
 }
 
 }  // namespace ml

@@ -48,6 +48,15 @@ struct GlInfo {
 };
 GlInfo queryGlInfo();
 
+// A GPU reset of the context: every later GL call is lost with it, so callers stop rather than
+// go on to the next frame or point.
+struct GpuResetError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+// Throws GpuResetError naming `during` when the GPU reset the context (reported where the
+// context was made with reset notification; a reset leaves wrong images and no GL error).
+void checkNoGpuReset(const char* during);
+
 // Parses "auto", "egl", "osmesa"; throws std::invalid_argument naming the value.
 OffscreenBackend parseBackend(const std::string& text);
 
