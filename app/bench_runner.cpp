@@ -331,7 +331,6 @@ void BenchRunner::measureInto(BenchRow& row, const BenchPoint& point) {
         addNote(row, "no naive reference: " + overBudget);
     }
 
-
     // What the light assignment built on that frame.
     row["dropped_lights"] = 0;
     if (const ClusteredLighting* clustering = renderer_->method().clustering()) {

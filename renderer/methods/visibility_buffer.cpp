@@ -17,11 +17,8 @@ VisibilityBuffer::VisibilityBuffer(const ClusteringSettings& settings, GBufferFo
       transparent_(TransparentPass::overClusterLists("visibility.transparent", materialFeatures, settings)) {}
 
 void VisibilityBuffer::prepareTargets(const FrameTargets& frame) {
-    if (frame.width() == width_ && frame.height() == height_ && frame.depth().id() == depthId_) return;
-    width_ = frame.width();
-    height_ = frame.height();
-    depthId_ = frame.depth().id();
-    triangleIds_ = gl::Texture2D("visibility.triangle-ids", GL_R32UI, width_, height_);
+    if (!stamp_.update(frame)) return;
+    triangleIds_ = gl::Texture2D("visibility.triangle-ids", GL_R32UI, stamp_.width(), stamp_.height());
     fbo_ = gl::Framebuffer("visibility", {&triangleIds_}, &frame.depth());
     depthFbo_ = gl::Framebuffer("visibility.depth", {}, &frame.depth());
 }
@@ -52,7 +49,7 @@ void VisibilityBuffer::render(const FrameContext& ctx) {
         // the opaque ranges' atomics keep the largest id (visibility.frag).
         clearIdsProgram_.use();
         glBindImageTexture(ML_IMG_VISIBILITY_IDS, triangleIds_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
-        glDispatchCompute(gl::groupsFor(width_, ML_SCREEN_TILE), gl::groupsFor(height_, ML_SCREEN_TILE), 1);
+        glDispatchCompute(gl::groupsFor(stamp_.width(), ML_SCREEN_TILE), gl::groupsFor(stamp_.height(), ML_SCREEN_TILE), 1);
         glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
         depthFbo_.bind();
         glViewport(0, 0, ctx.targets.width(), ctx.targets.height());

@@ -8,14 +8,15 @@
 #include <vector>
 
 #include "renderer/clustering/clustered_lighting.h"
+#include "renderer/frame_targets_stamp.h"
 #include "renderer/gl/buffer.h"
 #include "renderer/gl/framebuffer.h"
 #include "renderer/gl/program.h"
 #include "renderer/gl/texture.h"
 #include "renderer/methods/gbuffer.h"
 #include "renderer/methods/shading_method.h"
-#include "renderer/transparent_pass.h"
 #include "renderer/raster_program.h"
+#include "renderer/transparent_pass.h"
 
 namespace ml {
 
@@ -26,7 +27,7 @@ public:
     void render(const FrameContext& ctx) override;
     const ClusteredLighting* clustering() const override { return &clustering_; }
     std::size_t extraTargetBytes() const override {
-        return gbuffer_.bytes() + std::size_t(width_) * height_ * 4 + resolveTiles_.size() + resolveDispatch_.size();
+        return gbuffer_.bytes() + std::size_t(stamp_.width()) * stamp_.height() * 4 + resolveTiles_.size() + resolveDispatch_.size();
     }
 
 private:
@@ -41,8 +42,7 @@ private:
     gl::Program classifyProgram_;
     gl::Program resolveProgram_;
     gl::Program lightingProgram_;
-    int width_ = 0, height_ = 0;
-    GLuint depthId_ = 0;
+    FrameTargetsStamp stamp_;  // the size and depth the id target and framebuffers were made for
     gl::Texture2D triangleIds_;
     gl::Framebuffer fbo_;        // ids and depth: the alpha-tested ranges write ids as colour
     gl::Framebuffer depthFbo_;   // depth alone: the opaque ranges write ids by image atomics
