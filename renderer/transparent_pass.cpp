@@ -7,15 +7,27 @@
 
 namespace ml {
 
-namespace {
-// Programs only where some material is BLEND: a scene without transparency compiles nothing.
-RasterProgram transparentProgram(const char* label, const char* fragmentShader, std::uint32_t materialFeatures,
-                                 shaders::Defines defines) {
+RasterProgram transparentRangesProgram(std::string_view label, const char* fragmentShader, std::uint32_t materialFeatures,
+                                       shaders::Defines defines) {
     if (!(materialFeatures & ML_FEATURE_BLEND)) return {};
-    defines.emplace_back("ML_TRANSPARENT", "1");
-    // Transparent ranges are never alpha-tested (BLEND ignores alphaCutoff): no masked variant.
     return RasterProgram(label, {{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, fragmentShader}},
                          materialFeatures & ~std::uint32_t(ML_FEATURE_ALPHA_TEST), RasterProgram::Reads::Material, std::move(defines));
+}
+
+void beginTransparentRaster(const FrameTargets& targets) {
+    targets.hdrFramebuffer().bind();
+    glViewport(0, 0, targets.width(), targets.height());
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_FALSE);
+}
+
+namespace {
+// The shading passes' program: the fragment writes its alpha (ML_TRANSPARENT) for blending.
+RasterProgram transparentProgram(const char* label, const char* fragmentShader, std::uint32_t materialFeatures,
+                                 shaders::Defines defines) {
+    defines.emplace_back("ML_TRANSPARENT", "1");
+    return transparentRangesProgram(label, fragmentShader, materialFeatures, std::move(defines));
 }
 }  // namespace
 
@@ -39,11 +51,7 @@ void TransparentPass::render(const FrameContext& ctx, const ClusteredLighting* l
     auto pass = ctx.timer.pass(timerName_);
     // The opaque frame may have come from compute passes' image stores.
     glMemoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT);
-    ctx.targets.hdrFramebuffer().bind();
-    glViewport(0, 0, ctx.targets.width(), ctx.targets.height());
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    glDepthMask(GL_FALSE);
+    beginTransparentRaster(ctx.targets);
     glEnable(GL_BLEND);
     // Colour "over" the frame; the target's alpha stays 1 (the frame is opaque).
     glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);

@@ -12,6 +12,7 @@
 
 #include <cstdint>
 #include <string>
+#include <string_view>
 
 #include "renderer/clustering/clustering_settings.h"
 #include "renderer/methods/shading_method.h"
@@ -20,6 +21,15 @@
 namespace ml {
 
 class ClusteredLighting;
+
+// A raster program over the transparent ranges (SceneGpu::drawTransparent) with `fragmentShader`:
+// empty where no material is BLEND, so such a scene compiles nothing; no alpha-tested variant
+// (BLEND ignores alphaCutoff).
+RasterProgram transparentRangesProgram(std::string_view label, const char* fragmentShader, std::uint32_t materialFeatures,
+                                       shaders::Defines defines);
+// Binds the frame's colour target and depth for rastering transparent ranges: tested against the
+// opaque depth, which they do not write (the caller restores glDepthMask).
+void beginTransparentRaster(const FrameTargets& targets);
 
 class TransparentPass {
 public:

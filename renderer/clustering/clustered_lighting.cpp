@@ -8,6 +8,7 @@
 #include "glsl/include/bindings.h"
 #include "renderer/light_buffers.h"
 #include "renderer/methods/gbuffer.h"
+#include "renderer/transparent_pass.h"
 
 namespace ml {
 
@@ -53,13 +54,11 @@ void clearToZero(const gl::Buffer& buffer, std::size_t bytes) {
 // Marks transparent fragments as samples where a pass learns from samples alone.
 RasterProgram transparentSamplesProgram(const ClusteringSettings& settings, std::uint32_t materialFeatures) {
     const bool needed = (settings.activeOnly || settings.normalCones) && settings.assign != AssignMode::ZBin;
-    if (!(materialFeatures & ML_FEATURE_BLEND) || !needed) return {};
+    if (!needed) return {};
     shaders::Defines defines;
     if (settings.activeOnly) defines.emplace_back("ML_MARK_ACTIVE", "1");
     if (settings.normalCones) defines.emplace_back("ML_NORMAL_CONES", "1");
-    return RasterProgram("cluster.transparent-samples",
-                         {{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "cluster_transparent_samples.frag"}},
-                         materialFeatures & ~std::uint32_t(ML_FEATURE_ALPHA_TEST), RasterProgram::Reads::Material, defines);
+    return transparentRangesProgram("cluster.transparent-samples", "cluster_transparent_samples.frag", materialFeatures, defines);
 }
 
 std::string mib(std::size_t bytes) { return std::to_string((bytes + (1u << 20) - 1) >> 20) + " MiB"; }
@@ -254,7 +253,6 @@ void ClusteredLighting::markNormalBins(const FrameContext& ctx, const GBuffer& g
     normalBinMasks_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_NORMAL_BIN_MASKS);
     normalCones_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_NORMAL_CONES);
     gbuffer.bindForReading();
-    normalBins_.use();
     // Phase 0: occupied bins and each list's normal sum; phase 1: each list's widest normal. The
     // transparent samples join each phase before the next begins.
     for (unsigned phase : {0u, 1u}) {
@@ -270,11 +268,7 @@ void ClusteredLighting::markTransparentSamples(const FrameContext& ctx, unsigned
     if (!transparentSamples_.variant(false) || !ctx.scene.hasTransparent()) return;
     auto pass = ctx.timer.pass("cluster.transparent-samples");
     // Depth-tested against the opaque depth, writing nothing but the sample buffers.
-    ctx.targets.hdrFramebuffer().bind();
-    glViewport(0, 0, ctx.targets.width(), ctx.targets.height());
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    glDepthMask(GL_FALSE);
+    beginTransparentRaster(ctx.targets);
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
     // The depth texture is attached now: take it off the unit the compute passes read it from.
     glBindTextureUnit(ML_TEX_DEPTH, 0);
