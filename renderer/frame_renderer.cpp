@@ -22,8 +22,7 @@ FrameRenderer::FrameRenderer(const Scene& scene, const std::vector<Light>& light
 }
 
 void FrameRenderer::configureTargets() {
-    targets_.setStencil(method_->needsStencil());
-    targets_.setSampling(TargetSampling{settings_.method.msaa, settings_.supersample});
+    targets_.configure(method_->needsStencil(), TargetSampling{settings_.method.msaa, settings_.supersample});
 }
 
 void FrameRenderer::resize(int width, int height) {

@@ -59,15 +59,10 @@ void FrameTargets::create() {
     hdrOnlyFbo_ = gl::Framebuffer("frame.hdr", {&hdr_}, nullptr);
 }
 
-void FrameTargets::setStencil(bool stencil) {
-    if (stencil == stencil_) return;
-    stencil_ = stencil;
-    create();
-}
-
-void FrameTargets::setSampling(TargetSampling sampling) {
-    if (sampling == sampling_) return;
+void FrameTargets::configure(bool stencil, TargetSampling sampling) {
+    if (stencil == stencil_ && sampling == sampling_) return;
     checkSamplingFits(sampling, width_, height_);
+    stencil_ = stencil;
     sampling_ = sampling;
     create();
 }

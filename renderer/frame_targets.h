@@ -32,12 +32,12 @@ public:
     }
     // The output size; throws std::invalid_argument when the GPU cannot hold the drawn size.
     void resize(int width, int height);
-    // Depth with an 8-bit stencil (only Forward+'s pre-pass uses it), or 32-bit float depth
-    // alone, which the raster passes of the other methods write faster. Re-creates on change.
-    void setStencil(bool stencil);
-    // Re-creates on change. Throws std::invalid_argument naming the flag (--msaa over this
-    // GPU's sample limits, --supersample past its texture size) before allocating anything.
-    void setSampling(TargetSampling sampling);
+    // What a method needs of the targets, re-created once where either changes. `stencil`: depth
+    // with an 8-bit stencil (only Forward+'s pre-pass uses it), or 32-bit float depth alone, which
+    // the raster passes of the other methods write faster. Throws std::invalid_argument naming
+    // the flag (--msaa over this GPU's sample limits, --supersample past its texture size)
+    // before allocating anything.
+    void configure(bool stencil, TargetSampling sampling);
 
     // Where the methods draw: the output size times --supersample.
     int width() const { return width_ * sampling_.supersample; }

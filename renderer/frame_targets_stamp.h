@@ -1,6 +1,6 @@
 // What a pass's own screen-sized targets were made for: the frame's size and depth texture. A
 // pass that attaches the frame's depth re-creates its targets when either changes (a resize, or
-// FrameTargets::setStencil swapping the depth format).
+// FrameTargets::configure swapping the depth format).
 #pragma once
 
 #include "renderer/frame_targets.h"

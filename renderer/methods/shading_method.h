@@ -37,7 +37,7 @@ public:
     virtual void render(const FrameContext& ctx) = 0;
     // The light lists of a clustered method (null for naive).
     virtual const ClusteredLighting* clustering() const { return nullptr; }
-    // Whether the frame's depth target needs a stencil (FrameTargets::setStencil).
+    // Whether the frame's depth target needs a stencil (FrameTargets::configure).
     virtual bool needsStencil() const { return false; }
     // Bytes of screen-sized targets the method owns beyond FrameTargets (the G-buffer).
     virtual std::size_t extraTargetBytes() const { return 0; }
