@@ -5,14 +5,14 @@
 // The eye circles the centre of the scene's bounds, one turn every `frames` animation frames,
 // `elevation` degrees above it, `distance` away (default: the bounding sphere fills the view),
 // starting at `azimuth` degrees around +y (default: the side the scene's default view looks
-// from). Other `--camera` values go to the existing parser (renderer/camera.h).
+// from). Other `--camera` values go to the existing parser (renderer/camera/camera.h).
 #pragma once
 
 #include <cstdint>
 #include <optional>
 #include <string>
 
-#include "renderer/camera_orbit.h"
+#include "renderer/camera/camera_orbit.h"
 #include "scenes/scene.h"
 
 namespace ml::app {

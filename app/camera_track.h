@@ -10,8 +10,8 @@
 #include <variant>
 
 #include "app/frame_options.h"
-#include "renderer/camera_orbit.h"
-#include "renderer/camera_path.h"
+#include "renderer/camera/camera_orbit.h"
+#include "renderer/camera/camera_path.h"
 
 namespace ml::app {
 

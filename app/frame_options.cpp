@@ -6,8 +6,8 @@
 
 #include "app/camera_spec.h"
 #include "glsl/include/bindings.h"
-#include "renderer/light_buffers.h"
-#include "renderer/material_features.h"
+#include "renderer/lights/light_buffers.h"
+#include "renderer/scene/material_features.h"
 #include "scenes/scene_library.h"
 
 namespace ml::app {
@@ -69,7 +69,7 @@ void addFrameOptions(CLI::App& cmd, FrameOptions& o) {
     cmd.add_option("--frames", o.frames, "advance the light animation this many frames (1/60 s each) first")->capture_default_str();
     cmd.add_option("--exposure", o.exposure, "exposure before the tonemap")->capture_default_str();
     cmd.add_option("--draw", o.draw, "scene submission: direct (a draw call per draw range) or indirect (multi-draw indirect, a call per texture)")->capture_default_str();
-    cmd.add_option("--triangle-order", o.triangleOrder, "each draw range's triangles at upload: as-loaded, vertex-cache or overdraw (meshoptimizer; renderer/triangle_order.h)")->capture_default_str();
+    cmd.add_option("--triangle-order", o.triangleOrder, "each draw range's triangles at upload: as-loaded, vertex-cache or overdraw (meshoptimizer; renderer/scene/triangle_order.h)")->capture_default_str();
     cmd.add_option("--backface-culling", o.backfaceCulling, "on: raster passes cull the back faces of single-sided materials (glTF doubleSided false); off: draw both sides of everything")->capture_default_str();
     cmd.add_option("--transparency", o.transparency, "on: draw glTF BLEND surfaces (the atrium's glass) blended over the opaque frame, back to front; off: leave them out")->capture_default_str();
     cmd.add_flag("--bloom", o.bloom, "bloom: bright pass, half-resolution Gaussian, added to the HDR image before the tonemap");

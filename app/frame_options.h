@@ -8,10 +8,10 @@
 
 #include <CLI/CLI.hpp>
 
-#include "renderer/camera_orbit.h"
+#include "renderer/camera/camera_orbit.h"
 #include "renderer/context/gl_context.h"
 #include "renderer/frame_renderer.h"
-#include "renderer/light_set.h"
+#include "renderer/lights/light_set.h"
 #include "scenes/scene.h"
 
 namespace ml::app {

@@ -5,11 +5,11 @@
 
 #include <CLI/CLI.hpp>
 
-#include "app/bench_command.h"
+#include "app/bench/bench_command.h"
 #include "app/crash_report.h"
-#include "app/raster_floors_command.h"
-#include "app/render_command.h"
-#include "app/view_command.h"
+#include "app/bench/raster_floors_command.h"
+#include "app/render/render_command.h"
+#include "app/view/view_command.h"
 
 int main(int argc, char** argv) {
     ml::app::installCrashReport();

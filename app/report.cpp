@@ -7,7 +7,7 @@
 #include <fstream>
 #include <stdexcept>
 
-#include "renderer/material_features.h"
+#include "renderer/scene/material_features.h"
 
 namespace ml::app {
 
@@ -73,7 +73,7 @@ void printShadingOptions(const FrameSettings& s) {
     if (kind == MethodKind::ForwardPlus)
         std::printf("depth pre-pass: %s\n", s.method.prepass ? "on (shade with EQUAL, each pixel once)"
                                                                 : "off (one LESS pass; hidden fragments are shaded too)");
-    // Two half-resolution RGBA32F images (renderer/bloom_pass.h).
+    // Two half-resolution RGBA32F images (renderer/passes/bloom_pass.h).
     const double bloomBytes = 2.0 * ((s.width + 1) / 2) * ((s.height + 1) / 2) * 16;
     if (s.bloom.enabled)
         std::printf("bloom: threshold %.3g, strength %.3g, %.2f MiB at half resolution\n", s.bloom.threshold,

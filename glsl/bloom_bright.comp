@@ -1,5 +1,5 @@
 #version 450 core
-// Bloom, step 1 (renderer/bloom_pass.h): the bright part of each pixel, averaged over each 2x2
+// Bloom, step 1 (renderer/passes/bloom_pass.h): the bright part of each pixel, averaged over each 2x2
 // block into the half-resolution image (edges clamp: an odd last column or row counts twice).
 #include "include/bindings.h"
 #include "include/bloom.glsl"

@@ -1,3 +1,3 @@
 #version 450 core
-// Raster floors (renderer/raster_floors.h): depth only, no colour output.
+// Raster floors (renderer/passes/raster_floors.h): depth only, no colour output.
 void main() {}

@@ -1,5 +1,5 @@
 #version 450 core
-// Raster floors (renderer/raster_floors.h): the triangle id as a colour output through the ROPs,
+// Raster floors (renderer/passes/raster_floors.h): the triangle id as a colour output through the ROPs,
 // as the visibility raster wrote it before it moved to image atomics (visibility.frag).
 #include "include/bindings.h"
 #include "include/frame_uniforms.glsl"

@@ -11,7 +11,7 @@ layout(location = 0) in vec3 a_position;
 layout(location = 1) in vec3 a_normal;
 layout(location = 2) in vec2 a_uv;
 // Per draw range (instance divisor 1, baseInstance = range): material, first triangle. Direct and
-// multi-draw-indirect submission both feed it (renderer/scene_gpu.h).
+// multi-draw-indirect submission both feed it (renderer/scene/scene_gpu.h).
 layout(location = 3) in uvec2 a_drawParams;
 
 layout(location = 0) out vec3 v_worldPos;

@@ -6,18 +6,18 @@
 #include <memory>
 #include <vector>
 
-#include "renderer/bloom_pass.h"
-#include "renderer/camera.h"
+#include "renderer/passes/bloom_pass.h"
+#include "renderer/camera/camera.h"
 #include "renderer/frame_targets.h"
 #include "renderer/gl/buffer.h"
-#include "renderer/image.h"
-#include "renderer/light_buffers.h"
+#include "renderer/image/image.h"
+#include "renderer/lights/light_buffers.h"
 #include "renderer/methods/shading_method.h"
-#include "renderer/overdraw_pass.h"
+#include "renderer/passes/overdraw_pass.h"
 #include "renderer/pass_timer.h"
-#include "renderer/resolve_pass.h"
-#include "renderer/scene_gpu.h"
-#include "renderer/tonemap_pass.h"
+#include "renderer/passes/resolve_pass.h"
+#include "renderer/scene/scene_gpu.h"
+#include "renderer/passes/tonemap_pass.h"
 
 namespace ml {
 

@@ -2,7 +2,7 @@
 // 8-bit result. Re-created by resize(); methods keep their own extra targets (G-buffer).
 //
 // With --msaa the colour and depth the methods draw into are multisampled; with --supersample
-// they are K times the output size. Either way the resolve (renderer/resolve_pass.h) averages
+// they are K times the output size. Either way the resolve (renderer/passes/resolve_pass.h) averages
 // them into outputHdr(), one linear value per output pixel, before bloom and the tonemap:
 //
 //   methods ──> hdr() + depth()   [N samples, or K*W x K*H]  ──resolve──> outputHdr() ──> ldr()

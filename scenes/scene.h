@@ -64,7 +64,7 @@ struct TextureRef {
 };
 
 // glTF's alphaMode: OPAQUE, MASK (cut out at alphaCutoff) or BLEND (drawn after the opaque
-// frame, blended back to front; renderer/transparent_pass.h).
+// frame, blended back to front; renderer/passes/transparent_pass.h).
 enum class AlphaMode { Opaque, Mask, Blend };
 
 // A glTF metallic-roughness material (README, "Shading model", says how it is shaded).
@@ -130,7 +130,7 @@ struct SceneCamera {
 };
 
 // A light a glTF file places (KHR_lights_punctual) by its node's world transform, in the file's
-// own terms; the renderer turns it into its light model (renderer/light_set.h, lightsFromScene).
+// own terms; the renderer turns it into its light model (renderer/lights/light_set.h, lightsFromScene).
 struct SceneLight {
     enum class Type { Point, Spot, Directional };
     std::string name;

@@ -158,7 +158,7 @@
 #define ML_VIEW_ALBEDO 5
 #define ML_VIEW_NORMAL 6
 #define ML_VIEW_DEPTH 7
-#define ML_VIEW_OVERDRAW 8  // fragments shaded per pixel in the raster passes' draw order (renderer/overdraw_pass.h)
+#define ML_VIEW_OVERDRAW 8  // fragments shaded per pixel in the raster passes' draw order (renderer/passes/overdraw_pass.h)
 
 // --cull: the light-vs-cluster test of the assignment (the ML_CULL define of its shaders).
 #define ML_CULL_AABB 0    // sphere against the cluster's view-space AABB

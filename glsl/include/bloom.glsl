@@ -1,4 +1,4 @@
-// The bright part of a linear colour, mirrored in C++ by ml::bloomBrightPart (renderer/bloom_reference.h):
+// The bright part of a linear colour, mirrored in C++ by ml::bloomBrightPart (renderer/reference/bloom_reference.h):
 // zero at or below the threshold luminance, then growing from zero, so the bloom fades in
 // rather than switching on.
 const vec3 kLuminance = vec3(0.2126, 0.7152, 0.0722);  // Rec. 709

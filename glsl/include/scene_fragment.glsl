@@ -1,8 +1,8 @@
 // The fragment side of scene.vert: its outputs, and the material's surface at this fragment.
 // Needs material.glsl. With ML_ALPHA_TEST (the program variant for alpha-tested draw ranges,
-// renderer/raster_program.h) fragments outside the material's coverage are discarded; opaque
+// renderer/scene/raster_program.h) fragments outside the material's coverage are discarded; opaque
 // ranges are drawn without it and keep early depth testing. With ML_TRANSPARENT (the transparent
-// pass, renderer/transparent_pass.h) the shading passes write the surface's alpha for blending.
+// pass, renderer/passes/transparent_pass.h) the shading passes write the surface's alpha for blending.
 #ifndef ML_ALPHA_TEST
 #define ML_ALPHA_TEST 0
 #endif

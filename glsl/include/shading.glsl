@@ -1,5 +1,5 @@
 // The shading model shared by every method (README, "Shading model"), mirrored on the CPU by
-// renderer/shading_reference.cpp. A glTF metallic-roughness material maps onto normalized
+// renderer/reference/shading_reference.cpp. A glTF metallic-roughness material maps onto normalized
 // Blinn-Phong:
 //   diffuse = base * (1 - metallic)        f0 = mix(0.04, base, metallic)
 //   alpha = roughness^2                    shininess s = clamp(2 / alpha^2 - 2, 1, 8192)

@@ -1,4 +1,4 @@
-// Mirrored in C++ by ml::tonemapToSrgb (renderer/tonemap.h) for the tests' CPU reference.
+// Mirrored in C++ by ml::tonemapToSrgb (renderer/reference/tonemap_reference.h) for the tests' CPU reference.
 vec3 linearToSrgb(vec3 c) {
     c = clamp(c, 0.0, 1.0);
     return mix(12.92 * c, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, step(vec3(0.0031308), c));

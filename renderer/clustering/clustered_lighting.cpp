@@ -6,9 +6,9 @@
 #include <stdexcept>
 
 #include "glsl/include/bindings.h"
-#include "renderer/light_buffers.h"
+#include "renderer/lights/light_buffers.h"
 #include "renderer/methods/gbuffer.h"
-#include "renderer/transparent_pass.h"
+#include "renderer/scene/transparent_ranges.h"
 
 namespace ml {
 

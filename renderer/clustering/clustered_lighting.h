@@ -40,8 +40,8 @@
 #include "renderer/gl/program.h"
 #include "renderer/gl/texture.h"
 #include "renderer/gpu_types.h"
-#include "renderer/methods/shading_method.h"
-#include "renderer/raster_program.h"
+#include "renderer/frame_context.h"
+#include "renderer/scene/raster_program.h"
 
 namespace ml {
 

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "renderer/gpu_types.h"
-#include "renderer/light_set.h"
+#include "renderer/lights/light_set.h"
 
 namespace ml {
 

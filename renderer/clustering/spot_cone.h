@@ -9,7 +9,7 @@
 #include <glm/glm.hpp>
 
 #include "glsl/include/bindings.h"
-#include "renderer/light_set.h"
+#include "renderer/lights/light_set.h"
 #include "renderer/clustering/cluster_grid.h"
 
 namespace ml {

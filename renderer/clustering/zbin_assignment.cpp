@@ -4,7 +4,7 @@
 #include <string>
 
 #include "glsl/include/bindings.h"
-#include "renderer/light_buffers.h"
+#include "renderer/lights/light_buffers.h"
 
 namespace ml {
 

@@ -27,7 +27,7 @@
 #include "renderer/clustering/radix_sort.h"
 #include "renderer/gl/buffer.h"
 #include "renderer/gl/program.h"
-#include "renderer/methods/shading_method.h"
+#include "renderer/frame_context.h"
 
 namespace ml {
 

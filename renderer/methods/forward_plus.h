@@ -5,9 +5,9 @@
 #pragma once
 
 #include "renderer/clustering/clustered_lighting.h"
-#include "renderer/raster_program.h"
+#include "renderer/scene/raster_program.h"
 #include "renderer/methods/shading_method.h"
-#include "renderer/transparent_pass.h"
+#include "renderer/passes/transparent_pass.h"
 
 namespace ml {
 

@@ -3,7 +3,7 @@
 #include <string>
 
 #include "glsl/include/bindings.h"
-#include "renderer/material_features.h"
+#include "renderer/scene/material_features.h"
 
 namespace ml {
 

@@ -2,9 +2,9 @@
 // O(fragments x lights), and exact: the reference every other method is held to.
 #pragma once
 
-#include "renderer/raster_program.h"
+#include "renderer/scene/raster_program.h"
 #include "renderer/methods/shading_method.h"
-#include "renderer/transparent_pass.h"
+#include "renderer/passes/transparent_pass.h"
 
 namespace ml {
 

@@ -7,25 +7,10 @@
 #include <vector>
 
 #include "renderer/clustering/clustering_settings.h"
-#include "renderer/frame_targets.h"
-#include "renderer/gl/buffer.h"
-#include "renderer/gpu_types.h"
-#include "renderer/light_buffers.h"
+#include "renderer/frame_context.h"
 #include "renderer/methods/gbuffer_format.h"
-#include "renderer/pass_timer.h"
-#include "renderer/scene_gpu.h"
 
 namespace ml {
-
-// What a method may read and write in one frame.
-struct FrameContext {
-    const SceneGpu& scene;
-    const LightBuffers& lights;
-    const gl::Buffer& frameUniforms;    // bound at ML_UBO_FRAME before render()
-    const FrameUniforms& uniforms;      // the same values on the CPU
-    FrameTargets& targets;              // render into targets.hdr() (+ depth)
-    PassTimer& timer;
-};
 
 class ClusteredLighting;
 

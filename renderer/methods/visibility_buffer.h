@@ -15,8 +15,8 @@
 #include "renderer/gl/texture.h"
 #include "renderer/methods/gbuffer.h"
 #include "renderer/methods/shading_method.h"
-#include "renderer/raster_program.h"
-#include "renderer/transparent_pass.h"
+#include "renderer/scene/raster_program.h"
+#include "renderer/passes/transparent_pass.h"
 
 namespace ml {
 

@@ -1,4 +1,4 @@
-// --bloom: the GPU passes against their CPU mirror (renderer/bloom_reference.h), where bloom
+// --bloom: the GPU passes against their CPU mirror (renderer/reference/bloom_reference.h), where bloom
 // appears, and that it is the same for every method.
 #include <gtest/gtest.h>
 
@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "gpu_test.h"
-#include "renderer/bloom_reference.h"
+#include "renderer/reference/bloom_reference.h"
 
 namespace ml::test {
 namespace {

@@ -7,7 +7,7 @@
 #include <cmath>
 
 #include "gpu_test.h"
-#include "renderer/camera.h"
+#include "renderer/camera/camera.h"
 #include "tests/scenes/gltf_test_files.h"
 
 namespace ml::test {

@@ -11,8 +11,8 @@
 
 #include "renderer/context/gl_context.h"
 #include "renderer/frame_renderer.h"
-#include "renderer/image.h"
-#include "renderer/image_compare.h"
+#include "renderer/image/image.h"
+#include "renderer/image/image_compare.h"
 #include "scenes/scene.h"
 
 namespace ml::test {

@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "gpu_test.h"
-#include "renderer/shading_reference.h"
+#include "renderer/reference/shading_reference.h"
 #include "scenes/procedural_scenes.h"
 
 namespace ml::test {

@@ -1,10 +1,10 @@
-// --view overdraw (renderer/overdraw_pass.h): the count is the fragments that pass the depth
+// --view overdraw (renderer/passes/overdraw_pass.h): the count is the fragments that pass the depth
 // test at their turn in the draw order, per pixel; the view shows them as colours, black where
 // nothing was drawn.
 #include <gtest/gtest.h>
 
 #include "gpu_test.h"
-#include "renderer/overdraw_pass.h"
+#include "renderer/passes/overdraw_pass.h"
 
 namespace ml::test {
 namespace {

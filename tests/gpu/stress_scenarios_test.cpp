@@ -9,7 +9,7 @@
 
 #include "gpu_test.h"
 #include "renderer/clustering/clustered_lighting.h"
-#include "renderer/light_set.h"
+#include "renderer/lights/light_set.h"
 #include "scenes/scene_library.h"
 
 namespace ml::test {

@@ -10,7 +10,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "renderer/material_features.h"
+#include "renderer/scene/material_features.h"
 #include "tests/gpu/gpu_test.h"
 #include "tests/scenes/gltf_test_files.h"
 

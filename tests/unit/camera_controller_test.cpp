@@ -3,7 +3,7 @@
 
 #include <glm/gtc/epsilon.hpp>
 
-#include "renderer/camera_controller.h"
+#include "renderer/camera/camera_controller.h"
 
 namespace ml {
 namespace {

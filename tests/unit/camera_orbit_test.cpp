@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "renderer/camera_orbit.h"
+#include "renderer/camera/camera_orbit.h"
 
 namespace ml {
 namespace {

@@ -1,7 +1,7 @@
 // The JSON camera path of `view --camera-path`: interpolation, holds, and errors that name the culprit.
 #include <gtest/gtest.h>
 
-#include "renderer/camera_path.h"
+#include "renderer/camera/camera_path.h"
 
 namespace ml {
 namespace {

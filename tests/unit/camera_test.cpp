@@ -1,7 +1,7 @@
 // Camera maths and the --camera parser.
 #include <gtest/gtest.h>
 
-#include "renderer/camera.h"
+#include "renderer/camera/camera.h"
 
 namespace ml {
 namespace {

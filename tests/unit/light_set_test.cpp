@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "renderer/light_set.h"
+#include "renderer/lights/light_set.h"
 
 namespace ml {
 namespace {

@@ -1,8 +1,8 @@
 // The falloff and shading formula of the README, on the CPU.
 #include <gtest/gtest.h>
 
-#include "renderer/shading_reference.h"
-#include "renderer/tonemap.h"
+#include "renderer/reference/shading_reference.h"
+#include "renderer/reference/tonemap_reference.h"
 
 namespace ml {
 namespace {

@@ -11,7 +11,7 @@
 
 #include "renderer/clustering/cluster_culling.h"
 #include "renderer/clustering/spot_cone.h"
-#include "renderer/shading_reference.h"
+#include "renderer/reference/shading_reference.h"
 
 namespace ml::test {
 namespace {

@@ -1,4 +1,4 @@
-// --triangle-order (renderer/triangle_order.h): reordering keeps every draw range's triangles,
+// --triangle-order (renderer/scene/triangle_order.h): reordering keeps every draw range's triangles,
 // each with its winding, and only reorders them within the range.
 #include <gtest/gtest.h>
 
@@ -7,7 +7,7 @@
 
 #include <meshoptimizer.h>
 
-#include "renderer/triangle_order.h"
+#include "renderer/scene/triangle_order.h"
 #include "scenes/scene_library.h"
 
 namespace ml {

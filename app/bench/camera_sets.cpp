@@ -1,0 +1,37 @@
+#include "app/bench/camera_sets.h"
+
+namespace ml::app {
+
+namespace {
+
+struct CameraSet {
+    const char* name;
+    std::vector<std::string> cameras;  // `--camera` values: "default" or px,py,pz,tx,ty,tz,fovy
+};
+
+const std::vector<CameraSet>& cameraSets() {
+    static const std::vector<CameraSet> sets = {
+        {"atrium-set",
+         {"default",                          // the atrium's suggested view
+          "-15,1.7,-6.3,15,1.7,-6.3,60",      // gallery: eye height, along the ground-floor gallery
+          "0,28,0.5,0,0,0,60",                // roof: straight down from above the roof
+          "-16,3,-4.5,16,1.5,4.5,60"}},       // corner: across the courtyard from a corner
+    };
+    return sets;
+}
+
+}  // namespace
+
+std::optional<std::vector<std::string>> namedCameraSet(const std::string& name) {
+    for (const CameraSet& s : cameraSets())
+        if (name == s.name) return s.cameras;
+    return std::nullopt;
+}
+
+std::string cameraSetNames() {
+    std::string list;
+    for (const CameraSet& s : cameraSets()) list += (list.empty() ? "" : ", ") + std::string(s.name);
+    return list;
+}
+
+}  // namespace ml::app

@@ -1,0 +1,84 @@
+// The view's Dear ImGui panel: the controls, which edit a ViewSettings, and the statistics block
+// (frame time and its graph, per-pass GPU times, cluster statistics, memory, GL renderer).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "renderer/passes/bloom_pass.h"
+#include "renderer/camera/camera_controller.h"
+#include "renderer/clustering/cluster_statistics.h"
+#include "renderer/methods/shading_method.h"
+#include "renderer/pass_timer.h"
+
+namespace ml::app {
+
+// What the user can change while the view runs. Starts from the command line's flags.
+struct ViewSettings {
+    // As chosen: a debug view stays selected while naive (which has none) is shown.
+    MethodSettings method;
+    int lightCount = 1024;        // generated lights
+    float lightRadius = 1.0f;
+    float spotShare = 0.0f;       // share of generated lights that are spots
+    float spotAngle = 0.0f;       // their outer cone angle in degrees; 0: each in [20, 60]
+    bool sceneLights = true;      // the scene file's own lights
+    bool animate = true;
+    float animationSpeed = 1.0f;  // times real time
+    float exposure = 1.0f;
+    DrawSubmission draw = DrawSubmission::Direct;
+    bool backfaceCulling = true;
+    bool transparency = true;     // draw the scene's BLEND surfaces
+    bool specular = true;
+    BloomSettings bloom;
+    bool vsync = true;
+    float renderScale = 1.0f;  // the renderer's size over the window's (app/view/render_scale.h)
+    CameraMode cameraMode = CameraMode::Fly;
+    int sceneCamera = -1;  // the scene file's camera last chosen (Scene::cameras), -1: free camera
+};
+
+// The largest light count the slider offers.
+inline constexpr int kMaxViewLights = 1'000'000;
+
+// What the statistics block shows; gathered by the view each frame.
+struct ViewStatistics {
+    double frameMilliseconds = 0.0;          // mean wall-clock time between frames
+    std::vector<float> frameGraph;           // recent frame times, oldest first
+    std::vector<PassTime> passes;            // mean per pass over recent frames
+    TimingClock clock = TimingClock::GpuQueries;
+    std::optional<ClusterStatistics> clusters;  // clustered methods; refreshed a few times a second
+    std::size_t rendererBytes = 0;           // the renderer's buffers and targets
+    std::optional<GBufferFormat> gbuffer;    // the layout, where the method has a G-buffer
+    std::optional<std::size_t> gpuUsedBytes; // the whole GPU, where GL_NVX_gpu_memory_info says
+    std::string glRenderer, glVersion;
+    int width = 0, height = 0;                // the renderer's (the window's times the render scale)
+    std::string renderScaleNote;             // why the scale is what it is, when chosen automatically
+    std::size_t lights = 0;
+    bool lightsFromFile = false;
+    std::size_t sceneLights = 0;             // lights the scene file brings (KHR_lights_punctual)
+    std::size_t transparentRanges = 0;       // the scene's BLEND draw ranges
+    float sceneSize = 1.0f;                  // bounds' diagonal: the radius slider's scale
+    float flySpeed = 0.0f;
+    std::vector<std::string> sceneCameras;   // the scene file's cameras as the panel lists them
+    int glErrors = 0;
+    std::string error;                       // the last change that failed, and why
+};
+
+struct PanelEdits {
+    bool method = false;      // method, grid, assignment, resolve or debug view
+    bool lights = false;      // count or radius (applied when the slider is let go)
+    bool vsync = false;
+    bool renderScale = false;  // applied when the slider is let go
+    bool cameraMode = false;
+    bool resetCamera = false;
+    bool sceneCamera = false;  // a camera of the scene file was chosen
+    bool screenshot = false;
+};
+
+PanelEdits drawViewPanel(ViewSettings& settings, const ViewStatistics& stats);
+
+// The settings a FrameRenderer gets: naive shows no debug view (the tonemap would otherwise
+// treat its shaded colour as a debug colour); deferred and visibility draw without MSAA.
+MethodSettings effectiveMethod(const MethodSettings& chosen);
+
+}  // namespace ml::app

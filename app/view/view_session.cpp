@@ -1,0 +1,419 @@
+#include "app/view/view_session.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+
+#include "renderer/gl/gl_api.h"  // before glfw3.h, which must not include GL/gl.h itself
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+#include "app/view/render_scale.h"
+#include "app/report.h"
+#include "app/view/window_capture.h"
+#include "renderer/clustering/clustered_lighting.h"
+#include "renderer/gl/debug_output.h"
+
+namespace ml::app {
+
+namespace {
+
+// GL_NVX_gpu_memory_info (NVIDIA, some Mesa drivers): sizes in KiB. glad is generated for the
+// core profile only, so the two enums are spelled out here.
+constexpr GLenum kGpuMemoryTotalNvx = 0x9048;
+constexpr GLenum kGpuMemoryAvailableNvx = 0x9049;
+
+bool hasExtension(const char* name) {
+    GLint count = 0;
+    glGetIntegerv(GL_NUM_EXTENSIONS, &count);
+    for (GLint i = 0; i < count; ++i) {
+        const auto* ext = reinterpret_cast<const char*>(glGetStringi(GL_EXTENSIONS, static_cast<GLuint>(i)));
+        if (ext && std::strcmp(ext, name) == 0) return true;
+    }
+    return false;
+}
+
+// Statistics read back (a GPU sync) this often while interactive, not every frame.
+constexpr double kStatisticsInterval = 0.25;
+// A longer gap (a stall, a window drag) counts as this much: the camera does not leap.
+constexpr double kMaxFrameSeconds = 0.5;
+
+float diagonal(const Bounds& b) { return b.empty() ? 1.0f : glm::length(b.size()); }
+
+}  // namespace
+
+ViewSession::ViewSession(const ViewOptions& options, PreparedFrame frame, std::optional<CameraPath> path)
+    : options_(options),
+      frame_(std::move(frame)),
+      path_(std::move(path)),
+      followPath_(path_.has_value()),
+      window_("manylights view", frame_.settings.width, frame_.settings.height, frame_.context),
+      input_(window_.handle()),
+      controller_(frame_.settings.camera, diagonal(frame_.scene.bounds)) {
+    gl::enableDebugOutput(options.frame.glDebug ? gl::DebugVerbosity::All : gl::DebugVerbosity::ErrorsOnly);
+    info_ = queryGlInfo();
+    nvxMemoryInfo_ = hasExtension("GL_NVX_gpu_memory_info");
+    if (options.frame.verbose)
+        std::printf("GL_RENDERER: %s\nGL_VERSION: %s\nplatform: %s\n", info_.renderer.c_str(), info_.version.c_str(),
+                    window_.platform().c_str());
+    imgui_ = std::make_unique<ImGuiLayer>(window_.handle());
+
+    // The window may be given another size than asked for (a tiling window manager, HiDPI):
+    // the renderer follows the framebuffer.
+    int w = 0, h = 0;
+    window_.framebufferSize(w, h);
+    if (w > 0 && h > 0) {
+        if (options.scripted() && (w != frame_.settings.width || h != frame_.settings.height))
+            std::fprintf(stderr, "warning: the window is %dx%d, not the --size %dx%d asked for\n", w, h,
+                         frame_.settings.width, frame_.settings.height);
+        frame_.settings.width = w;
+        frame_.settings.height = h;
+    }
+    chooseRenderScale();
+    frame_.settings.width = scaledSide(frame_.settings.width, settings_.renderScale);
+    frame_.settings.height = scaledSide(frame_.settings.height, settings_.renderScale);
+    frame_.settings.timing = true;
+    frame_.settings.clock = info_.software ? TimingClock::WallClockAfterFinish : TimingClock::GpuQueries;
+    frame_.settings.readback = TimingReadback::Latest;
+    settings_.method = frame_.settings.method;
+    workingMethod_ = settings_.method;
+    frame_.settings.method = effectiveMethod(settings_.method);
+    renderer_ = std::make_unique<FrameRenderer>(frame_.scene, frame_.lights, frame_.settings);
+
+    const std::size_t generated = options.frame.lightsFile.empty()
+                                      ? static_cast<std::size_t>(generatedLightCount(options.frame, frame_.scene))
+                                      : frame_.lights.size();
+    settings_.lightCount = static_cast<int>(std::min<std::size_t>(generated, kMaxViewLights));
+    settings_.spotShare = options.frame.spotShare;
+    settings_.spotAngle = options.frame.spotAngle;
+    settings_.sceneLights = options.frame.sceneLights == "on";
+    stats_.sceneLights = frame_.scene.lights.size();
+    stats_.transparentRanges = renderer_ ? renderer_->scene().transparentRangeCount() : 0;
+    settings_.lightRadius = options.frame.lightRadius.value_or(defaultLightRadius(frame_.scene.bounds));
+    settings_.exposure = options.frame.exposure;
+    settings_.draw = parseDrawSubmission(options.frame.draw);
+    settings_.backfaceCulling = frame_.settings.backfaceCulling;
+    settings_.transparency = frame_.settings.transparency;
+    settings_.specular = frame_.settings.specular;
+    settings_.bloom = frame_.settings.bloom;
+    settings_.vsync = !options.noVsync;
+    showPanel_ = !options.hidePanel;
+
+    stats_.glRenderer = info_.renderer;
+    stats_.glVersion = info_.version;
+    stats_.clock = frame_.settings.clock;
+    stats_.sceneSize = diagonal(frame_.scene.bounds);
+    for (std::size_t i = 0; i < frame_.scene.cameras.size(); ++i) {
+        const std::string& name = frame_.scene.cameras[i].name;
+        stats_.sceneCameras.push_back("gltf:" + std::to_string(i) + (name.empty() ? "" : " " + name));
+    }
+    if (namesSceneCamera(options.frame.camera))  // checked when the frame was prepared
+        settings_.sceneCamera = static_cast<int>(sceneCameraIndex(options.frame.camera, frame_.scene.cameras.size()));
+    stats_.lightsFromFile = !options.frame.lightsFile.empty();
+}
+
+ViewSession::~ViewSession() {
+    // GL objects go while the context is still current.
+    renderer_.reset();
+    imgui_.reset();
+}
+
+void ViewSession::chooseRenderScale() {
+    if (options_.renderScale) {
+        settings_.renderScale = *options_.renderScale;
+        return;
+    }
+    // --screenshot promises render's pixels at --size: a scripted screenshot keeps full size.
+    if (!info_.software || !options_.screenshot.empty()) return;
+    const int w = frame_.settings.width, h = frame_.settings.height;
+    settings_.renderScale = softwareRenderScale(w, h);
+    if (settings_.renderScale >= 1.0f) return;
+    std::string tiles;
+    ClusterGridConfig& grid = frame_.settings.method.clustering.grid;
+    if (!options_.tilesGiven && grid.tilesX > kSoftwareTilesX) {
+        grid.tilesX = kSoftwareTilesX;
+        tiles = ", " + std::to_string(kSoftwareTilesX) + " tiles across";
+    }
+    char note[256];
+    std::snprintf(note, sizeof note, "software GL renderer: drawn at %.2f scale (%dx%d%s), scaled up to the window",
+                  settings_.renderScale, scaledSide(w, settings_.renderScale), scaledSide(h, settings_.renderScale),
+                  tiles.c_str());
+    stats_.renderScaleNote = note;
+    std::fprintf(stderr, "notice: %s (%s); --render-scale 1 for full resolution\n", note, info_.renderer.c_str());
+}
+
+Camera ViewSession::fitted(Camera camera) const {
+    fitClipPlanes(camera, frame_.scene.bounds);
+    if (options_.frame.nearPlane) camera.nearPlane = *options_.frame.nearPlane;
+    if (options_.frame.farPlane) camera.farPlane = *options_.frame.farPlane;
+    return camera;
+}
+
+Camera ViewSession::interactiveCamera(double now) {
+    if (followPath_) {
+        const auto frame = static_cast<std::uint32_t>((now - startTime_) / kSecondsPerFrame);
+        return fitted(path_->at(frame + frame_.frameIndex));
+    }
+    return fitted(controller_.camera());
+}
+
+void ViewSession::handleKeys(const std::vector<int>& keys) {
+    for (int key : keys) {
+        switch (key) {
+        case GLFW_KEY_1:
+        case GLFW_KEY_2:
+        case GLFW_KEY_3:
+        case GLFW_KEY_4:
+        case GLFW_KEY_5: {
+            // The methods in the order the panel lists them: 1 naive, 2 Forward+, 3 deferred, ...
+            const auto index = static_cast<std::size_t>(key - GLFW_KEY_1);
+            if (index >= methodNames().size()) break;
+            settings_.method.kind = parseMethod(methodNames()[index]);
+            setMethodOrExplain(settings_.method);
+            break;
+        }
+        case GLFW_KEY_F1:
+        case GLFW_KEY_H: showPanel_ = !showPanel_; break;
+        case GLFW_KEY_F12: screenshotRequested_ = true; break;
+        case GLFW_KEY_R:
+            followPath_ = false;
+            controller_.reset();
+            break;
+        case GLFW_KEY_C:
+            settings_.cameraMode = settings_.cameraMode == CameraMode::Fly ? CameraMode::Orbit : CameraMode::Fly;
+            controller_.setMode(settings_.cameraMode);
+            break;
+        case GLFW_KEY_ESCAPE: glfwSetWindowShouldClose(window_.handle(), GLFW_TRUE); break;
+        default: break;
+        }
+    }
+}
+
+void ViewSession::setMethodOrExplain(const MethodSettings& method) {
+    try {
+        validateGridConfig(method.clustering.grid);
+        renderer_->setMethod(effectiveMethod(method));
+        workingMethod_ = method;
+        stats_.error.clear();
+        stats_.clusters.reset();
+        lastStatistics_ = -1.0;
+    } catch (const std::exception& e) {
+        stats_.error = e.what();
+        settings_.method = workingMethod_;
+        renderer_->setMethod(effectiveMethod(workingMethod_));
+    }
+}
+
+void ViewSession::regenerateLights() {
+    LightGeneration gen;
+    gen.count = static_cast<std::uint32_t>(std::clamp(settings_.lightCount, 0, kMaxViewLights));
+    gen.radius = settings_.lightRadius;
+    gen.intensity = options_.frame.lightIntensity;
+    gen.seed = static_cast<std::uint32_t>(options_.frame.seed);
+    gen.spotShare = settings_.spotShare;
+    gen.spotAngleDeg = settings_.spotAngle;
+    frame_.lights = settings_.sceneLights ? lightsFromScene(frame_.scene) : std::vector<Light>{};
+    const std::vector<Light> generatedLights = generateLights(lightVolume(frame_.scene.bounds), gen);
+    frame_.lights.insert(frame_.lights.end(), generatedLights.begin(), generatedLights.end());
+    renderer_->setLights(frame_.lights);
+    stats_.lightsFromFile = false;
+    lastStatistics_ = -1.0;
+}
+
+void ViewSession::applyEdits(const PanelEdits& edits) {
+    if (edits.method) setMethodOrExplain(settings_.method);
+    if (edits.lights) regenerateLights();
+    if (edits.vsync) window_.setVsync(settings_.vsync);
+    if (edits.renderScale) stats_.renderScaleNote.clear();  // the user's choice now, not ours
+    if (edits.cameraMode) controller_.setMode(settings_.cameraMode);
+    if (edits.resetCamera) {
+        followPath_ = false;
+        controller_.reset();
+        settings_.sceneCamera = -1;
+    }
+    // A file camera is where the free camera starts from: moving on from it is flying as usual.
+    if (edits.sceneCamera && settings_.sceneCamera >= 0) {
+        followPath_ = false;
+        controller_.jumpTo(cameraFromSceneCamera(frame_.scene.cameras[static_cast<std::size_t>(settings_.sceneCamera)]));
+    }
+    if (edits.screenshot) screenshotRequested_ = true;
+    renderer_->setExposure(settings_.exposure);
+    renderer_->setDrawSubmission(settings_.draw);
+    renderer_->setBackfaceCulling(settings_.backfaceCulling);
+    renderer_->setTransparency(settings_.transparency);
+    renderer_->setSpecular(settings_.specular);
+    renderer_->setBloom(settings_.bloom);
+}
+
+void ViewSession::refreshStatistics(bool now, bool rendered) {
+    const double t = glfwGetTime();
+    stats_.frameMilliseconds = history_.meanFrameMilliseconds();
+    stats_.frameGraph = history_.frameGraph();
+    stats_.passes = history_.meanPasses();
+    stats_.width = renderer_->settings().width;
+    stats_.height = renderer_->settings().height;
+    stats_.lights = renderer_->lights().count();
+    stats_.flySpeed = controller_.flySpeed();
+    stats_.glErrors = gl::debugErrorCount();
+    // A method that has not built its lists yet has no statistics to read.
+    if (!rendered || (!now && lastStatistics_ >= 0.0 && t - lastStatistics_ < kStatisticsInterval)) return;
+    lastStatistics_ = t;
+    const ClusteredLighting* clustering = renderer_->method().clustering();
+    if (clustering) stats_.clusters = clustering->statistics();
+    else stats_.clusters.reset();
+    const MethodSettings& method = renderer_->settings().method;
+    if (method.kind == MethodKind::Deferred || method.kind == MethodKind::Visibility) stats_.gbuffer = method.gbuffer;
+    else stats_.gbuffer.reset();
+    std::size_t bytes = renderer_->scene().bytes() + renderer_->lights().bytes() + renderer_->targets().bytes() +
+                        renderer_->method().extraTargetBytes() + renderer_->bloom().bytes();
+    if (stats_.clusters) bytes += stats_.clusters->listBytes + stats_.clusters->gridBytes;
+    stats_.rendererBytes = bytes;
+    if (nvxMemoryInfo_) {
+        GLint totalKiB = 0, availableKiB = 0;
+        glGetIntegerv(kGpuMemoryTotalNvx, &totalKiB);
+        glGetIntegerv(kGpuMemoryAvailableNvx, &availableKiB);
+        stats_.gpuUsedBytes = static_cast<std::size_t>(std::max(0, totalKiB - availableKiB)) * 1024;
+    }
+}
+
+void ViewSession::writeWindowScreenshot(const std::string& path, int width, int height) {
+    writePng(path, readWindowPixels(width, height));
+    std::printf("wrote %s (window %dx%d%s)\n", std::filesystem::absolute(path).string().c_str(), width, height,
+                showPanel_ ? ", panel shown" : "");
+    std::fflush(stdout);
+}
+
+int ViewSession::run() {
+    const bool scripted = options_.scripted();
+    // Scripted: animation frames 1..N, so the last is frame N, the frame `render --frames N` writes.
+    const std::uint32_t lastFrame = frame_.frameIndex;
+    std::uint32_t frameIndex = lastFrame > 0 ? 1 : 0;
+    double animationTime = frame_.frameIndex * static_cast<double>(kSecondsPerFrame);
+    window_.setVsync(!scripted && settings_.vsync);
+    startTime_ = glfwGetTime();
+    double previous = startTime_;
+    std::size_t framesShown = 0;
+
+    while (!window_.shouldClose()) {
+        glfwPollEvents();
+        int width = 0, height = 0;
+        window_.framebufferSize(width, height);
+        const bool iconified = glfwGetWindowAttrib(window_.handle(), GLFW_ICONIFIED) == GLFW_TRUE;
+        if (width == 0 || height == 0 || (iconified && !scripted)) {
+            // Minimised (0 x 0 on some platforms, iconified on X11): nothing to show; sleep until
+            // the window changes.
+            glfwWaitEvents();
+            previous = glfwGetTime();
+            continue;
+        }
+        const double now = glfwGetTime();
+        // The statistics show the real interval; the camera and the animation step by at most
+        // kMaxFrameSeconds.
+        const double elapsed = now - previous;
+        const double seconds = std::min(elapsed, kMaxFrameSeconds);
+        previous = now;
+        if (framesShown > 0) history_.addFrame(elapsed * 1000.0);
+        const int renderWidth = scaledSide(width, settings_.renderScale);
+        const int renderHeight = scaledSide(height, settings_.renderScale);
+        if (renderWidth != renderer_->settings().width || renderHeight != renderer_->settings().height)
+            renderer_->resize(renderWidth, renderHeight);
+
+        const bool panelHasFocus = showPanel_ && !scripted;
+        FrameInput input = input_.collect(controller_.mode(), panelHasFocus && imgui_->wantsMouse(),
+                                          panelHasFocus && imgui_->wantsKeyboard());
+        Camera camera;
+        if (scripted) {
+            camera = path_ ? fitted(path_->at(frameIndex)) : frame_.settings.camera;
+        } else {
+            handleKeys(input.pressedKeys);
+            if (followPath_ && !input.camera.idle()) {
+                // The user takes over from wherever the path had got to.
+                controller_.jumpTo(interactiveCamera(now));
+                followPath_ = false;
+            }
+            controller_.update(input.camera, static_cast<float>(seconds));
+            if (settings_.animate) animationTime += seconds * settings_.animationSpeed;
+            camera = interactiveCamera(now);
+        }
+        renderer_->setCamera(camera);
+
+        bool rendered = true;
+        try {
+            history_.addPasses(scripted ? renderer_->render(frameIndex)
+                                        : renderer_->renderAt(static_cast<float>(animationTime)));
+        } catch (const std::exception& e) {
+            if (scripted) throw;
+            // A setting the GPU cannot hold (e.g. capped lists over the storage limit): go back
+            // to the last method that worked. The panel is still drawn (over the last good
+            // frame), so a light count that is the cause can be lowered there.
+            stats_.error = std::string("reverted: ") + e.what();
+            settings_.method = workingMethod_;
+            renderer_->setMethod(effectiveMethod(workingMethod_));
+            rendered = false;
+        }
+        const bool lastScripted = scripted && frameIndex >= lastFrame;
+        refreshStatistics(scripted, rendered);
+
+        // The renderer's image fills the window; the panel is drawn over it.
+        const int drawnWidth = renderer_->settings().width, drawnHeight = renderer_->settings().height;
+        const bool scaled = drawnWidth != width || drawnHeight != height;
+        glBlitNamedFramebuffer(renderer_->targets().ldrFramebuffer().id(), 0, 0, 0, drawnWidth, drawnHeight, 0, 0, width,
+                               height, GL_COLOR_BUFFER_BIT, scaled ? GL_LINEAR : GL_NEAREST);
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        glViewport(0, 0, width, height);
+        // ImGui's backend saves and restores the current program and vertex array; after a
+        // failed frame they can be a replaced method's deleted objects, which it cannot restore.
+        glUseProgram(0);
+        glBindVertexArray(0);
+        PanelEdits edits;
+        if (framesShown == 0 && showPanel_) {
+            ViewSettings scratch = settings_;
+            imgui_->beginFrame();
+            drawViewPanel(scratch, stats_);
+            imgui_->discardFrame();
+        }
+        imgui_->beginFrame();
+        if (showPanel_) edits = drawViewPanel(settings_, stats_);
+        imgui_->endFrame();
+
+        if (screenshotRequested_ && !scripted) {
+            screenshotRequested_ = false;
+            try {
+                writeWindowScreenshot(freeScreenshotPath(std::filesystem::current_path()).string(), width, height);
+            } catch (const std::exception& e) {
+                stats_.error = e.what();
+            }
+        }
+        if (lastScripted && !options_.screenshotWindow.empty()) writeWindowScreenshot(options_.screenshotWindow, width, height);
+        window_.swapBuffers();
+        ++framesShown;
+
+        if (scripted) {
+            if (lastScripted) return finishScript();
+            ++frameIndex;
+        } else {
+            applyEdits(edits);
+        }
+    }
+    return 0;
+}
+
+int ViewSession::finishScript() {
+    if (!options_.screenshot.empty()) {
+        writePng(options_.screenshot, renderer_->readLdr());
+        std::printf("wrote %s (%dx%d, %s, %s, %u lights, frame %u)\n", options_.screenshot.c_str(),
+                    renderer_->settings().width, renderer_->settings().height, frame_.scene.name.c_str(),
+                    methodName(renderer_->settings().method.kind).c_str(), renderer_->lights().count(), frame_.frameIndex);
+    }
+    if (!options_.frame.saveLights.empty()) saveLightsFile(options_.frame.saveLights, renderer_->lights().downloadAnimated());
+    if (options_.frame.time) printPassTimes(history_.meanPasses(), frame_.settings.clock);
+    if (gl::debugErrorCount() > 0) {
+        std::fprintf(stderr, "error: %d GL error(s); last: %s\n", gl::debugErrorCount(), gl::lastDebugError().c_str());
+        return 1;
+    }
+    return 0;
+}
+
+}  // namespace ml::app

@@ -1,0 +1,85 @@
+// One run of `manylights view`: the window, the renderer, the camera, the panel, and the frame
+// loop that ties them together, interactively or scripted (--frames/--screenshot).
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "app/frame_options.h"
+#include "app/view/gui_layer.h"
+#include "app/view/timing_history.h"
+#include "app/view/view_input.h"
+#include "app/view/view_panel.h"
+#include "renderer/camera/camera_controller.h"
+#include "renderer/camera/camera_path.h"
+#include "renderer/context/glfw_window.h"
+#include "renderer/frame_renderer.h"
+
+namespace ml::app {
+
+struct ViewOptions {
+    FrameOptions frame;
+    std::string screenshot;        // the renderer's image of the last frame (as `render --out` writes it)
+    std::string screenshotWindow;  // the window as shown, panel included
+    std::string cameraPath;
+    bool noVsync = false;
+    bool hidePanel = false;
+    std::optional<float> renderScale;  // unset: automatic (render_scale.h)
+    bool tilesGiven = false;           // --tiles-x on the command line: the automatic scale keeps it
+
+    // Scripted: render frames up to --frames, write the screenshots, exit; user input is ignored.
+    bool scripted() const { return frame.frames > 0 || !screenshot.empty() || !screenshotWindow.empty(); }
+};
+
+class ViewSession {
+public:
+    // Opens the window (throws ContextError when there is no display or no GL 4.5 core) and
+    // builds the renderer.
+    ViewSession(const ViewOptions& options, PreparedFrame frame, std::optional<CameraPath> path);
+    ~ViewSession();
+    ViewSession(const ViewSession&) = delete;
+    ViewSession& operator=(const ViewSession&) = delete;
+
+    // Runs until the window closes (or the script ends); returns the exit status.
+    int run();
+
+private:
+    void handleKeys(const std::vector<int>& keys);
+    Camera fitted(Camera camera) const;
+    Camera interactiveCamera(double now);
+    // Frame and pass times every frame; the read-backs (a GPU sync) every kStatisticsInterval,
+    // or at once with `now`.
+    void refreshStatistics(bool now, bool rendered);
+    void drawPanel();
+    void applyEdits(const PanelEdits& edits);
+    void regenerateLights();
+    void setMethodOrExplain(const MethodSettings& method);
+    // Chooses the starting render scale and says why; needs info_.
+    void chooseRenderScale();
+    void writeWindowScreenshot(const std::string& path, int width, int height);
+    int finishScript();
+
+    const ViewOptions& options_;
+    PreparedFrame frame_;
+    std::optional<CameraPath> path_;
+    bool followPath_ = false;
+    GlfwWindow window_;  // before everything that holds GL objects, so it is destroyed last
+    GlInfo info_;
+    bool nvxMemoryInfo_ = false;
+    ViewInput input_;
+    std::unique_ptr<ImGuiLayer> imgui_;
+    std::unique_ptr<FrameRenderer> renderer_;
+    CameraController controller_;
+
+    ViewSettings settings_;
+    MethodSettings workingMethod_;  // the last method that rendered; restored when a change fails
+    bool showPanel_ = true;
+    bool screenshotRequested_ = false;
+    TimingHistory history_;
+    ViewStatistics stats_;
+    double lastStatistics_ = -1.0;
+    double startTime_ = 0.0;
+};
+
+}  // namespace ml::app

@@ -1,0 +1,19 @@
+#include "renderer/passes/tonemap_pass.h"
+
+#include "glsl/include/bindings.h"
+
+namespace ml {
+
+TonemapPass::TonemapPass() : program_(gl::Program::compute("tonemap.comp")) {}
+
+void TonemapPass::run(const FrameTargets& targets, float exposure, bool displayColors) const {
+    program_.use();
+    program_.set("u_exposure", exposure);
+    program_.set("u_displayColors", displayColors ? 1u : 0u);
+    glBindImageTexture(ML_IMG_HDR, targets.outputHdr().id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
+    glBindImageTexture(ML_IMG_LDR, targets.ldr().id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
+    glDispatchCompute(gl::groupsFor(targets.outputWidth(), ML_TONEMAP_TILE), gl::groupsFor(targets.outputHeight(), ML_TONEMAP_TILE), 1);
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+}
+
+}  // namespace ml

@@ -1,0 +1,68 @@
+#include "renderer/reference/shading_reference.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace ml {
+
+float lightFalloff(float d, float radius) {
+    if (d >= radius) return 0.0f;
+    const float x = d / radius;
+    const float x2 = x * x;
+    const float w = std::clamp(1.0f - x2 * x2, 0.0f, 1.0f);
+    return (w * w) / (d * d + 1.0f);
+}
+
+float spotAttenuation(float cosToAxis, float cosInner, float cosOuter) {
+    if (cosToAxis <= cosOuter) return 0.0f;
+    if (cosToAxis >= cosInner) return 1.0f;
+    const float t = (cosToAxis - cosOuter) / (cosInner - cosOuter);
+    return t * t;
+}
+
+ShadingTerms shadingTerms(const glm::vec3& baseColor, float metallic, float roughness) {
+    ShadingTerms t;
+    const float m = std::clamp(metallic, 0.0f, 1.0f);
+    const float alpha = std::clamp(roughness, 0.0f, 1.0f) * std::clamp(roughness, 0.0f, 1.0f);
+    t.shininess = std::clamp(2.0f / std::max(alpha * alpha, 1e-6f) - 2.0f, 1.0f, 8192.0f);
+    t.diffuse = baseColor * (1.0f - m);
+    t.f0 = glm::mix(glm::vec3(0.04f), baseColor, m);
+    t.specular = t.f0 * ((t.shininess + 8.0f) / 8.0f);
+    return t;
+}
+
+glm::vec3 shadeReference(const SurfaceSample& s, const glm::vec3& eye, const std::vector<Light>& lights, float ambient,
+                         bool specular) {
+    const ShadingTerms t = shadingTerms(s.baseColor, s.metallic, s.roughness);
+    glm::vec3 color = ambient * s.occlusion * (t.diffuse + t.f0) + s.emissive;
+    const glm::vec3 v = glm::normalize(eye - s.position);
+    // A light of colour c from unit direction `dir`, weighted by its falloff and cone.
+    const auto incoming = [&](const glm::vec3& dir, const glm::vec3& c, float weight) {
+        const float nDotL = glm::dot(s.normal, dir);
+        if (nDotL <= 0.0f) return glm::vec3(0.0f);
+        if (!specular) return c * (weight * nDotL) * t.diffuse;
+        const glm::vec3 h = glm::normalize(dir + v);
+        const float spec = std::pow(std::max(glm::dot(s.normal, h), 0.0f), t.shininess);
+        return c * (weight * nDotL) * (t.diffuse + t.specular * spec);
+    };
+    // Directional lights first, as the shaders add them to the unlit terms (sun_lights.glsl).
+    for (const Light& l : lights)
+        if (l.type == LightType::Directional) color += incoming(-glm::normalize(l.direction), l.color, 1.0f);
+    for (const Light& l : lights) {
+        if (l.type == LightType::Directional) continue;
+        const glm::vec3 toLight = l.position - s.position;
+        const float d = glm::length(toLight);
+        float falloff = lightFalloff(d, l.radius);
+        if (falloff <= 0.0f) continue;
+        const glm::vec3 dir = toLight / std::max(d, 1e-6f);
+        if (l.type == LightType::Spot) {
+            falloff *= spotAttenuation(glm::dot(-dir, glm::normalize(l.direction)), std::cos(l.innerConeAngle),
+                                       std::cos(l.outerConeAngle));
+            if (falloff <= 0.0f) continue;
+        }
+        color += incoming(dir, l.color, falloff);
+    }
+    return color;
+}
+
+}  // namespace ml

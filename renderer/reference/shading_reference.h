@@ -1,0 +1,44 @@
+// CPU mirror of glsl/include/shading.glsl, for tests that check the GPU against the formula.
+#pragma once
+
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "renderer/lights/light_set.h"
+
+namespace ml {
+
+float lightFalloff(float distance, float radius);
+
+// glTF's angular attenuation of a spot (KHR_lights_punctual): saturate((cos - cosOuter) /
+// (cosInner - cosOuter))^2, exactly 0 at and outside the outer cone, 1 inside the inner.
+float spotAttenuation(float cosToAxis, float cosInner, float cosOuter);
+
+// A material's parameters at one surface point, after its textures (README, "Shading model").
+struct SurfaceSample {
+    glm::vec3 position;
+    glm::vec3 normal;     // unit length, after any normal map
+    glm::vec3 baseColor;  // linear
+    float metallic = 0.0f;
+    float roughness = 0.5f;
+    float occlusion = 1.0f;       // ambient only
+    glm::vec3 emissive{0.0f};     // added as is; lights nothing else
+};
+
+// The metallic-roughness mapping onto normalized Blinn-Phong, shared by every method.
+struct ShadingTerms {
+    glm::vec3 diffuse;   // baseColor * (1 - metallic)
+    glm::vec3 f0;        // mix(0.04, baseColor, metallic)
+    glm::vec3 specular;  // f0 * (shininess + 8) / 8
+    float shininess;     // 2 / alpha^2 - 2, alpha = roughness^2, clamped to [1, 8192]
+};
+ShadingTerms shadingTerms(const glm::vec3& baseColor, float metallic, float roughness);
+
+// The linear radiance the shaders compute for a surface point seen from `eye`, from lights of
+// every type (glsl/include/shading.glsl and sun_lights.glsl); without
+// `specular` the Blinn-Phong term is left out (--specular off).
+glm::vec3 shadeReference(const SurfaceSample& s, const glm::vec3& eye, const std::vector<Light>& lights, float ambient,
+                         bool specular = true);
+
+}  // namespace ml

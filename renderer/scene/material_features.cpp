@@ -1,0 +1,74 @@
+#include "renderer/scene/material_features.h"
+
+#include <cmath>
+#include <vector>
+
+#include "glsl/include/bindings.h"
+
+namespace ml {
+
+std::uint32_t materialFeatures(const Scene& scene) {
+    std::vector<bool> drawn(scene.materials.size(), false);
+    for (const DrawRange& d : scene.draws)
+        if (d.material < drawn.size()) drawn[d.material] = true;
+    std::uint32_t f = 0;
+    const auto uses = [&](const TextureRef& t) {
+        if (!t.present()) return false;
+        if (!t.transform.isIdentity()) f |= ML_FEATURE_TEXTURE_TRANSFORM;
+        if (t.texCoord == 1 && !scene.uv1.empty()) f |= ML_FEATURE_UV1;
+        return true;
+    };
+    for (std::size_t i = 0; i < scene.materials.size(); ++i) {
+        if (!drawn[i]) continue;
+        const Material& m = scene.materials[i];
+        uses(m.baseColorTexture);
+        if (uses(m.metallicRoughnessTexture)) f |= ML_FEATURE_METALLIC_ROUGHNESS_MAP;
+        // A normal map needs tangents; the loader and the procedural scenes provide them for
+        // every vertex when any material has one.
+        if (!scene.tangents.empty() && uses(m.normalTexture)) f |= ML_FEATURE_NORMAL_MAP;
+        if (uses(m.occlusionTexture)) f |= ML_FEATURE_OCCLUSION_MAP;
+        if (m.emissive != glm::vec3(0.0f)) {
+            f |= ML_FEATURE_EMISSIVE;
+            if (uses(m.emissiveTexture)) f |= ML_FEATURE_EMISSIVE_MAP;
+        }
+        if (m.alphaTested()) f |= ML_FEATURE_ALPHA_TEST;
+        if (m.blended()) f |= ML_FEATURE_BLEND;
+    }
+    if (!scene.colors.empty()) f |= ML_FEATURE_VERTEX_COLOR;
+    return f;
+}
+
+shaders::Defines materialFeatureDefines(std::uint32_t features) {
+    return {{"ML_MATERIAL_FEATURES", std::to_string(features)}};
+}
+
+std::string describeMaterialFeatures(std::uint32_t features) {
+    static const std::pair<std::uint32_t, const char*> kNames[] = {
+        {ML_FEATURE_METALLIC_ROUGHNESS_MAP, "metallic-roughness maps"},
+        {ML_FEATURE_NORMAL_MAP, "normal maps"},
+        {ML_FEATURE_OCCLUSION_MAP, "occlusion maps"},
+        {ML_FEATURE_EMISSIVE, "emissive"},
+        {ML_FEATURE_EMISSIVE_MAP, "emissive maps"},
+        {ML_FEATURE_TEXTURE_TRANSFORM, "texture transforms"},
+        {ML_FEATURE_UV1, "TEXCOORD_1"},
+        {ML_FEATURE_VERTEX_COLOR, "vertex colours"},
+        {ML_FEATURE_ALPHA_TEST, "alpha test"},
+        {ML_FEATURE_BLEND, "transparency"},
+    };
+    std::string text;
+    for (const auto& [bit, name] : kNames)
+        if (features & bit) text += std::string(text.empty() ? "" : ", ") + name;
+    return text.empty() ? "none" : text;
+}
+
+UvAffine uvAffine(const TextureTransform& t) {
+    // KHR_texture_transform's GLSL: rotation = mat3(cos, sin, 0, -sin, cos, 0, 0, 0, 1) (columns).
+    const float c = std::cos(t.rotation), s = std::sin(t.rotation);
+    UvAffine a;
+    a.column0 = glm::vec2(c, s) * t.scale.x;
+    a.column1 = glm::vec2(-s, c) * t.scale.y;
+    a.offset = t.offset;
+    return a;
+}
+
+}  // namespace ml
