@@ -1,6 +1,6 @@
-// glTF materials and their textures into the scene model's Material and Image (README, "Shading
-// model"). Internal to scenes/gltf_*.cpp; kept apart from geometry so that the material mapping
-// can change without touching the rest of the loader.
+// glTF materials and their textures into the scene model's Material and Image
+// (docs/lights-and-shading.md). Internal to scenes/gltf_*.cpp; kept apart from geometry so that the
+// material mapping can change without touching the rest of the loader.
 #pragma once
 
 #include <cstdint>

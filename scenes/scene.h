@@ -67,7 +67,7 @@ struct TextureRef {
 // frame, blended back to front; renderer/passes/transparent_pass.h).
 enum class AlphaMode { Opaque, Mask, Blend };
 
-// A glTF metallic-roughness material (README, "Shading model", says how it is shaded).
+// A glTF metallic-roughness material (docs/lights-and-shading.md says how it is shaded).
 struct Material {
     std::string name;
     glm::vec4 baseColorFactor{1.0f};  // linear

@@ -102,7 +102,7 @@ constexpr const char* kOptions = R"json({
 
 
 // culling: the light-vs-cluster tests, per-cluster assignment and normal cones (issue 5) on
-// the atrium at 1024 lights and 640x360, every point against naive (the table in the README).
+// the atrium at 1024 lights and 640x360, every point against naive (docs/methods-and-clustering.md).
 constexpr const char* kCulling = R"json({
   "name": "culling",
   "description": "The light-vs-cluster tests (aabb, sphere, cone), per-cluster against per-light assignment, and normal cones against active clusters only, on the atrium at 1024 lights and 640x360; naive is the reference of every point.",
@@ -134,7 +134,7 @@ constexpr const char* kSpots = R"json({
 // antialiasing: issue 16's time against aliasing error: every method at 1, 2, 4 and 8 samples
 // where it takes them, glass on and off, each against naive at the same count and against naive
 // supersampled 4 x 4 (the time_vs_aliasing chart). 1,024 lights: the 10240x5760 reference is then
-// 6e10 pixel-lights, within what one naive draw gets right on an H100 (README, "Anti-aliasing").
+// 6e10 pixel-lights, within what one naive draw gets right on an H100 (docs/transparency-*.md).
 constexpr const char* kAntialiasing = R"json({
   "name": "antialiasing",
   "description": "MSAA 1/2/4/8 for naive and Forward+ (deferred and visibility at one sample), glass on and off, at 2560x1440 and 1,024 lights of radius overlap:32, each point against naive at its sample count and against naive supersampled 4 x 4.",

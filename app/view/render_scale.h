@@ -2,7 +2,7 @@
 // image is scaled up (bilinear) to fill the window. On a software GL renderer (Mesa llvmpipe or
 // softpipe) the cost of a frame is about proportional to its pixels, so `view` starts at a scale
 // that keeps the pixels under a budget there: an answer in well under a second a frame on two
-// cores instead of seconds (README: the measured times).
+// cores instead of seconds (docs/desktop-demo.md: the times).
 #pragma once
 
 #include <string>
@@ -11,7 +11,7 @@ namespace ml::app {
 
 inline constexpr float kMinRenderScale = 0.1f;
 // About 320x180: the default atrium, 1024 lights, deferred, answered in ~0.3 s a frame under
-// Xvfb on two shared cores (README, "The desktop demo").
+// Xvfb on two shared cores (docs/desktop-demo.md).
 inline constexpr double kSoftwarePixelBudget = 320.0 * 180.0;
 
 // The scale that brings width x height under kSoftwarePixelBudget (1 when it already is),

@@ -105,7 +105,7 @@
 #define ML_FEATURE_ALPHA_TEST 256          // some material is MASK
 #define ML_FEATURE_BLEND 512               // some material is BLEND: the transparent pass exists
 
-// Light types (README, "The light model"). A point light stores this as its cone cosines: below
+// Light types (docs/lights-and-shading.md). A point light stores this as its cone cosines: below
 // any cosine, so the spot test passes everywhere and the cone tests never reject it.
 #define ML_POINT_LIGHT_CONE_COS -2.0
 // Directional lights ("suns") sit in a uniform block of this many; every shaded point loops over them.

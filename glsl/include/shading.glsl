@@ -1,4 +1,4 @@
-// The shading model shared by every method (README, "Shading model"), mirrored on the CPU by
+// The shading model shared by every method (docs/lights-and-shading.md), mirrored on the CPU by
 // renderer/reference/shading_reference.cpp. A glTF metallic-roughness material maps onto normalized
 // Blinn-Phong:
 //   diffuse = base * (1 - metallic)        f0 = mix(0.04, base, metallic)

@@ -1,6 +1,6 @@
 // The region a spot light can light: its cone (apex at the light, unit axis, outer half-angle
 // at most 90 degrees) cut by the sphere of its radius, a convex "spherical sector". The
-// clustering bounds spots by it (README, "Spot lights"), mirrored on the CPU by
+// clustering bounds spots by it (docs/methods-and-clustering.md), mirrored on the CPU by
 // renderer/clustering/spot_cone.h. Every test is conservative: the sector never misses a point
 // the shading lights (include/shading.glsl: zero at and outside the outer cone). A point light
 // (cosOuter = ML_POINT_LIGHT_CONE_COS) is its whole sphere in every function.

@@ -11,7 +11,7 @@
 
 namespace ml {
 
-// README, "The light model". Point and spot lights are clustered; directional lights ("suns")
+// docs/lights-and-shading.md. Point and spot lights are clustered; directional lights ("suns")
 // reach every point and are shaded outside the clusters.
 enum class LightType { Point, Spot, Directional };
 const char* lightTypeName(LightType type);

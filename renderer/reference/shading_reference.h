@@ -15,7 +15,7 @@ float lightFalloff(float distance, float radius);
 // (cosInner - cosOuter))^2, exactly 0 at and outside the outer cone, 1 inside the inner.
 float spotAttenuation(float cosToAxis, float cosInner, float cosOuter);
 
-// A material's parameters at one surface point, after its textures (README, "Shading model").
+// A material's parameters at one surface point, after its textures (docs/lights-and-shading.md).
 struct SurfaceSample {
     glm::vec3 position;
     glm::vec3 normal;     // unit length, after any normal map

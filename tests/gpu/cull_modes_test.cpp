@@ -62,7 +62,7 @@ INSTANTIATE_TEST_SUITE_P(Scenes, CullModes, ::testing::Values(SceneCase{"boxes",
 
 // On the atrium at the default grid, as --stats measures it: every test keeps every light that
 // reaches a cluster (the same true pairs), and they differ only in false positives. Measured
-// (README): the AABB test is the tightest there, since the clusters are small against the
+// (docs/): the AABB test is the tightest there, since the clusters are small against the
 // lights; the planes are loosest (a sphere beyond a corner passes each plane alone); the cone
 // is tight at corners and loose in depth. The planes-against-cone order is asserted.
 class CullTightness : public GpuTest {};

@@ -78,7 +78,7 @@ TEST_F(GBufferLayouts, TwoComponentLosesTheSignOfZWherePackedDoesNot) {
         EXPECT_LT(d.psnrDb, 30.0) << name << ": the lost sign of z should show";
         EXPECT_GT(d.badPixelShare, 0.2) << name << ": the whole wall should be wrong";
         // The wall's centre pixel: lit in naive, ambient only in two-component: 0.03 x (diffuse + f0),
-        // a dielectric's f0 being 0.04 (README, "Shading model").
+        // a dielectric's f0 being 0.04 (docs/lights-and-shading.md).
         const float* lit = naive.hdr.at(80, 45);
         const float* dark = twoComponent.at(80, 45);
         EXPECT_GT(lit[0], 0.2f) << name;

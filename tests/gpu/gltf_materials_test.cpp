@@ -173,7 +173,7 @@ TEST_F(GltfMaterials, EmissiveQuadGlowsWithoutLights) {
 }
 
 // Metallic-roughness and occlusion maps: the left half metallic and fully occluded, the right half
-// dielectric and open, against the formula of README's shading model at the pixel.
+// dielectric and open, against the shading model's formula at the pixel.
 TEST_F(GltfMaterials, MetallicRoughnessAndOcclusionMapsFollowTheMapping) {
     Gltf g;
     // B: metallic, G: roughness (x factor 1); R of the occlusion map.

@@ -1,4 +1,4 @@
-// The naive method, the reference of every other method, checked against the README's formula
+// The naive method, the reference of every other method, checked against the shading formula
 // computed on the CPU, and the light animation against its CPU mirror.
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 // the camera and the near plane, lights larger than the view or outside it, degenerate lights,
 // depth-slicing imbalance, odd geometry and a scene far from the origin. Every case renders
 // Forward+, clustered deferred and the visibility buffer against naive on the same frame and
-// holds them to the accuracy contract; the printed rows feed docs/stability.md.
+// holds them to the accuracy contract; the printed rows feed docs/accuracy-and-stability.md.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -147,7 +147,7 @@ TEST_F(StressScenario, SingleTriangleScene) {
 // repeated vertex, collinear vertices) and a sliver: the rasterizer clips, draws or drops them
 // the same way for every method. The clip planes stay fitted to the boxes, so the huge triangle
 // is clipped by them. (Fitting them to the huge triangle's bounds moves the near plane out and
-// costs the methods that rebuild position from depth up to 3/255: docs/stability.md.)
+// costs the methods that rebuild position from depth up to 3/255: docs/accuracy-and-stability.md.)
 TEST_F(StressScenario, HugeAndDegenerateTriangles) {
     TestScene t = testScene("boxes", 96, 4);
     Scene& scene = t.scene;
@@ -175,7 +175,7 @@ TEST_F(StressScenario, HugeAndDegenerateTriangles) {
 // float ulp at 1e5). The raster transform is camera-relative (scene.vert), so depth stays
 // precise; before that, deferred and visibility were off by up to 87/255 (36.9 dB) here.
 // What remains is the rounding of world positions, which naive interpolates and the deferred
-// methods rebuild: a measured degradation, bounded here and listed in docs/stability.md.
+// methods rebuild: a measured degradation, bounded here and listed in docs/accuracy-and-stability.md.
 TEST_F(StressScenario, SceneFarFromTheOrigin) {
     TestScene t = testScene("boxes", 64, 6);
     const glm::vec3 offset(1e5f, 0.0f, -1e5f);

@@ -1,4 +1,4 @@
-// The falloff and shading formula of the README, on the CPU.
+// The falloff and shading formula of docs/lights-and-shading.md, on the CPU.
 #include <gtest/gtest.h>
 
 #include "renderer/reference/shading_reference.h"
