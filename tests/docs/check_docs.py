@@ -21,7 +21,10 @@ somewhere, and no page restates another page's table.
    colour; videos, CSVs and JSON files exist and are not empty; a bench CSV has a row per point.
 2. Links. Every relative link and image in README.md and docs/*.md points to a file or folder
    that exists, and a `#anchor` to a heading of the target page (GitHub's heading slugs).
-3. Tables. No table row of three or more cells (headers and separators aside) appears verbatim
+3. Paths. Every path of the tree that README.md or a docs/*.md page names (a word starting
+   renderer/, app/, glsl/, scenes/, tests/, tools/ or docs/; `*` globs and `{h,cpp}` allowed)
+   exists, so a page cannot keep pointing at a file that moved.
+4. Tables. No table row of three or more cells (headers and separators aside) appears verbatim
    in two different files among README.md and docs/**/*.md: a table lives on one page and the
    others link to it.
 """
@@ -105,6 +108,26 @@ def check_links(root, pages):
                 fail("%s: link to %s: no heading with that anchor in %s"
                      % (where, target, os.path.relpath(resolved, root)))
     print("links: %d relative links checked in %d pages" % (checked, len(pages)))
+
+
+# --- paths of the tree -----------------------------------------------------------------------
+
+TREE_PATH = re.compile(r"(?<![\w./-])((?:renderer|app|glsl|scenes|tests|tools|docs)/[\w./*{},-]*)")
+
+
+def check_paths(root, pages):
+    checked = 0
+    for page in pages:
+        for number, line in enumerate(open(page, encoding="utf-8").read().split("\n"), 1):
+            for match in TREE_PATH.finditer(line):
+                path = match.group(1).rstrip(".,")
+                braces = re.search(r"\{([^}]*)\}", path)
+                names = [path[:braces.start()] + part + path[braces.end():] for part in braces.group(1).split(",")] \
+                    if braces else [path]
+                checked += 1
+                if not all(glob.glob(os.path.join(root, name)) for name in names):
+                    fail("%s:%d: %s does not exist" % (os.path.relpath(page, root), number, path))
+    print("paths: %d paths of the tree checked" % checked)
 
 
 # --- tables ---------------------------------------------------------------------------------------
@@ -359,6 +382,7 @@ def main():
     readme = os.path.join(root, "README.md")
 
     check_links(root, [readme] + sorted(glob.glob(os.path.join(root, "docs", "*.md"))))
+    check_paths(root, [readme] + sorted(glob.glob(os.path.join(root, "docs", "*.md"))))
     check_tables(root, [readme] + sorted(glob.glob(os.path.join(root, "docs", "**", "*.md"), recursive=True)))
 
     commands = first_screen_commands(readme)
