@@ -4,16 +4,9 @@
 
 #include <algorithm>
 
-namespace ml::app {
+#include "app/duration_format.h"
 
-std::string formatDuration(double seconds) {
-    const long s = std::max(0L, static_cast<long>(seconds + 0.5));
-    char buf[32];
-    if (s >= 3600) std::snprintf(buf, sizeof buf, "%ldh%02ldm", s / 3600, (s / 60) % 60);
-    else if (s >= 60) std::snprintf(buf, sizeof buf, "%ldm%02lds", s / 60, s % 60);
-    else std::snprintf(buf, sizeof buf, "%lds", s);
-    return buf;
-}
+namespace ml::app {
 
 BenchProgress::BenchProgress(int totalPoints, std::FILE* out)
     : total_(totalPoints), out_(out), terminal_(isatty(fileno(out)) != 0), start_(std::chrono::steady_clock::now()) {}

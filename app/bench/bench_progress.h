@@ -28,7 +28,4 @@ private:
     bool barShown_ = false;
 };
 
-// "1m05s", "42s", "1h02m".
-std::string formatDuration(double seconds);
-
 }  // namespace ml::app

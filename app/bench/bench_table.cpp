@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
-#include <fstream>
 #include <stdexcept>
 
 namespace ml::app {
@@ -57,22 +55,6 @@ std::string csvCell(const nlohmann::ordered_json& v) {
 
 }  // namespace
 
-std::string passColumn(const std::string& passName) {
-    std::string s = "pass_";
-    for (char c : passName) {
-        if (c == '+') s += "_plus_";  // "forward+.shade" -> "forward_plus_shade"
-        else s += (c == '.' || c == '-' || c == ' ') ? '_' : c;
-    }
-    std::string out;  // runs of '_' collapse to one
-    for (char c : s)
-        if (!(c == '_' && !out.empty() && out.back() == '_')) out += c;
-    return out + "_ms";
-}
-
-const char* clockColumnValue(TimingClock clock) {
-    return clock == TimingClock::GpuQueries ? "gpu-timer-queries" : "wall-clock-after-glfinish";
-}
-
 void BenchTable::add(BenchRow row) {
     for (const auto& [key, value] : row.items()) {
         if (isFixed(key)) continue;
@@ -119,19 +101,6 @@ nlohmann::ordered_json BenchTable::rowsJson() const {
         out.push_back(std::move(r));
     }
     return out;
-}
-
-void writeFileAtomically(const std::string& path, const std::string& text) {
-    const std::string temporary = path + ".partial";
-    {
-        std::ofstream out(temporary, std::ios::binary);
-        if (!out) throw std::runtime_error(path + ": cannot write");
-        out << text;
-        if (!out.flush()) throw std::runtime_error(path + ": write failed");
-    }
-    std::error_code ec;
-    std::filesystem::rename(temporary, path, ec);
-    if (ec) throw std::runtime_error(path + ": cannot rename " + temporary + ": " + ec.message());
 }
 
 }  // namespace ml::app

@@ -9,18 +9,12 @@
 
 #include <nlohmann/json.hpp>
 
+#include "app/timing_csv.h"
 #include "renderer/pass_timer.h"
 
 namespace ml::app {
 
 using BenchRow = nlohmann::ordered_json;  // column -> number, string, or null (an empty cell)
-
-// "deferred.lighting-compute" -> "pass_deferred_lighting_compute_ms", "forward+.shade" ->
-// "pass_forward_plus_shade_ms": '.', '-' and '+' become '_' ('+' as "_plus").
-std::string passColumn(const std::string& passName);
-
-// The `clock` column: "gpu-timer-queries" or "wall-clock-after-glfinish".
-const char* clockColumnValue(TimingClock clock);
 
 class BenchTable {
 public:
@@ -39,7 +33,5 @@ private:
     std::vector<std::string> passColumns_;  // in the order first seen
 };
 
-// Writes `text` to `path` through a temporary file and a rename.
-void writeFileAtomically(const std::string& path, const std::string& text);
 
 }  // namespace ml::app

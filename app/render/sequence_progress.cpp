@@ -2,7 +2,7 @@
 
 #include <unistd.h>
 
-#include "app/bench/bench_progress.h"
+#include "app/duration_format.h"
 
 namespace ml::app {
 

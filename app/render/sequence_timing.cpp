@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 
-#include "app/bench/bench_table.h"
+#include "app/timing_csv.h"
 
 namespace ml::app {
 

@@ -7,7 +7,7 @@
 
 #include "glsl/include/bindings.h"
 #include "renderer/lights/light_buffers.h"
-#include "renderer/methods/gbuffer.h"
+#include "renderer/gbuffer.h"
 #include "renderer/scene/transparent_ranges.h"
 
 namespace ml {

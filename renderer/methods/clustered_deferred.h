@@ -5,7 +5,7 @@
 
 #include "renderer/clustering/clustered_lighting.h"
 #include "renderer/gl/program.h"
-#include "renderer/methods/gbuffer.h"
+#include "renderer/gbuffer.h"
 #include "renderer/methods/shading_method.h"
 #include "renderer/passes/transparent_pass.h"
 #include "renderer/scene/raster_program.h"

@@ -3,7 +3,7 @@
 #pragma once
 
 #include "renderer/clustering/clustered_lighting.h"
-#include "renderer/methods/gbuffer.h"
+#include "renderer/gbuffer.h"
 #include "renderer/methods/shading_method.h"
 
 namespace ml {

@@ -8,7 +8,7 @@
 
 #include "renderer/clustering/clustering_settings.h"
 #include "renderer/frame_context.h"
-#include "renderer/methods/gbuffer_format.h"
+#include "renderer/gbuffer_format.h"
 
 namespace ml {
 

@@ -13,7 +13,7 @@
 #include "renderer/gl/framebuffer.h"
 #include "renderer/gl/program.h"
 #include "renderer/gl/texture.h"
-#include "renderer/methods/gbuffer.h"
+#include "renderer/gbuffer.h"
 #include "renderer/methods/shading_method.h"
 #include "renderer/scene/raster_program.h"
 #include "renderer/passes/transparent_pass.h"

@@ -1,4 +1,4 @@
-#include "renderer/methods/gbuffer.h"
+#include "renderer/gbuffer.h"
 
 #include <string>
 

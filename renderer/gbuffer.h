@@ -9,7 +9,7 @@
 #include "renderer/gl/framebuffer.h"
 #include "renderer/gl/shader_sources.h"
 #include "renderer/gl/texture.h"
-#include "renderer/methods/gbuffer_format.h"
+#include "renderer/gbuffer_format.h"
 
 namespace ml {
 

@@ -1,4 +1,4 @@
-#include "renderer/methods/gbuffer_format.h"
+#include "renderer/gbuffer_format.h"
 
 #include <stdexcept>
 
