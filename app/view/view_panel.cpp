@@ -110,7 +110,13 @@ void lightsSection(ViewSettings& s, const ViewStatistics& stats, PanelEdits& edi
     ImGui::SameLine();
     ImGui::SetNextItemWidth(kItemWidth - ImGui::GetItemRectSize().x - ImGui::GetStyle().ItemSpacing.x);
     ImGui::SliderFloat("speed", &s.animationSpeed, 0.0f, 4.0f, "%.2fx");
-    ImGui::SliderFloat("exposure", &s.exposure, 0.05f, 20.0f, "%.2f", ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
+    ImGui::Checkbox("auto exposure", &s.autoExposure);
+    if (s.autoExposure && stats.autoExposureStops) {
+        ImGui::SameLine();
+        ImGui::TextColored(kDim, "EV %+.2f", *stats.autoExposureStops);
+    }
+    ImGui::SliderFloat(s.autoExposure ? "EV offset" : "exposure EV", &s.exposureStops, -10.0f, 10.0f, "%+.2f",
+                       ImGuiSliderFlags_AlwaysClamp);
 }
 
 // --msaa: greyed out, with the reason, for the methods that store one sample per pixel.
@@ -217,11 +223,19 @@ void cameraSection(ViewSettings& s, const ViewStatistics& stats, PanelEdits& edi
     s.cameraMode = static_cast<CameraMode>(mode);
     ImGui::SameLine();
     if (ImGui::Button("reset (R)")) edits.resetCamera = true;
+    ImGui::SameLine();
+    if (ImGui::Button("frame (F)")) edits.frameScene = true;
     // On the same row, as the panel must leave the lower window to the scene.
     if (s.cameraMode == CameraMode::Fly) {
         ImGui::SameLine();
         ImGui::TextColored(kDim, "%.2f u/s (scroll)", stats.flySpeed);
     }
+    // Another file without restarting (or drop one on the window).
+    ImGui::SetNextItemWidth(kItemWidth - 60.0f);
+    const bool entered = ImGui::InputTextWithHint("##open", "path/to/file.gltf (or drop one)", s.openPath.data(), s.openPath.size(),
+                                                  ImGuiInputTextFlags_EnterReturnsTrue);
+    ImGui::SameLine();
+    if ((ImGui::Button("open") || entered) && s.openPath[0] != '\0') edits.openFile = true;
     if (!stats.sceneCameras.empty()) {
         const std::string current = s.sceneCamera < 0 ? "free camera" : stats.sceneCameras[static_cast<std::size_t>(s.sceneCamera)];
         if (ImGui::BeginCombo("view from", current.c_str())) {
@@ -330,7 +344,8 @@ void keysSection() {
         "fly:   WASD move, Q/E down/up, Shift faster,\n"
         "       right mouse button + drag looks, wheel: speed\n"
         "orbit: drag orbits, wheel zooms\n"
-        "C fly/orbit, R reset view, 1/2/3/... method,\n"
+        "C fly/orbit, R reset view, F frame the scene,\n"
+        "1/2/3/... method, drop a .gltf/.glb to open it,\n"
         "F1 or H hide panel, F12 screenshot, Esc quit");
 }
 
