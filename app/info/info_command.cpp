@@ -102,7 +102,8 @@ int runInfo(const FrameOptions& o) {
     char ev[32];
     std::snprintf(ev, sizeof ev, "EV %+.2f", std::log2(frame.settings.exposure));
     std::printf("  exposure: %s\n", frame.settings.autoExposure ? "auto" : ev);
-    for (const std::string& note : frame.notes) std::printf("  %s\n", note.c_str());
+    if (!frame.notes.empty()) std::printf("  as render says it on a first try:\n");
+    for (const std::string& note : frame.notes) std::printf("    %s\n", note.c_str());
     return 0;
 }
 

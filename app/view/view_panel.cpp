@@ -110,13 +110,15 @@ void lightsSection(ViewSettings& s, const ViewStatistics& stats, PanelEdits& edi
     ImGui::SameLine();
     ImGui::SetNextItemWidth(kItemWidth - ImGui::GetItemRectSize().x - ImGui::GetStyle().ItemSpacing.x);
     ImGui::SliderFloat("speed", &s.animationSpeed, 0.0f, 4.0f, "%.2fx");
-    ImGui::Checkbox("auto exposure", &s.autoExposure);
-    if (s.autoExposure && stats.autoExposureStops) {
-        ImGui::SameLine();
-        ImGui::TextColored(kDim, "EV %+.2f", *stats.autoExposureStops);
-    }
-    ImGui::SliderFloat(s.autoExposure ? "EV offset" : "exposure EV", &s.exposureStops, -10.0f, 10.0f, "%+.2f",
+    // One row: [x] auto [EV slider] and, while automatic, the exposure it measured.
+    ImGui::Checkbox("auto", &s.autoExposure);
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(kItemWidth - ImGui::GetItemRectSize().x - ImGui::GetStyle().ItemSpacing.x);
+    ImGui::SliderFloat("##exposure", &s.exposureStops, -10.0f, 10.0f, s.autoExposure ? "%+.2f EV offset" : "%+.2f EV",
                        ImGuiSliderFlags_AlwaysClamp);
+    ImGui::SameLine();
+    if (s.autoExposure && stats.autoExposureStops) ImGui::TextColored(kDim, "exposure %+.1f", *stats.autoExposureStops);
+    else ImGui::TextUnformatted("exposure");
 }
 
 // --msaa: greyed out, with the reason, for the methods that store one sample per pixel.
@@ -230,12 +232,6 @@ void cameraSection(ViewSettings& s, const ViewStatistics& stats, PanelEdits& edi
         ImGui::SameLine();
         ImGui::TextColored(kDim, "%.2f u/s (scroll)", stats.flySpeed);
     }
-    // Another file without restarting (or drop one on the window).
-    ImGui::SetNextItemWidth(kItemWidth - 60.0f);
-    const bool entered = ImGui::InputTextWithHint("##open", "path/to/file.gltf (or drop one)", s.openPath.data(), s.openPath.size(),
-                                                  ImGuiInputTextFlags_EnterReturnsTrue);
-    ImGui::SameLine();
-    if ((ImGui::Button("open") || entered) && s.openPath[0] != '\0') edits.openFile = true;
     if (!stats.sceneCameras.empty()) {
         const std::string current = s.sceneCamera < 0 ? "free camera" : stats.sceneCameras[static_cast<std::size_t>(s.sceneCamera)];
         if (ImGui::BeginCombo("view from", current.c_str())) {
@@ -339,6 +335,15 @@ void statisticsSection(const ViewStatistics& st) {
     if (st.glErrors > 0) ImGui::TextColored(kWarning, "%d GL error(s)", st.glErrors);
 }
 
+// Another file without restarting (dropping one on the window does the same).
+void openFileField(ViewSettings& s, PanelEdits& edits) {
+    ImGui::SetNextItemWidth(kItemWidth + 60.0f);
+    const bool entered = ImGui::InputTextWithHint("##open", "path/to/file.gltf, or drop one on the window", s.openPath.data(),
+                                                  s.openPath.size(), ImGuiInputTextFlags_EnterReturnsTrue);
+    ImGui::SameLine();
+    if ((ImGui::Button("open") || entered) && s.openPath[0] != '\0') edits.openFile = true;
+}
+
 void keysSection() {
     ImGui::TextUnformatted(
         "fly:   WASD move, Q/E down/up, Shift faster,\n"
@@ -382,7 +387,10 @@ PanelEdits drawViewPanel(ViewSettings& settings, const ViewStatistics& stats) {
         if (ImGui::CollapsingHeader("Cluster grid", ImGuiTreeNodeFlags_DefaultOpen)) gridSection(settings, edits);
         if (ImGui::CollapsingHeader("Shading")) shadingSection(settings, stats, edits);
         if (ImGui::CollapsingHeader("Camera and window", ImGuiTreeNodeFlags_DefaultOpen)) cameraSection(settings, stats, edits);
-        if (ImGui::CollapsingHeader("Keys")) keysSection();
+        if (ImGui::CollapsingHeader("Open a file, keys")) {
+            openFileField(settings, edits);
+            keysSection();
+        }
         ImGui::PopItemWidth();
     }
     ImGui::End();

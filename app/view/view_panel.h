@@ -62,7 +62,6 @@ struct ViewStatistics {
     std::size_t transparentRanges = 0;       // the scene's BLEND draw ranges
     float sceneSize = 1.0f;                  // bounds' diagonal: the radius slider's scale
     float flySpeed = 0.0f;
-    std::string sceneName;
     std::vector<std::string> sceneCameras;   // the scene file's cameras as the panel lists them
     std::optional<float> autoExposureStops;  // the measured exposure in EV, while automatic
     int glErrors = 0;

@@ -119,7 +119,6 @@ void ViewSession::adoptSceneSettings() {
     stats_.transparentRanges = renderer_ ? renderer_->scene().transparentRangeCount() : 0;
     stats_.lightsFromFile = !o.lightsFile.empty();
     stats_.sceneSize = diagonal(frame_.scene.bounds);
-    stats_.sceneName = frame_.scene.name;
     stats_.sceneCameras.clear();
     for (std::size_t i = 0; i < frame_.scene.cameras.size(); ++i) {
         const std::string& name = frame_.scene.cameras[i].name;
