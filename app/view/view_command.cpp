@@ -58,6 +58,10 @@ void addViewCommand(CLI::App& app, int& exitCode) {
     cmd->add_option("--drop", options->drop,
                     "scripted: hand this file to the window's drop callback before frame 1, as if dropped on it "
                     "(the scene is replaced by it, with its own default camera, lights and exposure)");
+    cmd->add_option("--run-for", options->runFor,
+                    "measure: run the live loop (vsync off, statistics as shown interactively) for this many seconds, "
+                    "print the mean frame rate of the last 60 frames and exit")
+        ->check(CLI::Range(0.1, 3600.0));
     cmd->add_flag("--no-vsync", options->noVsync, "start with vsync off");
     cmd->add_option("--render-scale", options->renderScale,
                     "draw at this fraction of the window's size, scaled up to fill it, 0.1 to 1 (default: 1, or a "

@@ -93,7 +93,7 @@ ViewSession::ViewSession(const ViewOptions& options, PreparedFrame frame, std::o
     settings_.transparency = frame_.settings.transparency;
     settings_.specular = frame_.settings.specular;
     settings_.bloom = frame_.settings.bloom;
-    settings_.vsync = !options.noVsync;
+    settings_.vsync = !options.noVsync && !(options.runFor > 0.0);
     showPanel_ = !options.hidePanel;
 
     stats_.glRenderer = info_.renderer;
@@ -378,6 +378,15 @@ int ViewSession::run() {
             continue;
         }
         const double now = glfwGetTime();
+        if (options_.runFor > 0.0 && now - startTime_ >= options_.runFor) {
+            const double ms = history_.meanFrameMilliseconds();
+            std::printf("view: %.1f fps (mean frame interval %.3f ms over the last %zu frames, %zu frames in %.1f s), %dx%d, %s, "
+                        "%u lights\n",
+                        1000.0 / ms, ms, std::min(framesShown, TimingHistory::kWindow), framesShown, now - startTime_, width,
+                        height, methodName(renderer_->settings().method.kind).c_str(), renderer_->lights().count());
+            if (options_.frame.time) printPassTimes(history_.meanPasses(), frame_.settings.clock);
+            return 0;
+        }
         // The statistics show the real interval; the camera and the animation step by at most
         // kMaxFrameSeconds.
         const double elapsed = now - previous;

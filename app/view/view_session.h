@@ -25,6 +25,7 @@ struct ViewOptions {
     std::string screenshotWindow;  // the window as shown, panel included
     std::string cameraPath;
     std::string drop;              // scripted: a file delivered through the window's drop callback before frame 1
+    double runFor = 0.0;           // > 0: the live loop, vsync off, for this many seconds; then the frame rate, and exit
     bool noVsync = false;
     bool hidePanel = false;
     std::optional<float> renderScale;  // unset: automatic (render_scale.h)
