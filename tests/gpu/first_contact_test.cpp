@@ -190,6 +190,42 @@ TEST(FirstContact, OverlapRadiusWorksInRender) {
     EXPECT_NEAR(r800 / r, 0.5, 1e-4) << "8 times the lights, half the radius";
 }
 
+// The reverse of --light-radius overlap:K in render: bench follows a camera path as render and
+// view do, and render takes bench's words (camera default, near/far auto).
+TEST(FirstContact, BenchFollowsACameraPathAndRenderTakesBenchWords) {
+    const std::string dir = testOutputDir().string();
+    {
+        std::ofstream path(dir + "/path.json");
+        path << R"({"keyframes": [{"frame": 0, "eye": [9, 8, 13], "target": [0, 0.8, 0], "fovy": 50},
+                                  {"frame": 120, "eye": [-9, 8, 13], "target": [0, 0.8, 0], "fovy": 50}]})";
+    }
+    std::string output;
+    ASSERT_EQ(runManylights("bench --scene boxes --detail 0.5 --size 64x36 --lights 16 --method deferred --warmup 0 "
+                            "--timed-frames 2 --camera-path " + dir + "/path.json --out " + dir + " --name pathbench",
+                            output),
+              0)
+        << output;
+    std::ifstream json(dir + "/pathbench.json");
+    const nlohmann::json doc = nlohmann::json::parse(json);
+    EXPECT_EQ(doc["run"].value("camera_path", false), true) << doc["run"].dump();
+    std::string refused;
+    EXPECT_NE(runManylights("bench --scene boxes --size 64x36 --lights 16 --camera 1,2,3,0,0,0,50 --camera-path " + dir +
+                                "/path.json --out " + dir,
+                            refused),
+              0);
+    EXPECT_NE(refused.find("give one of them"), std::string::npos) << refused;
+
+    std::string words, plain;
+    ASSERT_EQ(runManylights("render --scene boxes --detail 0.5 --size 64x36 --lights 16 --camera default --near auto --far auto "
+                            "--specular true --out " + dir + "/words.png",
+                            words),
+              0)
+        << words;
+    ASSERT_EQ(runManylights("render --scene boxes --detail 0.5 --size 64x36 --lights 16 --out " + dir + "/plain.png", plain), 0)
+        << plain;
+    EXPECT_EQ(compareImages(readPng(dir + "/words.png"), readPng(dir + "/plain.png")).maxAbs, 0.0);
+}
+
 TEST(FirstContact, BadValuesAreRefusedBeforeTheSceneLoads) {
     // The scene does not exist: an error about the flag shows it was read first.
     for (const std::string& flag : {"--light-radius overlap:x", "--light-radius -1", "--exposure bright",
