@@ -3,6 +3,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "renderer/camera/default_camera.h"
+
 namespace ml::app {
 
 namespace {
@@ -63,7 +65,7 @@ OrbitSpec parseOrbitSpec(const std::string& text) {
     return spec;
 }
 
-CameraOrbit orbitAround(const OrbitSpec& spec, const Scene& scene) {
+CameraOrbit orbitAround(const OrbitSpec& spec, const Scene& scene, float aspect) {
     CameraOrbit orbit;
     orbit.centre = scene.bounds.empty() ? glm::vec3(0.0f) : scene.bounds.center();
     orbit.frames = spec.frames;
@@ -74,7 +76,7 @@ CameraOrbit orbitAround(const OrbitSpec& spec, const Scene& scene) {
         orbit.azimuthDegrees = *spec.azimuthDegrees;
     } else {
         // Start from the side the scene is usually seen from, so frame 0 looks familiar.
-        const glm::vec3 from = scene.suggestedView.value_or(framingView(scene.bounds)).eye - orbit.centre;
+        const glm::vec3 from = defaultCamera(scene, aspect).camera.eye - orbit.centre;
         orbit.azimuthDegrees = (from.x == 0.0f && from.z == 0.0f) ? 0.0f : glm::degrees(std::atan2(from.x, from.z));
     }
     return orbit;

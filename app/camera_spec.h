@@ -31,7 +31,8 @@ bool isOrbitSpec(const std::string& cameraText);
 // Throws std::invalid_argument naming the flag value and the key at fault.
 OrbitSpec parseOrbitSpec(const std::string& cameraText);
 
-// The orbit around `scene`'s bounds.
-CameraOrbit orbitAround(const OrbitSpec& spec, const Scene& scene);
+// The orbit around `scene`'s bounds, starting (unless azimuth= is given) from the side its
+// default camera looks from in an `aspect` (width / height) frame.
+CameraOrbit orbitAround(const OrbitSpec& spec, const Scene& scene, float aspect);
 
 }  // namespace ml::app

@@ -1,10 +1,13 @@
 #include "app/frame_options.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <stdexcept>
 
 #include "app/camera_spec.h"
+#include "renderer/camera/default_camera.h"
 #include "glsl/include/bindings.h"
 #include "renderer/lights/light_buffers.h"
 #include "renderer/scene/material_features.h"
@@ -19,9 +22,25 @@ constexpr long long kMaxLights = 16'777'216;
 
 // on/off switches (--specular, --prepass): one line naming the flag and the bad value.
 bool parseOnOff(const char* flag, const std::string& text) {
-    if (text == "on") return true;
-    if (text == "off") return false;
+    // true/false too: the words a sweep file's booleans take.
+    if (text == "on" || text == "true") return true;
+    if (text == "off" || text == "false") return false;
     throw std::invalid_argument(std::string(flag) + " '" + text + "': expected on or off");
+}
+
+// --near/--far: a distance > 0, or auto (fitted to the scene), as a sweep's "near"/"far" take it.
+std::optional<float> parseClipPlane(const char* flag, const std::string& text) {
+    if (text == "auto") return std::nullopt;
+    try {
+        std::size_t used = 0;
+        const float v = std::stof(text, &used);
+        if (used == text.size() && std::isfinite(v) && v > 0.0f) return v;
+    } catch (const std::exception&) {
+    }
+    throw std::invalid_argument(std::string(flag) + " '" + text + "': expected a distance > 0, or auto (fitted to the scene)");
+}
+float aspectOf(const FrameSettings& settings) {
+    return static_cast<float>(settings.width) / static_cast<float>(settings.height);
 }
 }  // namespace
 
@@ -56,18 +75,35 @@ void addFrameOptions(CLI::App& cmd, FrameOptions& o) {
     cmd.add_option("--spot-share", o.spotShare, "share of the generated lights that are spots, in [0, 1] (random directions)")->capture_default_str();
     cmd.add_option("--spot-angle", o.spotAngle, "generated spots' outer cone angle in degrees, (0, 90] (inner: 0.7 of it); 0: each spot's in [20, 60]")->capture_default_str();
     cmd.add_option("--scene-lights", o.sceneLights, "on: render a glTF file's own lights (KHR_lights_punctual); off: leave them out")->capture_default_str();
-    cmd.add_option("--light-radius", o.lightRadius, "light radius in scene units (default: a tenth of the scene's diagonal)");
+    cmd.add_option_function<std::string>(
+           "--light-radius", [&o](const std::string& text) { o.lightRadius = parseRadius(text); },
+           "light radius: R in scene units, default (a tenth of the scene's diagonal), or overlap:K (the radius at "
+           "which about K generated lights reach any point of the light volume)")
+        ->type_name("R|default|overlap:K");
     cmd.add_option("--light-intensity", o.lightIntensity, "light intensity multiplier")->capture_default_str();
     cmd.add_option("--seed", o.seed, "seed of the light placement")->capture_default_str();
+    cmd.add_option("--light-placement", o.lightPlacement,
+                   "where generated lights go: volume (uniform in the scene's bounds) or surfaces (area-weighted points "
+                   "on its triangles, a quarter of the radius out along the normal) (default: volume for a built-in "
+                   "scene, surfaces for a file)")
+        ->type_name("volume|surfaces");
     cmd.add_option("--lights-file", o.lightsFile, "load an exact light set from JSON (replaces the generated and the scene file's lights)");
     cmd.add_option("--save-lights", o.saveLights, "write the light set of the rendered frame (after animation) to JSON");
     cmd.add_option("--size", o.size, "output size WxH")->capture_default_str();
-    cmd.add_option("--camera", o.camera, "px,py,pz,tx,ty,tz,fovy_deg, or gltf:N for the glTF file's Nth camera (from 0; "
-                   "its clip planes unless --near/--far) (default: the scene's suggested view)");
-    cmd.add_option("--near", o.nearPlane, "near clip plane (default: fits the scene's bounds)");
-    cmd.add_option("--far", o.farPlane, "far clip plane (default: fits the scene's bounds)");
+    cmd.add_option("--camera", o.camera, "px,py,pz,tx,ty,tz,fovy_deg; gltf:N for the glTF file's Nth camera (from 0; "
+                   "its clip planes unless --near/--far); orbit[:frames=N][,elevation=DEG][,distance=D][,azimuth=DEG]"
+                   "[,fovy=DEG], a turntable around the scene's centre that the frames follow; or default: a built-in "
+                   "scene's view, a file's first camera, else the file framed from its front (the default)");
+    cmd.add_option_function<std::string>(
+           "--near", [&o](const std::string& text) { o.nearPlane = parseClipPlane("--near", text); },
+           "near clip plane, or auto (the default: fits the scene's bounds)");
+    cmd.add_option_function<std::string>(
+           "--far", [&o](const std::string& text) { o.farPlane = parseClipPlane("--far", text); },
+           "far clip plane, or auto (the default: fits the scene's bounds)");
     cmd.add_option("--frames", o.frames, "advance the light animation this many frames (1/60 s each) first")->capture_default_str();
-    cmd.add_option("--exposure", o.exposure, "exposure before the tonemap")->capture_default_str();
+    cmd.add_option("--exposure", o.exposure, "auto (from the frame's log-average luminance, computed on the GPU), or EV "
+                   "stops (the HDR frame times 2^EV before the tonemap) (default: 0 for a built-in scene, auto for a file)")
+        ->type_name("auto|EV");
     cmd.add_option("--draw", o.draw, "scene submission: direct (a draw call per draw range) or indirect (multi-draw indirect, a call per texture)")->capture_default_str();
     cmd.add_option("--triangle-order", o.triangleOrder, "each draw range's triangles at upload: as-loaded, vertex-cache or overdraw (meshoptimizer; renderer/scene/triangle_order.h)")->capture_default_str();
     cmd.add_option("--backface-culling", o.backfaceCulling, "on: raster passes cull the back faces of single-sided materials (glTF doubleSided false); off: draw both sides of everything")->capture_default_str();
@@ -88,20 +124,45 @@ long long generatedLightCount(const FrameOptions& o, const Scene& scene) {
     return !scene.lights.empty() && parseOnOff("--scene-lights", o.sceneLights) ? 0 : 1024;
 }
 
+LightPlacement lightPlacementFor(const FrameOptions& o) {
+    if (!o.lightPlacement.empty()) return parseLightPlacement(o.lightPlacement);
+    return isBuiltinScene(o.scene) ? LightPlacement::Volume : LightPlacement::Surfaces;
+}
+
+float lightRadiusFor(const FrameOptions& o, const Scene& scene) {
+    return resolveRadius(o.lightRadius, scene.bounds, generatedLightCount(o, scene));
+}
+
 std::vector<Light> frameLights(const FrameOptions& o, const Scene& scene) {
     if (!o.lightsFile.empty()) return loadLightsFile(o.lightsFile);
     std::vector<Light> lights;
     if (parseOnOff("--scene-lights", o.sceneLights)) lights = lightsFromScene(scene);
     LightGeneration gen;
     gen.count = static_cast<std::uint32_t>(generatedLightCount(o, scene));
-    gen.radius = o.lightRadius.value_or(defaultLightRadius(scene.bounds));
+    gen.radius = lightRadiusFor(o, scene);
     gen.intensity = o.lightIntensity;
     gen.seed = static_cast<std::uint32_t>(o.seed);
     gen.spotShare = o.spotShare;
     gen.spotAngleDeg = o.spotAngle;
-    const std::vector<Light> generated = generateLights(lightVolume(scene.bounds), gen);
+    const std::vector<Light> generated = generateLights(scene, gen, lightPlacementFor(o));
     lights.insert(lights.end(), generated.begin(), generated.end());
     return lights;
+}
+
+bool isBuiltinScene(const std::string& scene) {
+    const auto& names = builtinSceneNames();
+    return std::find(names.begin(), names.end(), scene) != names.end();
+}
+
+ExposureSpec parseExposure(const std::string& text) {
+    if (text == "auto") return ExposureSpec{true, 0.0f};
+    try {
+        std::size_t used = 0;
+        const float stops = std::stof(text, &used);
+        if (used == text.size() && std::isfinite(stops) && std::abs(stops) <= 24.0f) return ExposureSpec{false, stops};
+    } catch (const std::exception&) {
+    }
+    throw std::invalid_argument("--exposure '" + text + "': expected auto, or EV stops between -24 and 24 (0: the HDR frame as it is)");
 }
 
 void parseSize(const std::string& text, int& width, int& height) {
@@ -183,15 +244,16 @@ PreparedFrame prepareFrame(const FrameOptions& o, const Scene* loaded) {
         throw std::invalid_argument("--seed " + std::to_string(o.seed) + ": must be between 0 and 4294967295");
     if (o.frames < 0 || o.frames > 100'000'000)
         throw std::invalid_argument("--frames " + std::to_string(o.frames) + ": must be between 0 and 100000000");
-    if (o.lightRadius && !(std::isfinite(*o.lightRadius) && *o.lightRadius >= 0.0f))
-        throw std::invalid_argument("--light-radius: must be a finite number >= 0");
     if (!(std::isfinite(o.lightIntensity) && o.lightIntensity >= 0.0f))
         throw std::invalid_argument("--light-intensity: must be a finite number >= 0");
-    if (!(std::isfinite(o.exposure) && o.exposure > 0.0f)) throw std::invalid_argument("--exposure: must be > 0");
+    const bool exposureGiven = !o.exposure.empty();
+    const ExposureSpec exposure = exposureGiven ? parseExposure(o.exposure) : ExposureSpec{!isBuiltinScene(o.scene), 0.0f};
+    const LightPlacement placement = lightPlacementFor(o);
     if (!std::isfinite(o.driftSpeed)) throw std::invalid_argument("--drift-speed: must be finite");
     if (!(std::isfinite(o.detail) && o.detail > 0.0f && o.detail <= 16.0f))
         throw std::invalid_argument("--detail: must be in (0, 16]");
     f.frameIndex = static_cast<std::uint32_t>(o.frames);
+    f.lightPlacement = placement;
 
     f.scene = loaded ? *loaded : loadScene(SceneRequest{o.scene, o.detail}, f.warnings);
     if (f.scene.indices.empty()) throw SceneError(o.scene + ": the scene has no triangles");
@@ -200,7 +262,7 @@ PreparedFrame prepareFrame(const FrameOptions& o, const Scene* loaded) {
         f.warnings.push_back("--gbuffer two-component has no room for emissive: the scene's emissive surfaces stay dark "
                              "(standard and packed store it)");
 
-    if (isOrbitSpec(o.camera)) f.orbit = orbitAround(parseOrbitSpec(o.camera), f.scene);
+    if (isOrbitSpec(o.camera)) f.orbit = orbitAround(parseOrbitSpec(o.camera), f.scene, aspectOf(f.settings));
     Camera camera;
     if (f.orbit) {
         camera = f.orbit->at(f.frameIndex);
@@ -209,9 +271,12 @@ PreparedFrame prepareFrame(const FrameOptions& o, const Scene* loaded) {
         const SceneCamera& fileCamera = f.scene.cameras[sceneCameraIndex(o.camera, f.scene.cameras.size())];
         camera = cameraFromSceneCamera(fileCamera);
         fitClipPlanes(camera, f.scene.bounds, fileCamera);
+    } else if (o.camera.empty() || o.camera == "default") {
+        const DefaultCamera chosen = defaultCamera(f.scene, aspectOf(f.settings));
+        camera = chosen.camera;
+        if (!chosen.choice.empty()) f.notes.push_back("camera: " + chosen.choice);
     } else {
-        camera = o.camera.empty() ? cameraFromPose(f.scene.suggestedView.value_or(framingView(f.scene.bounds)))
-                                  : parseCamera(o.camera);
+        camera = parseCamera(o.camera);
         fitClipPlanes(camera, f.scene.bounds);
     }
     if (o.nearPlane) camera.nearPlane = *o.nearPlane;
@@ -220,7 +285,10 @@ PreparedFrame prepareFrame(const FrameOptions& o, const Scene* loaded) {
         throw std::invalid_argument("--near/--far: need 0 < near < far (got near " + std::to_string(camera.nearPlane) +
                                     ", far " + std::to_string(camera.farPlane) + ")");
     f.settings.camera = camera;
-    f.settings.exposure = o.exposure;
+    f.settings.autoExposure = exposure.automatic;
+    f.settings.exposure = std::exp2(exposure.stops);
+    if (!exposureGiven && exposure.automatic)
+        f.notes.push_back("exposure: auto (the frame's log-average luminance to middle grey; --exposure EV for a fixed one)");
     f.settings.draw = parseDrawSubmission(o.draw);
     f.settings.backfaceCulling = parseOnOff("--backface-culling", o.backfaceCulling);
     f.settings.transparency = parseOnOff("--transparency", o.transparency);
@@ -230,6 +298,14 @@ PreparedFrame prepareFrame(const FrameOptions& o, const Scene* loaded) {
     f.settings.animation = verticalDrift(volume, o.driftSpeed);
 
     f.lights = frameLights(o, f.scene);
+    if (o.lightPlacement.empty() && f.lightPlacement == LightPlacement::Surfaces && o.lightsFile.empty())
+        if (const long long n = generatedLightCount(o, f.scene); n > 0)
+        {
+            char radius[32];
+            std::snprintf(radius, sizeof radius, "%.3g", lightRadiusFor(o, f.scene));
+            f.notes.push_back("lights: " + std::to_string(n) + " generated near the surfaces, radius " + radius +
+                              " (--light-placement volume for the uniform rule, --lights 0 for the file's own only)");
+        }
     try {
         toGpuSunLights(f.lights);
     } catch (const std::invalid_argument& e) {

@@ -8,10 +8,13 @@
 
 #include <CLI/CLI.hpp>
 
+#include "app/light_radius.h"
+
 #include "renderer/camera/camera_orbit.h"
 #include "renderer/context/gl_context.h"
 #include "renderer/frame_renderer.h"
 #include "renderer/lights/light_set.h"
+#include "renderer/lights/surface_placement.h"
 #include "scenes/scene.h"
 
 namespace ml::app {
@@ -40,9 +43,10 @@ struct FrameOptions {
     float spotShare = 0.0f;           // share of generated lights that are spots
     float spotAngle = 0.0f;           // generated spots' outer cone angle in degrees; 0: each in [20, 60]
     std::string sceneLights = "on";   // the scene file's own lights (KHR_lights_punctual)
-    std::optional<float> lightRadius;
+    RadiusSpec lightRadius;           // --light-radius R|default|overlap:K (app/light_radius.h)
     float lightIntensity = 1.0f;
     long long seed = 1;
+    std::string lightPlacement;       // volume or surfaces; empty: volume for a built-in scene, surfaces for a file
     std::string lightsFile;
     std::string saveLights;
     std::string size = "1280x720";
@@ -50,7 +54,9 @@ struct FrameOptions {
     std::optional<float> nearPlane;
     std::optional<float> farPlane;
     long long frames = 0;
-    float exposure = 1.0f;
+    // --exposure: auto, or EV stops (2^EV before the tonemap); empty: EV 0 for a built-in scene
+    // (its look, and its golden images, as they were), auto for a file.
+    std::string exposure;
     std::string draw = "direct";
     std::string backfaceCulling = "on";
     std::string transparency = "on";
@@ -71,6 +77,10 @@ void addFrameOptions(CLI::App& command, FrameOptions& options);
 // --lights as given, else its default for a scene: 0 where the scene brings lights of its own
 // (and --scene-lights is on), 1024 otherwise.
 long long generatedLightCount(const FrameOptions& options, const Scene& scene);
+// --light-radius resolved for the scene and the generated light count.
+float lightRadiusFor(const FrameOptions& options, const Scene& scene);
+// --light-placement as given, else its default for the scene.
+LightPlacement lightPlacementFor(const FrameOptions& options);
 // The scene's own lights followed by the generated ones, or a --lights-file's set alone.
 std::vector<Light> frameLights(const FrameOptions& options, const Scene& scene);
 
@@ -80,7 +90,11 @@ struct PreparedFrame {
     std::vector<Light> lights;
     FrameSettings settings;
     std::uint32_t frameIndex = 0;
+    LightPlacement lightPlacement = LightPlacement::Volume;  // of the generated lights, as chosen
     std::optional<CameraOrbit> orbit;  // --camera orbit:...; settings.camera is its pose at frameIndex
+    // The defaults chosen for a scene file (camera, light placement, exposure), one line each,
+    // printed by render and view so a first try says what it did.
+    std::vector<std::string> notes;
     ContextOptions context;
     std::vector<std::string> warnings;
 };
@@ -88,6 +102,16 @@ struct PreparedFrame {
 // Throws std::invalid_argument or SceneError with one line naming the culprit. `loaded`, when
 // given, is options.scene already loaded (bench reuses one scene across many frames).
 PreparedFrame prepareFrame(const FrameOptions& options, const Scene* loaded = nullptr);
+
+// True for atrium, plane, boxes: scenes whose defaults (view, light placement, exposure) are their own.
+bool isBuiltinScene(const std::string& scene);
+
+struct ExposureSpec {
+    bool automatic = false;
+    float stops = 0.0f;  // fixed: EV; automatic: a compensation on top of the measured exposure (0)
+};
+// "auto" or a number of stops in [-24, 24]; throws std::invalid_argument naming --exposure.
+ExposureSpec parseExposure(const std::string& text);
 
 // Parses "WxH"; throws std::invalid_argument.
 void parseSize(const std::string& text, int& width, int& height);

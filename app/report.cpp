@@ -17,6 +17,11 @@ void printPassTimes(const std::vector<PassTime>& times, TimingClock clock) {
     std::printf("%-28s %10.3f   (%s)\n", "total", totalMilliseconds(times), timingClockName(clock));
 }
 
+void printNotes(const PreparedFrame& frame) {
+    for (const std::string& note : frame.notes) std::printf("%s\n", note.c_str());
+    std::fflush(stdout);
+}
+
 void printSceneSummary(const PreparedFrame& frame) {
     const Bounds& b = frame.scene.bounds;
     const Camera& c = frame.settings.camera;

@@ -14,6 +14,8 @@ namespace ml::app {
 
 void printPassTimes(const std::vector<PassTime>& times, TimingClock clock);
 void printSceneSummary(const PreparedFrame& frame);
+// PreparedFrame::notes, one line each, on stdout.
+void printNotes(const PreparedFrame& frame);
 void printClusterStatistics(const ClusterStatistics& stats);
 // The shading options of the frame (--specular, --gbuffer, --prepass, --bloom) and what they cost in memory.
 void printShadingOptions(const FrameSettings& settings);

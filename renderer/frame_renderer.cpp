@@ -98,11 +98,18 @@ std::vector<PassTime> FrameRenderer::renderAt(float time) {
     const bool debugView = settings_.method.clustering.view != DebugView::Shaded;
     // After shading, so every method gets the same bloom; debug views' colours get none.
     if (!debugView) bloom_.run(targets_, settings_.bloom, timer_);
+    const bool autoExposure = settings_.autoExposure && !debugView;
+    if (autoExposure) autoExposure_.run(targets_, settings_.exposureAdaptation, timer_);
     {
         auto pass = timer_.pass("tonemap");
-        tonemap_.run(targets_, settings_.exposure, debugView);
+        tonemap_.run(targets_, settings_.exposure, debugView, autoExposure ? &autoExposure_ : nullptr);
     }
     return timer_.endFrame();
+}
+
+std::optional<AutoExposureReading> FrameRenderer::autoExposure() const {
+    if (!settings_.autoExposure) return std::nullopt;
+    return autoExposure_.read();
 }
 
 RgbaImage FrameRenderer::readLdr() const {

@@ -4,8 +4,10 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <vector>
 
+#include "renderer/passes/auto_exposure_pass.h"
 #include "renderer/passes/bloom_pass.h"
 #include "renderer/camera/camera.h"
 #include "renderer/frame_targets.h"
@@ -33,6 +35,10 @@ struct FrameSettings {
     // before bloom and the tonemap (the anti-aliased reference, with naive).
     int supersample = 1;
     float exposure = 1.0f;
+    // --exposure auto: the exposure measured from the frame (renderer/passes/auto_exposure_pass.h),
+    // times `exposure`; each frame moves `exposureAdaptation` of the way (in stops) to it.
+    bool autoExposure = false;
+    float exposureAdaptation = 1.0f;
     float ambient = 0.03f;
     DrawSubmission draw = DrawSubmission::Direct;  // --draw: how raster passes submit the scene
     bool backfaceCulling = true;                   // --backface-culling (SceneGpu::setBackfaceCulling)
@@ -65,6 +71,12 @@ public:
     // Replaces the light set (count or radius changed); the GPU buffers are re-created.
     void setLights(const std::vector<Light>& lights);
     void setExposure(float exposure) { settings_.exposure = exposure; }
+    void setAutoExposure(bool on, float adaptation) {
+        settings_.autoExposure = on;
+        settings_.exposureAdaptation = adaptation;
+    }
+    // The automatic exposure of the last frame (a GPU sync); nothing when it is off.
+    std::optional<AutoExposureReading> autoExposure() const;
     void setDrawSubmission(DrawSubmission draw) { settings_.draw = draw; }
     void setBackfaceCulling(bool on) { settings_.backfaceCulling = on; }
     void setTransparency(bool on) { settings_.transparency = on; }
@@ -96,6 +108,7 @@ private:
     AnimateLightsPass animate_;
     ResolvePass resolve_;
     BloomPass bloom_;
+    AutoExposurePass autoExposure_;
     TonemapPass tonemap_;
     std::unique_ptr<ShadingMethod> method_;
     std::unique_ptr<OverdrawPass> overdraw_;  // built on first use of --view overdraw

@@ -49,10 +49,6 @@ std::string skippedModes(const Skipped& skipped) {
     return modes;
 }
 
-// Extensions this loader reads (or whose absence changes nothing it reads).
-bool isHandledExtension(const std::string& name) {
-    return name == "KHR_mesh_quantization" || name == "KHR_texture_transform" || name == "KHR_materials_emissive_strength";
-}
 
 // One line per kind of thing the scene model does not hold (materials report their own).
 std::vector<std::string> unmodelledFeatures(const tinygltf::Model& model, const Skipped& skipped) {
@@ -66,9 +62,8 @@ std::vector<std::string> unmodelledFeatures(const tinygltf::Model& model, const 
                                           " skipped (only perspective cameras are modelled)");
     note(skipped.morphedMeshes, "morph targets of " + counted(skipped.morphedMeshes, "mesh", "meshes") + " skipped (not modelled)");
 
-    // KHR_lights_punctual is modelled (gltf_lights), like the extensions materials read.
     for (const std::string& ext : model.extensionsUsed)
-        if (ext != "KHR_lights_punctual" && !isHandledExtension(ext))
+        if (!isModelledGltfExtension(ext))
             lines.push_back("extension " + clip(ext, 80) + " skipped (not modelled)");
 
     if (!skipped.primitiveModes.empty())
@@ -115,10 +110,18 @@ Scene loadChecked(const std::string& path, std::vector<std::string>& warnings) {
     for (const std::string& line : unmodelledFeatures(model, skipped)) warnings.push_back(path + ": " + line);
     for (const std::string& line : materials.warnings()) warnings.push_back(path + ": " + line);
     if (!parsed.tinygltfWarnings.empty()) warnings.push_back(path + ": glTF parser: " + parsed.tinygltfWarnings);
+    scene.extensionsUsed = model.extensionsUsed;
     return scene;
 }
 
 }  // namespace
+
+bool isModelledGltfExtension(const std::string& name) {
+    // Lights (gltf_lights) and what the materials read (gltf_materials); quantized attributes
+    // are read by the accessors.
+    return name == "KHR_lights_punctual" || name == "KHR_mesh_quantization" || name == "KHR_texture_transform" ||
+           name == "KHR_materials_emissive_strength";
+}
 
 Scene loadGltf(const std::string& path, std::vector<std::string>& warnings) {
     try {

@@ -13,4 +13,8 @@ namespace ml {
 // use. Features the scene model does not hold are skipped: each kind adds one line to warnings.
 Scene loadGltf(const std::string& path, std::vector<std::string>& warnings);
 
+// True for the glTF extensions the loader models (reads, or whose absence changes nothing it
+// reads); any other that a file uses is skipped with a warning.
+bool isModelledGltfExtension(const std::string& name);
+
 }  // namespace ml

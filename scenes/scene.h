@@ -159,7 +159,8 @@ struct Scene {
     std::vector<SceneCamera> cameras;        // a glTF file's cameras, in the order its default scene's nodes are walked
     std::vector<SceneLight> lights;          // a glTF file's lights (KHR_lights_punctual), in the same order
     Bounds bounds;                           // of all vertex positions
-    std::optional<CameraPose> suggestedView; // procedural scenes set one; glTF derives from bounds
+    std::optional<CameraPose> suggestedView; // procedural scenes set one; a file's default view: renderer/camera/default_camera.h
+    std::vector<std::string> extensionsUsed; // a glTF file's extensionsUsed, as it lists them (`manylights info`)
 
     std::size_t triangleCount() const { return indices.size() / 3; }
 };

@@ -31,6 +31,7 @@ struct BenchOptions {
     std::optional<long long> frame;
     std::optional<double> naiveBudget;
     std::string reference;
+    std::string cameraPath;
     std::string outDir = "bench-results";
     std::string name;
     std::string backend = "auto";
@@ -93,6 +94,13 @@ Sweep sweepFromOptions(const BenchOptions& o, nlohmann::json& overrides) {
             throw std::invalid_argument("--reference " + o.reference + ": " + e.what());
         }
     }
+    if (!o.cameraPath.empty()) {
+        for (const BenchPoint& p : sweep.points)
+            if (!p.frame.camera.empty())
+                throw std::invalid_argument("--camera-path " + o.cameraPath + " and camera " + p.frame.camera + " (" +
+                                            p.experiment + "): give one of them");
+        sweep.run.cameraPath = CameraPath::load(o.cameraPath);
+    }
     return sweep;
 }
 
@@ -103,6 +111,7 @@ nlohmann::ordered_json runJson(const RunSettings& run, const BenchRunner& runner
     r["frame_index"] = run.firstFrame;
     r["naive_budget_pixel_lights"] = runner.naiveBudget();
     r["reference"] = referenceSettingName(run.supersampledReference);
+    if (run.cameraPath) r["camera_path"] = true;
     r["clock"] = timingClockName(runner.clock());
     return r;
 }
@@ -238,6 +247,10 @@ void addBenchCommand(CLI::App& app, int& exitCode) {
     run->add_option("--reference", o->reference,
                     "naive (the accuracy columns), or supersampled:K: also aa_rmse and aa_psnr_db against naive at K x K "
                     "samples per pixel, box-filtered (default: the sweep's run.reference, else naive)");
+    run->add_option("--camera-path", o->cameraPath,
+                    "every point's timed frames follow this JSON camera path (the format of `render` and `view "
+                    "--camera-path`); the first timed frame is the accuracy frame")
+        ->check(CLI::ExistingFile);
     cmd->add_option("--out", o->outDir, "directory for <name>.csv and <name>.json")->capture_default_str();
     cmd->add_option("--name", o->name, "file name stem (default: the sweep's name)");
     cmd->add_option("--backend", o->backend, "offscreen GL: auto (EGL, then OSMesa), egl, osmesa")->capture_default_str();

@@ -28,11 +28,6 @@ namespace {
 constexpr std::size_t kReferenceCacheBytes = std::size_t{1} << 30;
 constexpr std::size_t kSupersampledReferenceBytes = std::size_t{4} << 30;  // two 2560x1440 references at K = 4
 
-double volumeOf(const Bounds& b) {
-    const glm::vec3 e = b.max - b.min;
-    return static_cast<double>(e.x) * e.y * e.z;
-}
-
 std::string scientific(double v) {
     char buf[32];
     std::snprintf(buf, sizeof buf, "%.3g", v);
@@ -55,6 +50,7 @@ std::string frameKeyOf(const FrameOptions& o, double radius) {
     k["scene_lights"] = o.sceneLights;
     k["radius"] = radius;
     k["seed"] = o.seed;
+    k["light_placement"] = o.lightPlacement;
     k["intensity"] = o.lightIntensity;
     k["drift"] = o.driftSpeed;
     k["exposure"] = o.exposure;
@@ -89,7 +85,7 @@ BenchRow configColumns(const BenchPoint& p, int index, std::uint32_t frame, cons
     row["lights"] = o.lights ? nlohmann::json(*o.lights) : nlohmann::json();
     row["spot_share"] = o.spotShare;
     row["radius"] = nullptr;  // resolved against the scene when measured
-    row["radius_rule"] = p.radius.text();
+    row["radius_rule"] = p.frame.lightRadius.text();
     row["seed"] = o.seed;
     row["intensity"] = o.lightIntensity;
     row["drift_speed"] = o.driftSpeed;
@@ -185,18 +181,9 @@ void BenchRunner::measureInto(BenchRow& row, const BenchPoint& point) {
     o.time = true;
     o.frames = first;
     const Scene& scene = sceneFor(o);
-    switch (point.radius.kind) {
-    case RadiusSpec::Kind::SceneDefault: o.lightRadius.reset(); break;
-    case RadiusSpec::Kind::Fixed: o.lightRadius = static_cast<float>(point.radius.value); break;
-    case RadiusSpec::Kind::Overlap:
-        if (const long long n = generatedLightCount(o, scene); n > 0)
-            o.lightRadius = static_cast<float>(overlapRadius(volumeOf(lightVolume(scene.bounds)),
-                                                             static_cast<std::uint64_t>(n), point.radius.value));
-        break;
-    }
     PreparedFrame f = prepareFrame(o, &scene);
     f.settings.clock = clock_;
-    const double radius = o.lightRadius.value_or(defaultLightRadius(scene.bounds));
+    const double radius = lightRadiusFor(o, scene);
     row["radius"] = radius;
     row["near"] = f.settings.camera.nearPlane;
     row["far"] = f.settings.camera.farPlane;
@@ -220,8 +207,11 @@ void BenchRunner::measureInto(BenchRow& row, const BenchPoint& point) {
         renderer_ = std::make_unique<FrameRenderer>(f.scene, f.lights, f.settings);
         frameKey_ = key;
     }
-    // A reused renderer holds the last camera of the previous point's orbit.
-    renderer_->setCamera(f.settings.camera);
+    // An orbit or --camera-path moves the camera with the frame index, as in `render`; the
+    // reference and the accuracy frame are taken at the first timed frame's pose. (A reused
+    // renderer holds the last camera of the previous point's track.)
+    const CameraTrack track = CameraTrack::fromOptions(o, f, run_.cameraPath);
+    renderer_->setCamera(track.at(first));
 
     // The reference: naive forward on the same frame (same lights, same animation step), with
     // the point's MSAA, so the accuracy columns keep measuring the method against naive alone.
@@ -242,8 +232,6 @@ void BenchRunner::measureInto(BenchRow& row, const BenchPoint& point) {
     renderer_->render(first);  // applies it, so the scene reports its draw calls
     row["draw_calls"] = renderer_->scene().drawCallsPerPass();
 
-    // An orbit moves the camera with the frame index, as in `render --camera orbit:...`.
-    const CameraTrack track = CameraTrack::fromOptions(o, f, std::nullopt);
     auto renderFrame = [&](std::uint32_t frame) {
         renderer_->setCamera(track.at(frame));
         return renderer_->render(frame);

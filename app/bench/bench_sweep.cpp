@@ -61,27 +61,16 @@ bool asBoolean(const json& v) {
 }
 
 RadiusSpec asRadius(const json& v) {
-    RadiusSpec r;
     if (v.is_number()) {
+        RadiusSpec r;
         r.kind = RadiusSpec::Kind::Fixed;
         r.value = asNumber(v);
         if (r.value < 0.0) throw std::invalid_argument("must be >= 0");
         return r;
     }
-    const std::string s = v.is_string() ? v.get<std::string>() : "";
-    if (s == "default") return r;
-    if (s.rfind("overlap:", 0) == 0) {
-        try {
-            std::size_t used = 0;
-            r.value = std::stod(s.substr(8), &used);
-            if (used == s.size() - 8 && std::isfinite(r.value) && r.value > 0.0) {
-                r.kind = RadiusSpec::Kind::Overlap;
-                return r;
-            }
-        } catch (const std::exception&) {
-        }
-    }
-    throw std::invalid_argument("expected a radius >= 0, \"default\" (a tenth of the scene's diagonal) or \"overlap:K\" (K lights reach a point)");
+    if (v.is_string())
+        if (auto r = tryParseRadius(v.get<std::string>())) return *r;
+    throw std::invalid_argument(kRadiusSyntax);
 }
 
 // ---- The axes, in expansion order: frame-level axes outermost, so consecutive points share a
@@ -147,7 +136,13 @@ const std::vector<AxisDef>& axisDefs() {
              p.frame.spotShare = static_cast<float>(x);
          }},
         {{"radius", "--light-radius", "light radius: a number, \"default\", or \"overlap:K\" (r = cbrt(3 K V / (4 pi N)))"},
-         ValueKind::Radius, Applies::Always, [](BenchPoint& p, const json& v) { p.radius = asRadius(v); }},
+         ValueKind::Radius, Applies::Always, [](BenchPoint& p, const json& v) { p.frame.lightRadius = asRadius(v); }},
+        {{"light_placement", "--light-placement", "where generated lights go: volume or surfaces (default: volume for a built-in scene, surfaces for a file)"},
+         ValueKind::Text, Applies::Always,
+         [](BenchPoint& p, const json& v) {
+             (void)parseLightPlacement(asText(v));
+             p.frame.lightPlacement = v.get<std::string>();
+         }},
         {{"seed", "--seed", "seed of the light placement"}, ValueKind::Integer, Applies::Always,
          [](BenchPoint& p, const json& v) { p.frame.seed = asInteger(v, 0, std::numeric_limits<std::uint32_t>::max()); }},
         {{"intensity", "--light-intensity", "light intensity multiplier"}, ValueKind::Number, Applies::Always,
@@ -344,20 +339,11 @@ std::string referenceSettingName(int supersampled) {
     return supersampled > 0 ? "supersampled:" + std::to_string(supersampled) : "naive";
 }
 
-std::string RadiusSpec::text() const {
-    switch (kind) {
-    case Kind::SceneDefault: return "default";
-    case Kind::Fixed: return formatNumber(value);
-    case Kind::Overlap: return "overlap:" + formatNumber(value);
-    }
-    return "?";
-}
-
 std::string describePoint(const BenchPoint& p) {
     const FrameOptions& o = p.frame;
     std::string s = p.experiment + ": " + o.method + ", " + (o.lights ? std::to_string(*o.lights) : std::string("default")) + " lights";
     if (o.spotShare > 0.0f) s += " (" + formatNumber(100.0 * o.spotShare) + " % spots)";
-    if (p.radius.kind != RadiusSpec::Kind::SceneDefault) s += " (radius " + p.radius.text() + ")";
+    if (o.lightRadius.kind != RadiusSpec::Kind::SceneDefault) s += " (radius " + o.lightRadius.text() + ")";
     s += ", " + o.size;
     if (o.scene != "atrium") s += ", " + o.scene;
     if (!o.camera.empty()) s += ", camera " + o.camera;
@@ -379,11 +365,6 @@ std::string describePoint(const BenchPoint& p) {
     if (o.specular == "off") s += ", specular off";
     if (o.bloom) s += ", bloom";
     return s;
-}
-
-double overlapRadius(double volume, std::uint64_t lights, double overlap) {
-    if (lights == 0 || !(volume > 0.0)) return 0.0;
-    return std::cbrt(3.0 * overlap * volume / (4.0 * std::numbers::pi * static_cast<double>(lights)));
 }
 
 const std::vector<SweepAxis>& sweepAxes() {

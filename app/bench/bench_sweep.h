@@ -26,23 +26,12 @@
 #include <nlohmann/json.hpp>
 
 #include "app/frame_options.h"
+#include "app/light_radius.h"
+#include "renderer/camera/camera_path.h"
 
 namespace ml::app {
 
-// A light radius as a sweep gives it: the scene's default, a number, or "overlap:K" — the
-// radius at which about K lights reach any point of the light volume (see overlapRadius).
-struct RadiusSpec {
-    enum class Kind { SceneDefault, Fixed, Overlap };
-    Kind kind = Kind::SceneDefault;
-    double value = 0.0;  // Fixed: the radius; Overlap: K
-    std::string text() const;  // "default", "2.5", "overlap:32"
-};
-
-// n lights uniform in a volume v, each a sphere of radius r, cover a point on average
-// n * (4/3) pi r^3 / v times; solving for `overlap` lights per point:
-//   r = cbrt(3 * overlap * v / (4 * pi * n))
-// so r shrinks as n^(-1/3) and the shading work per pixel stays about constant.
-double overlapRadius(double volume, std::uint64_t lights, double overlap);
+// A sweep's "radius" takes what --light-radius takes (app/light_radius.h).
 
 // How each point is measured.
 struct RunSettings {
@@ -53,6 +42,8 @@ struct RunSettings {
     // "reference": "supersampled:K" (--reference): every point is also compared with naive drawn
     // at K x K samples per pixel, box-filtered (aa_rmse, aa_psnr_db); 0: "naive" alone.
     int supersampledReference = 0;
+    // --camera-path: every point's timed frames follow it (and its first frame is the accuracy frame).
+    std::optional<CameraPath> cameraPath;
 };
 
 // "naive" -> 0, "supersampled:K" (K in 2..8) -> K. Throws std::invalid_argument with the reason.
@@ -63,7 +54,6 @@ std::string referenceSettingName(int supersampled);
 struct BenchPoint {
     std::string experiment;
     FrameOptions frame;       // the point's flags, as `render` would take them
-    RadiusSpec radius;        // resolved against the scene when the point runs
     bool clustered = false;   // forward-plus or deferred: the grid axes apply
     bool deferred = false;    // resolve applies
     bool gbuffered = false;   // deferred or visibility: gbuffer and normal_cones apply

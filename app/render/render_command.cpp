@@ -1,6 +1,7 @@
 #include "app/render/render_command.h"
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -20,6 +21,7 @@
 #include "renderer/gl/debug_output.h"
 #include "renderer/gl/gl_api.h"
 #include "renderer/image/image.h"
+#include "renderer/lights/surface_reach.h"
 
 namespace ml::app {
 
@@ -94,6 +96,7 @@ int runRender(RenderOptions o) {
 
     PreparedFrame frame = prepareFrame(o.frame);
     for (const std::string& w : frame.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
+    printNotes(frame);
     const bool timing = o.frame.time || !o.timingCsv.empty();
     frame.settings.timing = timing;
     OffscreenSession session = openOffscreen(o.frame, frame);
@@ -147,6 +150,15 @@ int runRender(RenderOptions o) {
                     drawSubmissionName(renderer.scene().submission()), renderer.scene().drawCallsPerPass(),
                     renderer.scene().drawRangeCount());
         printShadingOptions(frame.settings);
+        // Lights that touch no surface light nothing, yet are culled and assigned all the same.
+        const SurfaceReach reach = measureSurfaceReach(frame.scene, frame.lights);
+        if (reach.lights > 0)
+            std::printf("lights reaching a surface: %.1f %% (%zu of %zu point and spot lights; placement %s)\n",
+                        100.0 * reach.share(), reach.reaching, reach.lights, lightPlacementName(frame.lightPlacement));
+        if (const auto exposure = renderer.autoExposure())
+            std::printf("auto exposure: EV %+.2f (log-average luminance %.4g over %.1f %% of the pixels, to %.2f)\n",
+                        std::log2(exposure->exposure), std::exp2(exposure->logAverage), 100.0 * exposure->litShare,
+                        kAutoExposureKey);
         if (const OverdrawPass* overdraw = renderer.overdraw()) {
             // The view replaced the method's frame, so no light lists were built.
             const OverdrawStatistics s = overdrawStatistics(overdraw->readCounts());
@@ -202,9 +214,6 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
                     "K: animation frame K (the lights advanced K frames of 1/60 s); A..B: the sequence of frames A to B, "
                     "one file each, scene and renderer built once")
         ->capture_default_str();
-    cmd->get_option("--camera")->description(cmd->get_option("--camera")->get_description() +
-                                             "; or orbit[:frames=N][,elevation=DEG][,distance=D][,azimuth=DEG][,fovy=DEG], "
-                                             "a turntable around the scene's centre");
     cmd->add_option("--out", options->out,
                     "tonemapped 8-bit sRGB PNG; a sequence needs a frame-number field, e.g. shots/frame_%04d.png")
         ->capture_default_str();

@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <memory>
 
+#include "app/camera_track.h"
 #include "app/view/render_scale.h"
 #include "app/report.h"
 #include "app/view/view_session.h"
@@ -14,10 +15,10 @@ namespace {
 int runView(const ViewOptions& o) {
     // Flags and files first: a bad one is reported before a window opens.
     if (o.renderScale) validateRenderScale(*o.renderScale);
+    std::optional<CameraPath> path = CameraTrack::loadPath(o.frame, o.cameraPath);
     PreparedFrame frame = prepareFrame(o.frame);
     for (const std::string& w : frame.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
-    std::optional<CameraPath> path;
-    if (!o.cameraPath.empty()) path = CameraPath::load(o.cameraPath);
+    printNotes(frame);
     if (o.frame.verbose) printSceneSummary(frame);
 
     std::unique_ptr<ViewSession> session;
@@ -54,6 +55,13 @@ void addViewCommand(CLI::App& app, int& exitCode) {
                     "follow a JSON camera path: {\"keyframes\": [{\"frame\": 0, \"eye\": [x,y,z], \"target\": [x,y,z], "
                     "\"fovy\": deg}, ...]}, linear between keyframes")
         ->check(CLI::ExistingFile);
+    cmd->add_option("--drop", options->drop,
+                    "scripted: hand this file to the window's drop callback before frame 1, as if dropped on it "
+                    "(the scene is replaced by it, with its own default camera, lights and exposure)");
+    cmd->add_option("--run-for", options->runFor,
+                    "measure: run the live loop (vsync off, statistics as shown interactively) for this many seconds, "
+                    "print the mean frame rate of the last 60 frames and exit")
+        ->check(CLI::Range(0.1, 3600.0));
     cmd->add_flag("--no-vsync", options->noVsync, "start with vsync off");
     cmd->add_option("--render-scale", options->renderScale,
                     "draw at this fraction of the window's size, scaled up to fill it, 0.1 to 1 (default: 1, or a "

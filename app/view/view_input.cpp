@@ -9,6 +9,12 @@ ViewInput::ViewInput(GLFWwindow* window) : window_(window) {
     glfwSetWindowUserPointer(window, this);
     glfwSetKeyCallback(window, &ViewInput::onKey);
     glfwSetScrollCallback(window, &ViewInput::onScroll);
+    glfwSetDropCallback(window, &ViewInput::onDrop);
+}
+
+void ViewInput::onDrop(GLFWwindow* window, int count, const char** paths) {
+    auto* self = static_cast<ViewInput*>(glfwGetWindowUserPointer(window));
+    for (int i = 0; i < count; ++i) self->dropped_.emplace_back(paths[i]);
 }
 
 void ViewInput::onKey(GLFWwindow* window, int key, int /*scancode*/, int action, int /*mods*/) {
@@ -22,6 +28,8 @@ void ViewInput::onScroll(GLFWwindow* window, double /*dx*/, double dy) {
 
 FrameInput ViewInput::collect(CameraMode mode, bool panelHasMouse, bool panelHasKeyboard) {
     FrameInput in;
+    in.droppedPaths = std::move(dropped_);
+    dropped_.clear();
     if (!panelHasKeyboard) {
         in.pressedKeys = std::move(pressed_);
         auto held = [&](int key) { return glfwGetKey(window_, key) == GLFW_PRESS ? 1.0f : 0.0f; };

@@ -110,7 +110,15 @@ void lightsSection(ViewSettings& s, const ViewStatistics& stats, PanelEdits& edi
     ImGui::SameLine();
     ImGui::SetNextItemWidth(kItemWidth - ImGui::GetItemRectSize().x - ImGui::GetStyle().ItemSpacing.x);
     ImGui::SliderFloat("speed", &s.animationSpeed, 0.0f, 4.0f, "%.2fx");
-    ImGui::SliderFloat("exposure", &s.exposure, 0.05f, 20.0f, "%.2f", ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
+    // One row: [x] auto [EV slider] and, while automatic, the exposure it measured.
+    ImGui::Checkbox("auto", &s.autoExposure);
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(kItemWidth - ImGui::GetItemRectSize().x - ImGui::GetStyle().ItemSpacing.x);
+    ImGui::SliderFloat("##exposure", &s.exposureStops, -10.0f, 10.0f, s.autoExposure ? "%+.2f EV offset" : "%+.2f EV",
+                       ImGuiSliderFlags_AlwaysClamp);
+    ImGui::SameLine();
+    if (s.autoExposure && stats.autoExposureStops) ImGui::TextColored(kDim, "exposure %+.1f", *stats.autoExposureStops);
+    else ImGui::TextUnformatted("exposure");
 }
 
 // --msaa: greyed out, with the reason, for the methods that store one sample per pixel.
@@ -217,6 +225,8 @@ void cameraSection(ViewSettings& s, const ViewStatistics& stats, PanelEdits& edi
     s.cameraMode = static_cast<CameraMode>(mode);
     ImGui::SameLine();
     if (ImGui::Button("reset (R)")) edits.resetCamera = true;
+    ImGui::SameLine();
+    if (ImGui::Button("frame (F)")) edits.frameScene = true;
     // On the same row, as the panel must leave the lower window to the scene.
     if (s.cameraMode == CameraMode::Fly) {
         ImGui::SameLine();
@@ -325,12 +335,22 @@ void statisticsSection(const ViewStatistics& st) {
     if (st.glErrors > 0) ImGui::TextColored(kWarning, "%d GL error(s)", st.glErrors);
 }
 
+// Another file without restarting (dropping one on the window does the same).
+void openFileField(ViewSettings& s, PanelEdits& edits) {
+    ImGui::SetNextItemWidth(kItemWidth + 60.0f);
+    const bool entered = ImGui::InputTextWithHint("##open", "path/to/file.gltf, or drop one on the window", s.openPath.data(),
+                                                  s.openPath.size(), ImGuiInputTextFlags_EnterReturnsTrue);
+    ImGui::SameLine();
+    if ((ImGui::Button("open") || entered) && s.openPath[0] != '\0') edits.openFile = true;
+}
+
 void keysSection() {
     ImGui::TextUnformatted(
         "fly:   WASD move, Q/E down/up, Shift faster,\n"
         "       right mouse button + drag looks, wheel: speed\n"
         "orbit: drag orbits, wheel zooms\n"
-        "C fly/orbit, R reset view, 1/2/3/... method,\n"
+        "C fly/orbit, R reset view, F frame the scene,\n"
+        "1/2/3/... method, drop a .gltf/.glb to open it,\n"
         "F1 or H hide panel, F12 screenshot, Esc quit");
 }
 
@@ -367,7 +387,10 @@ PanelEdits drawViewPanel(ViewSettings& settings, const ViewStatistics& stats) {
         if (ImGui::CollapsingHeader("Cluster grid", ImGuiTreeNodeFlags_DefaultOpen)) gridSection(settings, edits);
         if (ImGui::CollapsingHeader("Shading")) shadingSection(settings, stats, edits);
         if (ImGui::CollapsingHeader("Camera and window", ImGuiTreeNodeFlags_DefaultOpen)) cameraSection(settings, stats, edits);
-        if (ImGui::CollapsingHeader("Keys")) keysSection();
+        if (ImGui::CollapsingHeader("Open a file, keys")) {
+            openFileField(settings, edits);
+            keysSection();
+        }
         ImGui::PopItemWidth();
     }
     ImGui::End();

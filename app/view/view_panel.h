@@ -2,6 +2,7 @@
 // (frame time and its graph, per-pass GPU times, cluster statistics, memory, GL renderer).
 #pragma once
 
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -25,7 +26,8 @@ struct ViewSettings {
     bool sceneLights = true;      // the scene file's own lights
     bool animate = true;
     float animationSpeed = 1.0f;  // times real time
-    float exposure = 1.0f;
+    float exposureStops = 0.0f;   // EV: fixed, or on top of the automatic exposure
+    bool autoExposure = false;    // from the frame's log-average luminance, settling over about a second
     DrawSubmission draw = DrawSubmission::Direct;
     bool backfaceCulling = true;
     bool transparency = true;     // draw the scene's BLEND surfaces
@@ -35,6 +37,7 @@ struct ViewSettings {
     float renderScale = 1.0f;  // the renderer's size over the window's (app/view/render_scale.h)
     CameraMode cameraMode = CameraMode::Fly;
     int sceneCamera = -1;  // the scene file's camera last chosen (Scene::cameras), -1: free camera
+    std::array<char, 1024> openPath{};  // the panel's path field: a .gltf/.glb to open
 };
 
 // The largest light count the slider offers.
@@ -60,6 +63,7 @@ struct ViewStatistics {
     float sceneSize = 1.0f;                  // bounds' diagonal: the radius slider's scale
     float flySpeed = 0.0f;
     std::vector<std::string> sceneCameras;   // the scene file's cameras as the panel lists them
+    std::optional<float> autoExposureStops;  // the measured exposure in EV, while automatic
     int glErrors = 0;
     std::string error;                       // the last change that failed, and why
 };
@@ -71,6 +75,8 @@ struct PanelEdits {
     bool renderScale = false;  // applied when the slider is let go
     bool cameraMode = false;
     bool resetCamera = false;
+    bool frameScene = false;   // the whole scene in view, from its front (F)
+    bool openFile = false;     // open ViewSettings::openPath
     bool sceneCamera = false;  // a camera of the scene file was chosen
     bool screenshot = false;
 };

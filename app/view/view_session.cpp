@@ -1,6 +1,7 @@
 #include "app/view/view_session.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -13,6 +14,7 @@
 #include "app/view/render_scale.h"
 #include "app/report.h"
 #include "app/view/window_capture.h"
+#include "renderer/camera/default_camera.h"
 #include "renderer/clustering/clustered_lighting.h"
 #include "renderer/gl/debug_output.h"
 
@@ -37,6 +39,8 @@ bool hasExtension(const char* name) {
 
 // Statistics read back (a GPU sync) this often while interactive, not every frame.
 constexpr double kStatisticsInterval = 0.25;
+// Automatic exposure moves 63 % of the way (in stops) to the frame's own in this time.
+constexpr double kExposureSettleSeconds = 0.4;
 // A longer gap (a stall, a window drag) counts as this much: the camera does not leap.
 constexpr double kMaxFrameSeconds = 0.5;
 
@@ -47,8 +51,9 @@ float diagonal(const Bounds& b) { return b.empty() ? 1.0f : glm::length(b.size()
 ViewSession::ViewSession(const ViewOptions& options, PreparedFrame frame, std::optional<CameraPath> path)
     : options_(options),
       frame_(std::move(frame)),
-      path_(std::move(path)),
-      followPath_(path_.has_value()),
+      track_(path || frame_.orbit ? std::optional(CameraTrack::fromOptions(options.frame, frame_, std::move(path)))
+                                  : std::nullopt),
+      followPath_(track_.has_value()),
       window_("manylights view", frame_.settings.width, frame_.settings.height, frame_.context),
       input_(window_.handle()),
       controller_(frame_.settings.camera, diagonal(frame_.scene.bounds)) {
@@ -82,36 +87,82 @@ ViewSession::ViewSession(const ViewOptions& options, PreparedFrame frame, std::o
     frame_.settings.method = effectiveMethod(settings_.method);
     renderer_ = std::make_unique<FrameRenderer>(frame_.scene, frame_.lights, frame_.settings);
 
-    const std::size_t generated = options.frame.lightsFile.empty()
-                                      ? static_cast<std::size_t>(generatedLightCount(options.frame, frame_.scene))
-                                      : frame_.lights.size();
-    settings_.lightCount = static_cast<int>(std::min<std::size_t>(generated, kMaxViewLights));
-    settings_.spotShare = options.frame.spotShare;
-    settings_.spotAngle = options.frame.spotAngle;
-    settings_.sceneLights = options.frame.sceneLights == "on";
-    stats_.sceneLights = frame_.scene.lights.size();
-    stats_.transparentRanges = renderer_ ? renderer_->scene().transparentRangeCount() : 0;
-    settings_.lightRadius = options.frame.lightRadius.value_or(defaultLightRadius(frame_.scene.bounds));
-    settings_.exposure = options.frame.exposure;
+    adoptSceneSettings();
     settings_.draw = parseDrawSubmission(options.frame.draw);
     settings_.backfaceCulling = frame_.settings.backfaceCulling;
     settings_.transparency = frame_.settings.transparency;
     settings_.specular = frame_.settings.specular;
     settings_.bloom = frame_.settings.bloom;
-    settings_.vsync = !options.noVsync;
+    settings_.vsync = !options.noVsync && !(options.runFor > 0.0);
     showPanel_ = !options.hidePanel;
 
     stats_.glRenderer = info_.renderer;
     stats_.glVersion = info_.version;
     stats_.clock = frame_.settings.clock;
+    if (namesSceneCamera(options.frame.camera))  // checked when the frame was prepared
+        settings_.sceneCamera = static_cast<int>(sceneCameraIndex(options.frame.camera, frame_.scene.cameras.size()));
+}
+
+void ViewSession::adoptSceneSettings() {
+    const FrameOptions& o = options_.frame;
+    const std::size_t generated =
+        o.lightsFile.empty() ? static_cast<std::size_t>(generatedLightCount(o, frame_.scene)) : frame_.lights.size();
+    settings_.lightCount = static_cast<int>(std::min<std::size_t>(generated, kMaxViewLights));
+    settings_.spotShare = o.spotShare;
+    settings_.spotAngle = o.spotAngle;
+    settings_.sceneLights = o.sceneLights == "on";
+    settings_.lightRadius = lightRadiusFor(o, frame_.scene);
+    settings_.exposureStops = std::log2(frame_.settings.exposure);
+    settings_.autoExposure = frame_.settings.autoExposure;
+    settings_.sceneCamera = -1;
+    stats_.sceneLights = frame_.scene.lights.size();
+    stats_.transparentRanges = renderer_ ? renderer_->scene().transparentRangeCount() : 0;
+    stats_.lightsFromFile = !o.lightsFile.empty();
     stats_.sceneSize = diagonal(frame_.scene.bounds);
+    stats_.sceneCameras.clear();
     for (std::size_t i = 0; i < frame_.scene.cameras.size(); ++i) {
         const std::string& name = frame_.scene.cameras[i].name;
         stats_.sceneCameras.push_back("gltf:" + std::to_string(i) + (name.empty() ? "" : " " + name));
     }
-    if (namesSceneCamera(options.frame.camera))  // checked when the frame was prepared
-        settings_.sceneCamera = static_cast<int>(sceneCameraIndex(options.frame.camera, frame_.scene.cameras.size()));
-    stats_.lightsFromFile = !options.frame.lightsFile.empty();
+}
+
+void ViewSession::openScene(const std::string& path) {
+    // The file's own defaults (camera, lights, exposure), the rest of the flags and the panel's
+    // method kept.
+    FrameOptions o = options_.frame;
+    o.scene = path;
+    o.camera.clear();
+    o.lightsFile.clear();
+    o.lightPlacement.clear();
+    o.exposure.clear();
+    try {
+        PreparedFrame next = prepareFrame(o);
+        for (const std::string& w : next.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
+        std::printf("opened %s\n", path.c_str());
+        printNotes(next);
+        FrameSettings settings = renderer_->settings();
+        settings.camera = next.settings.camera;
+        settings.exposure = next.settings.exposure;
+        settings.autoExposure = next.settings.autoExposure;
+        settings.animation = next.settings.animation;
+        auto renderer = std::make_unique<FrameRenderer>(next.scene, next.lights, settings);
+        renderer_ = std::move(renderer);  // the old scene's GL objects go only once the new one is built
+        next.settings = settings;
+        frame_ = std::move(next);
+        options_.frame = o;
+    } catch (const std::exception& e) {
+        stats_.error = "could not open " + path + ": " + e.what();
+        std::fprintf(stderr, "error: %s\n", stats_.error.c_str());
+        return;
+    }
+    track_.reset();
+    followPath_ = false;
+    controller_ = CameraController(frame_.settings.camera, diagonal(frame_.scene.bounds));
+    controller_.setMode(settings_.cameraMode);
+    adoptSceneSettings();
+    stats_.error.clear();
+    stats_.clusters.reset();
+    lastStatistics_ = -1.0;
 }
 
 ViewSession::~ViewSession() {
@@ -154,7 +205,7 @@ Camera ViewSession::fitted(Camera camera) const {
 Camera ViewSession::interactiveCamera(double now) {
     if (followPath_) {
         const auto frame = static_cast<std::uint32_t>((now - startTime_) / kSecondsPerFrame);
-        return fitted(path_->at(frame + frame_.frameIndex));
+        return track_->at(frame + frame_.frameIndex);
     }
     return fitted(controller_.camera());
 }
@@ -181,6 +232,7 @@ void ViewSession::handleKeys(const std::vector<int>& keys) {
             followPath_ = false;
             controller_.reset();
             break;
+        case GLFW_KEY_F: frameScene(); break;
         case GLFW_KEY_C:
             settings_.cameraMode = settings_.cameraMode == CameraMode::Fly ? CameraMode::Orbit : CameraMode::Fly;
             controller_.setMode(settings_.cameraMode);
@@ -189,6 +241,14 @@ void ViewSession::handleKeys(const std::vector<int>& keys) {
         default: break;
         }
     }
+}
+
+void ViewSession::frameScene() {
+    // The front framing of a file without cameras, whatever the scene: the whole of it in view.
+    followPath_ = false;
+    settings_.sceneCamera = -1;
+    const float aspect = static_cast<float>(renderer_->settings().width) / static_cast<float>(renderer_->settings().height);
+    controller_.jumpTo(frontFramingCamera(boundingSphere(frame_.scene), aspect));
 }
 
 void ViewSession::setMethodOrExplain(const MethodSettings& method) {
@@ -215,7 +275,7 @@ void ViewSession::regenerateLights() {
     gen.spotShare = settings_.spotShare;
     gen.spotAngleDeg = settings_.spotAngle;
     frame_.lights = settings_.sceneLights ? lightsFromScene(frame_.scene) : std::vector<Light>{};
-    const std::vector<Light> generatedLights = generateLights(lightVolume(frame_.scene.bounds), gen);
+    const std::vector<Light> generatedLights = generateLights(frame_.scene, gen, frame_.lightPlacement);
     frame_.lights.insert(frame_.lights.end(), generatedLights.begin(), generatedLights.end());
     renderer_->setLights(frame_.lights);
     stats_.lightsFromFile = false;
@@ -228,6 +288,8 @@ void ViewSession::applyEdits(const PanelEdits& edits) {
     if (edits.vsync) window_.setVsync(settings_.vsync);
     if (edits.renderScale) stats_.renderScaleNote.clear();  // the user's choice now, not ours
     if (edits.cameraMode) controller_.setMode(settings_.cameraMode);
+    if (edits.frameScene) frameScene();
+    if (edits.openFile) openScene(settings_.openPath.data());
     if (edits.resetCamera) {
         followPath_ = false;
         controller_.reset();
@@ -239,7 +301,7 @@ void ViewSession::applyEdits(const PanelEdits& edits) {
         controller_.jumpTo(cameraFromSceneCamera(frame_.scene.cameras[static_cast<std::size_t>(settings_.sceneCamera)]));
     }
     if (edits.screenshot) screenshotRequested_ = true;
-    renderer_->setExposure(settings_.exposure);
+    renderer_->setExposure(std::exp2(settings_.exposureStops));
     renderer_->setDrawSubmission(settings_.draw);
     renderer_->setBackfaceCulling(settings_.backfaceCulling);
     renderer_->setTransparency(settings_.transparency);
@@ -260,6 +322,8 @@ void ViewSession::refreshStatistics(bool now, bool rendered) {
     // A method that has not built its lists yet has no statistics to read.
     if (!rendered || (!now && lastStatistics_ >= 0.0 && t - lastStatistics_ < kStatisticsInterval)) return;
     lastStatistics_ = t;
+    if (const auto exposure = renderer_->autoExposure()) stats_.autoExposureStops = std::log2(exposure->exposure);
+    else stats_.autoExposureStops.reset();
     const ClusteredLighting* clustering = renderer_->method().clustering();
     if (clustering) stats_.clusters = clustering->statistics();
     else stats_.clusters.reset();
@@ -292,6 +356,11 @@ int ViewSession::run() {
     std::uint32_t frameIndex = lastFrame > 0 ? 1 : 0;
     double animationTime = frame_.frameIndex * static_cast<double>(kSecondsPerFrame);
     window_.setVsync(!scripted && settings_.vsync);
+    if (!options_.drop.empty()) {
+        // --drop: through GLFW's drop callback, as a file dropped on the window arrives.
+        const char* paths[] = {options_.drop.c_str()};
+        ViewInput::onDrop(window_.handle(), 1, paths);
+    }
     startTime_ = glfwGetTime();
     double previous = startTime_;
     std::size_t framesShown = 0;
@@ -309,6 +378,15 @@ int ViewSession::run() {
             continue;
         }
         const double now = glfwGetTime();
+        if (options_.runFor > 0.0 && now - startTime_ >= options_.runFor) {
+            const double ms = history_.meanFrameMilliseconds();
+            std::printf("view: %.1f fps (mean frame interval %.3f ms over the last %zu frames, %zu frames in %.1f s), %dx%d, %s, "
+                        "%u lights\n",
+                        1000.0 / ms, ms, std::min(framesShown, TimingHistory::kWindow), framesShown, now - startTime_, width,
+                        height, methodName(renderer_->settings().method.kind).c_str(), renderer_->lights().count());
+            if (options_.frame.time) printPassTimes(history_.meanPasses(), frame_.settings.clock);
+            return 0;
+        }
         // The statistics show the real interval; the camera and the animation step by at most
         // kMaxFrameSeconds.
         const double elapsed = now - previous;
@@ -323,9 +401,10 @@ int ViewSession::run() {
         const bool panelHasFocus = showPanel_ && !scripted;
         FrameInput input = input_.collect(controller_.mode(), panelHasFocus && imgui_->wantsMouse(),
                                           panelHasFocus && imgui_->wantsKeyboard());
+        for (const std::string& path : input.droppedPaths) openScene(path);
         Camera camera;
         if (scripted) {
-            camera = path_ ? fitted(path_->at(frameIndex)) : frame_.settings.camera;
+            camera = track_ ? track_->at(frameIndex) : frame_.settings.camera;
         } else {
             handleKeys(input.pressedKeys);
             if (followPath_ && !input.camera.idle()) {
@@ -338,6 +417,9 @@ int ViewSession::run() {
             camera = interactiveCamera(now);
         }
         renderer_->setCamera(camera);
+        // Scripted frames expose as `render` does (at once); live ones settle smoothly.
+        renderer_->setAutoExposure(settings_.autoExposure,
+                                   scripted ? 1.0f : static_cast<float>(1.0 - std::exp(-seconds / kExposureSettleSeconds)));
 
         bool rendered = true;
         try {

@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 
+#include "app/camera_track.h"
 #include "app/frame_options.h"
 #include "app/view/gui_layer.h"
 #include "app/view/timing_history.h"
@@ -23,6 +24,8 @@ struct ViewOptions {
     std::string screenshot;        // the renderer's image of the last frame (as `render --out` writes it)
     std::string screenshotWindow;  // the window as shown, panel included
     std::string cameraPath;
+    std::string drop;              // scripted: a file delivered through the window's drop callback before frame 1
+    double runFor = 0.0;           // > 0: the live loop, vsync off, for this many seconds; then the frame rate, and exit
     bool noVsync = false;
     bool hidePanel = false;
     std::optional<float> renderScale;  // unset: automatic (render_scale.h)
@@ -46,6 +49,13 @@ public:
 
 private:
     void handleKeys(const std::vector<int>& keys);
+    // Jumps the free camera to the scene's front framing (F, the panel's "frame").
+    void frameScene();
+    // Replaces the scene with a file (dropped on the window, or the panel's path field) with its
+    // own default camera, lights and exposure; a file that fails leaves the scene as it was.
+    void openScene(const std::string& path);
+    // The panel's per-scene settings and statistics from frame_ and options_.frame.
+    void adoptSceneSettings();
     Camera fitted(Camera camera) const;
     Camera interactiveCamera(double now);
     // Frame and pass times every frame; the read-backs (a GPU sync) every kStatisticsInterval,
@@ -60,9 +70,10 @@ private:
     void writeWindowScreenshot(const std::string& path, int width, int height);
     int finishScript();
 
-    const ViewOptions& options_;
+    ViewOptions options_;  // a copy: opening another file changes its scene
     PreparedFrame frame_;
-    std::optional<CameraPath> path_;
+    // --camera-path or --camera orbit:..., followed until the user takes the camera over.
+    std::optional<CameraTrack> track_;
     bool followPath_ = false;
     GlfwWindow window_;  // before everything that holds GL objects, so it is destroyed last
     GlInfo info_;

@@ -176,6 +176,17 @@
 // Tonemap compute tile.
 #define ML_TONEMAP_TILE 8
 
+// Automatic exposure (--exposure auto, renderer/passes/auto_exposure_pass.h): the log-average
+// reduction's tile edge, the workgroup that sums the tiles' partials, and the luminance below
+// which a pixel counts as empty (the black background around an object is left out). It runs
+// after every method and before the tonemap, and every pass binds what it reads before it runs,
+// so its buffers share the prefix sum's points.
+#define ML_EXPOSURE_TILE 16
+#define ML_EXPOSURE_SUM_WORKGROUP 256
+#define ML_EXPOSURE_MIN_LUMINANCE 1e-6
+#define ML_SSBO_EXPOSURE_PARTIALS 10   // per tile: sum of log2 luminance over its lit pixels, their count
+#define ML_SSBO_EXPOSURE 11            // the exposure the tonemap applies, and what it was computed from
+
 // Frame uniforms u_counts.y: switches of the shading model (--specular).
 #define ML_SHADING_SPECULAR 1u
 

@@ -6,10 +6,14 @@ namespace ml {
 
 TonemapPass::TonemapPass() : program_(gl::Program::compute("tonemap.comp")) {}
 
-void TonemapPass::run(const FrameTargets& targets, float exposure, bool displayColors) const {
-    program_.use();
-    program_.set("u_exposure", exposure);
-    program_.set("u_displayColors", displayColors ? 1u : 0u);
+void TonemapPass::run(const FrameTargets& targets, float exposure, bool displayColors, const AutoExposurePass* autoExposure) {
+    if (autoExposure && !autoExposureProgram_)
+        autoExposureProgram_ = gl::Program::compute("tonemap.comp", {{"ML_AUTO_EXPOSURE", "1"}});
+    const gl::Program& program = autoExposure ? autoExposureProgram_ : program_;
+    if (autoExposure) autoExposure->bind();
+    program.use();
+    program.set("u_exposure", exposure);
+    program.set("u_displayColors", displayColors ? 1u : 0u);
     glBindImageTexture(ML_IMG_HDR, targets.outputHdr().id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
     glBindImageTexture(ML_IMG_LDR, targets.ldr().id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
     glDispatchCompute(gl::groupsFor(targets.outputWidth(), ML_TONEMAP_TILE), gl::groupsFor(targets.outputHeight(), ML_TONEMAP_TILE), 1);

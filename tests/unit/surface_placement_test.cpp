@@ -1,0 +1,123 @@
+// Generated lights near a scene's surfaces (renderer/lights/surface_placement.h) and the share of
+// lights whose sphere reaches a surface (renderer/lights/surface_reach.h).
+#include <gtest/gtest.h>
+
+#include "renderer/camera/default_camera.h"
+#include "renderer/lights/surface_placement.h"
+#include "renderer/lights/surface_reach.h"
+#include "scenes/scene_library.h"
+
+namespace ml {
+namespace {
+
+Scene boxes() {
+    std::vector<std::string> warnings;
+    return loadScene(SceneRequest{"boxes", 0.5f}, warnings);
+}
+
+// One unit square in the y = 0 plane, lit from above.
+Scene floorTile() {
+    Scene s;
+    for (const glm::vec3& p : {glm::vec3(0, 0, 0), glm::vec3(1, 0, 0), glm::vec3(1, 0, 1), glm::vec3(0, 0, 1)})
+        s.vertices.push_back(Vertex{p, glm::vec3(0, 1, 0), glm::vec2(0)});
+    s.indices = {0, 2, 1, 0, 3, 2};
+    s.draws = {DrawRange{0, 6, 0}};
+    s.materials.resize(1);
+    computeBounds(s);
+    return s;
+}
+
+LightGeneration generation(std::uint32_t count, float radius, std::uint32_t seed) {
+    LightGeneration g;
+    g.count = count;
+    g.radius = radius;
+    g.seed = seed;
+    return g;
+}
+
+TEST(SurfacePlacement, SameSeedSamePlacesAndColoursKept) {
+    const Scene scene = boxes();
+    const auto a = generateLights(scene, generation(256, 0.5f, 7), LightPlacement::Surfaces);
+    const auto b = generateLights(scene, generation(256, 0.5f, 7), LightPlacement::Surfaces);
+    const auto c = generateLights(scene, generation(256, 0.5f, 8), LightPlacement::Surfaces);
+    const auto volume = generateLights(scene, generation(256, 0.5f, 7), LightPlacement::Volume);
+    ASSERT_EQ(a.size(), 256u);
+    std::size_t moved = 0;
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        EXPECT_EQ(a[i].position, b[i].position);
+        EXPECT_EQ(a[i].color, volume[i].color) << "a light keeps its colour whichever placement";
+        moved += a[i].position != c[i].position;
+    }
+    EXPECT_GT(moved, 250u) << "another seed, other places";
+}
+
+TEST(SurfacePlacement, LightsSitAQuarterRadiusAboveTheSurface) {
+    const Scene tile = floorTile();
+    const auto lights = generateLights(tile, generation(64, 0.4f, 1), LightPlacement::Surfaces);
+    for (const Light& l : lights) {
+        EXPECT_NEAR(l.position.y, kSurfaceOffsetShare * 0.4f, 1e-6f) << "along the normal, on the lit side";
+        EXPECT_GE(l.position.x, 0.0f);
+        EXPECT_LE(l.position.x, 1.0f);
+        EXPECT_GE(l.position.z, 0.0f);
+        EXPECT_LE(l.position.z, 1.0f);
+    }
+}
+
+TEST(SurfaceReach, EverySurfaceLightReachesVolumeLightsOftenDoNot) {
+    const Scene scene = boxes();
+    const float radius = 0.05f * glm::length(scene.bounds.size());
+    const SurfaceReach surfaces = measureSurfaceReach(scene, generateLights(scene, generation(512, radius, 3), LightPlacement::Surfaces));
+    const SurfaceReach volume = measureSurfaceReach(scene, generateLights(scene, generation(512, radius, 3), LightPlacement::Volume));
+    EXPECT_EQ(surfaces.lights, 512u);
+    EXPECT_EQ(surfaces.reaching, 512u);
+    EXPECT_LT(volume.share(), 0.9);
+}
+
+TEST(SurfaceReach, SphereAgainstATriangleIsExact) {
+    const Scene tile = floorTile();
+    Light l;
+    l.radius = 0.5f;
+    l.position = {0.5f, 0.49f, 0.5f};  // above the middle, just reaching
+    EXPECT_EQ(measureSurfaceReach(tile, {l}).reaching, 1u);
+    l.position = {0.5f, 0.51f, 0.5f};
+    EXPECT_EQ(measureSurfaceReach(tile, {l}).reaching, 0u);
+    l.position = {1.3f, 0.0f, 1.3f};  // beside the corner: 0.42 away
+    EXPECT_EQ(measureSurfaceReach(tile, {l}).reaching, 1u);
+    l.position = {1.4f, 0.0f, 1.4f};  // 0.57 away
+    EXPECT_EQ(measureSurfaceReach(tile, {l}).reaching, 0u);
+}
+
+TEST(DefaultCamera, FramingHoldsTheBoundingSphereInTheNarrowerFieldOfView) {
+    const Scene tile = floorTile();
+    const BoundingSphere sphere = boundingSphere(tile);
+    EXPECT_NEAR(sphere.radius, std::sqrt(0.5f), 1e-6f);
+    for (const float aspect : {16.0f / 9.0f, 0.5f}) {
+        const Camera c = frontFramingCamera(sphere, aspect);
+        const float distance = glm::length(c.eye - sphere.centre);
+        const float halfV = glm::radians(0.5f * c.fovyDegrees);
+        const float halfH = std::atan(std::tan(halfV) * aspect);
+        EXPECT_NEAR(std::sin(std::min(halfV, halfH)) * distance, sphere.radius, 1e-4f) << "aspect " << aspect;
+        EXPECT_GT(c.eye.z, sphere.centre.z) << "from the front (+z)";
+        EXPECT_GT(c.eye.y, sphere.centre.y) << "slightly above";
+    }
+}
+
+TEST(DefaultCamera, BuiltInScenesKeepTheirViewFilesTheirFirstCamera) {
+    Scene scene = boxes();
+    const DefaultCamera builtIn = defaultCamera(scene, 16.0f / 9.0f);
+    EXPECT_EQ(builtIn.camera.eye, scene.suggestedView->eye);
+    EXPECT_TRUE(builtIn.choice.empty());
+    scene.suggestedView.reset();
+    SceneCamera first;
+    first.name = "Main";
+    first.pose = CameraPose{glm::vec3(1, 2, 3), glm::vec3(0), 40.0f};
+    first.nearPlane = 0.05f;
+    scene.cameras = {first, SceneCamera{}};
+    const DefaultCamera fromFile = defaultCamera(scene, 16.0f / 9.0f);
+    EXPECT_EQ(fromFile.camera.eye, first.pose.eye);
+    EXPECT_EQ(fromFile.camera.nearPlane, 0.05f);
+    EXPECT_NE(fromFile.choice.find("gltf:0 'Main'"), std::string::npos) << fromFile.choice;
+}
+
+}  // namespace
+}  // namespace ml
