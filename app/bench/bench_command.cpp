@@ -88,7 +88,7 @@ Sweep sweepFromOptions(const BenchOptions& o, nlohmann::json& overrides) {
     }
     if (!o.reference.empty()) {
         try {
-            sweep.run.supersampledReference = parseReferenceSetting(o.reference);
+            applyReferenceSetting(sweep.run, o.reference);
         } catch (const std::invalid_argument& e) {
             throw std::invalid_argument("--reference " + o.reference + ": " + e.what());
         }
@@ -102,7 +102,7 @@ nlohmann::ordered_json runJson(const RunSettings& run, const BenchRunner& runner
     r["timed_frames"] = run.timedFrames;
     r["frame_index"] = run.firstFrame;
     r["naive_budget_pixel_lights"] = runner.naiveBudget();
-    r["reference"] = referenceSettingName(run.supersampledReference);
+    r["reference"] = referenceSettingName(run);
     r["clock"] = timingClockName(runner.clock());
     return r;
 }
@@ -236,8 +236,9 @@ void addBenchCommand(CLI::App& app, int& exitCode) {
                             return std::string(buf);
                         }() + ")");
     run->add_option("--reference", o->reference,
-                    "naive (the accuracy columns), or supersampled:K: also aa_rmse and aa_psnr_db against naive at K x K "
-                    "samples per pixel, box-filtered (default: the sweep's run.reference, else naive)");
+                    "naive (the accuracy columns); supersampled:K: also aa_rmse and aa_psnr_db against naive at K x K "
+                    "samples per pixel, box-filtered; physical: also physical_* against naive with no cut-off (every light "
+                    "reaching every pixel, pure inverse square, the point's BRDF) (default: the sweep's run.reference, else naive)");
     cmd->add_option("--out", o->outDir, "directory for <name>.csv and <name>.json")->capture_default_str();
     cmd->add_option("--name", o->name, "file name stem (default: the sweep's name)");
     cmd->add_option("--backend", o->backend, "offscreen GL: auto (EGL, then OSMesa), egl, osmesa")->capture_default_str();
