@@ -126,8 +126,7 @@ std::vector<Light> frameLights(const FrameOptions& o, const Scene& scene) {
     gen.spotShare = o.spotShare;
     gen.spotAngleDeg = o.spotAngle;
     std::vector<Light> generated = generateLights(lightVolume(scene.bounds), gen);
-    if (o.lightCutoff)
-        for (Light& l : generated) l.radius = cutoffRadius(l.color, *o.lightCutoff);
+    if (o.lightCutoff) applyCutoffRadii(generated, *o.lightCutoff);
     lights.insert(lights.end(), generated.begin(), generated.end());
     return lights;
 }

@@ -31,6 +31,11 @@ float cutoffRadius(const glm::vec3& color, float cutoff) {
     return std::sqrt(brightest / cutoff);
 }
 
+void applyCutoffRadii(std::vector<Light>& lights, float cutoff) {
+    for (Light& l : lights)
+        if (l.type != LightType::Directional) l.radius = cutoffRadius(l.color, cutoff);
+}
+
 float stochasticRadius(const glm::vec3& color, float cutoff, std::uint32_t index, std::uint32_t drawSeed) {
     const float xi = 1.0f - hashToUnitFloat(pcgHash(index) ^ drawSeed);
     return cutoffRadius(color, cutoff) / std::sqrt(xi);

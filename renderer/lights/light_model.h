@@ -5,10 +5,12 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include <glm/glm.hpp>
 
 #include "glsl/include/bindings.h"
+#include "renderer/lights/light_set.h"
 
 namespace ml {
 
@@ -37,6 +39,8 @@ struct LightModel {
 
 // The distance at which max(colour) / d^2 falls to `cutoff`: sqrt(max(colour) / cutoff).
 float cutoffRadius(const glm::vec3& color, float cutoff);
+// Every point and spot light's radius set to its cut-off radius (--light-cutoff on generated lights).
+void applyCutoffRadii(std::vector<Light>& lights, float cutoff);
 
 // Stochastic light culling (Tokuyoshi and Harada, JCGT 5(1), 2016): light `index` reaches as far
 // as cutoffRadius / sqrt(xi) this draw, xi uniform in (0, 1] from the draw's seed, and beyond its
