@@ -8,7 +8,8 @@
 //                intensity I at distance d shows I * falloff)
 //   ggx          glTF's (specification, appendix B): alpha floored at ML_GGX_MIN_ALPHA,
 //                F = f0 + (1 - f0) (1 - |V.H|)^5,  D = alpha^2 / (pi ((N.H)^2 (alpha^2 - 1) + 1)^2),
-//                Vis = 1 / ((N.L + sqrt(alpha^2 + (1 - alpha^2) (N.L)^2)) (|N.V| + sqrt(alpha^2 + (1 - alpha^2) (N.V)^2))),
+//                Vis = 0.5 / (N.L sqrt((N.V)^2 (1 - alpha^2) + alpha^2) + |N.V| sqrt((N.L)^2 (1 - alpha^2) + alpha^2))
+//                (height-correlated Smith, as Khronos' Sample Viewer, Filament and Bevy),
 //                f = (1 - F) diffuse / pi + F D Vis   (a white surface shows I * falloff / pi)
 // and the falloff chosen by the light model (lightFalloff below). A spot light's colour is
 // further weighted by glTF's angular attenuation (KHR_lights_punctual):
@@ -89,19 +90,23 @@ float spotAttenuation(float cosToAxis, float cosInner, float cosOuter) {
     return t * t;
 }
 
-// glTF's BRDF (appendix B) for unit l, v, n with N.L > 0.
+// glTF's BRDF (appendix B) for unit l, v, n with N.L > 0, with the height-correlated Smith
+// visibility of Khronos' Sample Viewer, Filament and Bevy (the appendix writes the separable one;
+// they differ at grazing angles). 1 - (N.H)^2 as |N x H|^2: near the peak of a small alpha, the
+// difference 1 - (N.H)^2 loses the bits D depends on (Filament does the same).
 vec3 ggxBrdf(SurfacePoint s, vec3 viewDir, vec3 l, float nDotL) {
     vec3 h = normalize(l + viewDir);
     float nDotV = abs(dot(s.normal, viewDir));
     float nDotH = max(dot(s.normal, h), 0.0);
     float vDotH = abs(dot(viewDir, h));
+    vec3 nCrossH = cross(s.normal, h);
     float a2 = s.alpha * s.alpha;
     float q = 1.0 - vDotH;
     float q2 = q * q;
     vec3 fresnel = s.f0 + (1.0 - s.f0) * (q2 * q2 * q);
-    float dDenominator = nDotH * nDotH * (a2 - 1.0) + 1.0;
+    float dDenominator = dot(nCrossH, nCrossH) + nDotH * nDotH * a2;  // (N.H)^2 (alpha^2 - 1) + 1
     float distribution = a2 / (kPi * dDenominator * dDenominator);
-    float visibility = 1.0 / ((nDotL + sqrt(a2 + (1.0 - a2) * nDotL * nDotL)) * (nDotV + sqrt(a2 + (1.0 - a2) * nDotV * nDotV)));
+    float visibility = 0.5 / (nDotL * sqrt(nDotV * nDotV * (1.0 - a2) + a2) + nDotV * sqrt(nDotL * nDotL * (1.0 - a2) + a2));
     return (1.0 - fresnel) * s.diffuse * (1.0 / kPi) + fresnel * (distribution * visibility);
 }
 

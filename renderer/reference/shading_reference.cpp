@@ -47,12 +47,13 @@ glm::vec3 ggxBrdf(const ShadingTerms& t, const glm::vec3& n, const glm::vec3& v,
     const float nDotV = std::abs(glm::dot(n, v));
     const float nDotH = std::max(glm::dot(n, h), 0.0f);
     const float vDotH = std::abs(glm::dot(v, h));
+    const glm::vec3 nCrossH = glm::cross(n, h);
     const float a2 = t.alpha * t.alpha;
     const glm::vec3 fresnel = t.f0 + (1.0f - t.f0) * std::pow(1.0f - vDotH, 5.0f);
-    const float dDenominator = nDotH * nDotH * (a2 - 1.0f) + 1.0f;
+    const float dDenominator = glm::dot(nCrossH, nCrossH) + nDotH * nDotH * a2;
     const float distribution = a2 / (kPi * dDenominator * dDenominator);
-    const float visibility = 1.0f / ((nDotL + std::sqrt(a2 + (1.0f - a2) * nDotL * nDotL)) *
-                                     (nDotV + std::sqrt(a2 + (1.0f - a2) * nDotV * nDotV)));
+    const float visibility =
+        0.5f / (nDotL * std::sqrt(nDotV * nDotV * (1.0f - a2) + a2) + nDotV * std::sqrt(nDotL * nDotL * (1.0f - a2) + a2));
     return (1.0f - fresnel) * t.diffuse / kPi + fresnel * (distribution * visibility);
 }
 

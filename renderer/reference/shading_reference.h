@@ -40,7 +40,8 @@ struct ShadingTerms {
 ShadingTerms shadingTerms(const glm::vec3& baseColor, float metallic, float roughness);
 
 // glTF's BRDF (specification, appendix B) for unit normal n, view v and light l with N.L > 0:
-// (1 - F) diffuse / pi + F D Vis (glsl/include/shading.glsl has the formulas).
+// (1 - F) diffuse / pi + F D Vis, Vis the height-correlated Smith term (glsl/include/shading.glsl
+// has the formulas).
 glm::vec3 ggxBrdf(const ShadingTerms& t, const glm::vec3& n, const glm::vec3& v, const glm::vec3& l);
 
 // The linear radiance the shaders compute for a surface point seen from `eye`, from lights of
