@@ -32,20 +32,32 @@ const float kPi = 3.14159265358979;
 // d, by the frame's falloff mode (bindings.h, ML_FALLOFF_*; renderer/lights/light_model.h):
 //   smooth       saturate(1 - (d/r)^4)^2 / (d^2 + 1)                  zero at r
 //   gltf         saturate(1 - (d/r)^4) / max(d, dmin)^2                zero at r
-//   stochastic   max(1 / max(d, dmin)^2, E / intensity) inside r, r drawn per light and frame so that
-//                the expectation is 1 / max(d, dmin)^2 (animate_lights.comp; Tokuyoshi and Harada 2016)
+//   stochastic   saturate(1 - (d/r)^4) / max(d, dmin)^2 / A(d), r drawn per light and frame
+//                (animate_lights.comp; Tokuyoshi and Harada 2016) and A(d) the window's mean over
+//                the draws, so that the expectation is 1 / max(d, dmin)^2 (stochasticAcceptance)
 //   untruncated  1 / max(d, dmin)^2 everywhere: the physical reference
+// Every windowed falloff is continuous and zero at r, so a surface point rebuilt from depth a
+// little off its true place is lit by a light at its edge almost as much as the true point.
+
+// The stochastic cut-off's mean window. r = r_E / sqrt(xi), xi uniform in (0, 1], r_E where the
+// light's inverse square falls to E; with u = (d / r_E)^2 the window is 1 - u^2 xi^2, whose mean
+// over xi is 1 - u^2 / 3 for u <= 1 and 2 / (3 u) beyond (zero for xi > 1/u).
+float stochasticAcceptance(float d, float intensity) {
+    float u = d * d * lightCutoff() / intensity;
+    return u <= 1.0 ? 1.0 - u * u / 3.0 : 2.0 / (3.0 * u);
+}
+
 float lightFalloff(float d, float radius, float intensity) {
     uint mode = falloffMode();
     float guarded = max(d, ML_LIGHT_MIN_DISTANCE);
     float inverseSquare = 1.0 / (guarded * guarded);
     if (mode == ML_FALLOFF_UNTRUNCATED) return inverseSquare;
     if (d >= radius) return 0.0;
-    if (mode == ML_FALLOFF_STOCHASTIC) return max(inverseSquare, lightCutoff() / intensity);
     float x = d / radius;
     float x2 = x * x;
     float w = clamp(1.0 - x2 * x2, 0.0, 1.0);
     if (mode == ML_FALLOFF_GLTF) return w * inverseSquare;
+    if (mode == ML_FALLOFF_STOCHASTIC) return w * inverseSquare / stochasticAcceptance(d, intensity);
     return (w * w) / (d * d + 1.0);
 }
 

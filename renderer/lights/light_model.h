@@ -43,11 +43,12 @@ float cutoffRadius(const glm::vec3& color, float cutoff);
 void applyCutoffRadii(std::vector<Light>& lights, float cutoff);
 
 // Stochastic light culling (Tokuyoshi and Harada, JCGT 5(1), 2016): light `index` reaches as far
-// as cutoffRadius / sqrt(xi) this draw, xi uniform in (0, 1] from the draw's seed, and beyond its
-// cut-off radius shows E / max(colour) instead of 1 / d^2 (glsl/include/shading.glsl). A point
-// at distance d past the cut-off radius is reached with probability (cutoffRadius / d)^2, so the
-// expected contribution is max(colour) / d^2: the untruncated light. Mirrors
-// glsl/animate_lights.comp.
+// as r = cutoffRadius / sqrt(xi) this draw, xi uniform in (0, 1] from the draw's seed; a point
+// at distance d sees its inverse square times glTF's window 1 - (d/r)^4, divided by that window's
+// mean over the draws (glsl/include/shading.glsl), so the expected contribution is the
+// untruncated max(colour) / d^2, and each draw's falloff is continuous and zero at r. A point
+// past the cut-off radius is reached with probability (cutoffRadius / d)^2 and sees at most
+// 1.5 E there. Mirrors glsl/animate_lights.comp.
 float stochasticRadius(const glm::vec3& color, float cutoff, std::uint32_t index, std::uint32_t drawSeed);
 // The seed of a frame's draw: frame index and draw number (render --accumulate) hashed together,
 // so every frame and every accumulated draw is reproducible alone.

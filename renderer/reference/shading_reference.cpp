@@ -9,16 +9,21 @@ namespace {
 constexpr float kPi = 3.14159265358979f;
 }  // namespace
 
+float stochasticAcceptance(float d, float intensity, float cutoff) {
+    const float u = d * d * cutoff / intensity;
+    return u <= 1.0f ? 1.0f - u * u / 3.0f : 2.0f / (3.0f * u);
+}
+
 float lightFalloff(float d, float radius, float intensity, const LightModel& model) {
     const float guarded = std::max(d, static_cast<float>(ML_LIGHT_MIN_DISTANCE));
     const float inverseSquare = 1.0f / (guarded * guarded);
     if (model.falloff == Falloff::Untruncated) return inverseSquare;
     if (d >= radius) return 0.0f;
-    if (model.falloff == Falloff::Stochastic) return std::max(inverseSquare, model.cutoff / intensity);
     const float x = d / radius;
     const float x2 = x * x;
     const float w = std::clamp(1.0f - x2 * x2, 0.0f, 1.0f);
     if (model.falloff == Falloff::Gltf) return w * inverseSquare;
+    if (model.falloff == Falloff::Stochastic) return w * inverseSquare / stochasticAcceptance(d, intensity, model.cutoff);
     return (w * w) / (d * d + 1.0f);
 }
 

@@ -13,6 +13,8 @@ namespace ml {
 // The falloff of a light of radius r and brightest channel `intensity` at `distance`, in the
 // model's falloff mode (glsl/include/shading.glsl); the seeds' smooth one by default.
 float lightFalloff(float distance, float radius, float intensity = 1.0f, const LightModel& model = {});
+// The stochastic cut-off's window 1 - (d/r)^4 averaged over the drawn ranges r (shading.glsl).
+float stochasticAcceptance(float distance, float intensity, float cutoff);
 
 // glTF's angular attenuation of a spot (KHR_lights_punctual): saturate((cos - cosOuter) /
 // (cosInner - cosOuter))^2, exactly 0 at and outside the outer cone, 1 inside the inner.
