@@ -25,7 +25,7 @@ void NaiveForward::render(const FrameContext& ctx) {
         const int y0 = height * band / bands, y1 = height * (band + 1) / bands;
         glScissor(0, y0, width, y1 - y0);
         renderBand(ctx);
-        glFlush();  // each band its own submission
+        glFinish();  // each band its own submission, finished before the next
     }
     glDisable(GL_SCISSOR_TEST);
 }
