@@ -74,7 +74,7 @@ TEST_F(StochasticCutoff, TheMeanOfManyDrawsConvergesToTheUntruncatedImage) {
     s.lightModel.falloff = Falloff::Stochastic;
     FrameRenderer stochastic(t.scene, t.lights, s);
     double previous = 0.0;
-    for (std::uint32_t k : {1u, 4u, 16u, 64u}) {
+    for (std::uint32_t k : {1u, 4u, 16u}) {
         const double rmse = compareImages(renderAccumulated(stochastic, 5, k), reference).rmse;
         std::printf("K = %2u: RMSE %.5f against the untruncated image (hard cut-off: %.5f)\n", k, rmse, hardRmse);
         if (previous > 0.0) {
@@ -83,7 +83,7 @@ TEST_F(StochasticCutoff, TheMeanOfManyDrawsConvergesToTheUntruncatedImage) {
         }
         previous = rmse;
     }
-    EXPECT_LT(previous, 0.25 * hardRmse) << "64 draws should be far closer than the hard cut-off's bias";
+    EXPECT_LT(previous, 0.1 * hardRmse) << "16 draws should be far closer than the hard cut-off's bias";
 }
 
 }  // namespace
