@@ -4,7 +4,13 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <algorithm>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <string>
+#include <vector>
 
 #include "gpu_test.h"
 #include "renderer/frame_accumulation.h"
@@ -84,6 +90,57 @@ TEST_F(StochasticCutoff, TheMeanOfManyDrawsConvergesToTheUntruncatedImage) {
         previous = rmse;
     }
     EXPECT_LT(previous, 0.1 * hardRmse) << "16 draws should be far closer than the hard cut-off's bias";
+}
+
+}  // namespace
+}  // namespace ml::test
+
+namespace ml::test {
+namespace {
+
+std::vector<std::string> csvCells(const std::string& line) {
+    std::vector<std::string> cells(1);
+    bool quoted = false;
+    for (char c : line) {
+        if (c == '"') quoted = !quoted;
+        else if (c == ',' && !quoted) cells.emplace_back();
+        else cells.back() += c;
+    }
+    return cells;
+}
+
+// bench --reference physical: hard and stochastic (accumulated) points get the physical_*
+// columns; the stochastic mean of four draws is closer to the physical image than one draw,
+// and both far closer than the hard cut-off.
+TEST(BenchPhysicalReference, AddsItsColumnsAndRanksTheCutoffs) {
+    const std::filesystem::path dir = testOutputDir();
+    std::string output;
+    ASSERT_EQ(runManylights("bench --backend egl --scene boxes --size 96x54 --lights 64 --method deferred --brdf ggx "
+                            "--light-cutoff 0.3 --cutoff hard,stochastic --accumulate 1,4 --reference physical "
+                            "--warmup 0 --timed-frames 1 --name physical --out " + dir.string(),
+                            output),
+              0)
+        << output;
+    std::ifstream csv(dir / "physical.csv");
+    std::string line;
+    ASSERT_TRUE(std::getline(csv, line));
+    const std::vector<std::string> header = csvCells(line);
+    auto column = [&](const char* name) {
+        const auto it = std::find(header.begin(), header.end(), name);
+        EXPECT_NE(it, header.end()) << name;
+        return static_cast<std::size_t>(it - header.begin());
+    };
+    const std::size_t cutoff = column("cutoff"), accumulate = column("accumulate"), psnr = column("physical_ldr_psnr_db");
+    std::map<std::string, double> psnrOf;
+    while (std::getline(csv, line)) {
+        const std::vector<std::string> cells = csvCells(line);
+        ASSERT_GT(cells.size(), psnr) << line;
+        psnrOf[cells[cutoff] + " x" + cells[accumulate]] = std::stod(cells[psnr]);
+    }
+    ASSERT_EQ(psnrOf.size(), 4u) << output;
+    EXPECT_GT(psnrOf["stochastic x1"], psnrOf["hard x1"] + 10.0);
+    EXPECT_GT(psnrOf["stochastic x4"], psnrOf["stochastic x1"]);
+    EXPECT_DOUBLE_EQ(psnrOf["hard x4"], psnrOf["hard x1"]) << "a hard cut-off draws nothing";
 }
 
 }  // namespace
