@@ -44,6 +44,27 @@ float aspectOf(const FrameSettings& settings) {
 }
 }  // namespace
 
+LightModel parseLightModel(const FrameOptions& o) {
+    LightModel model;
+    model.brdf = parseBrdf(o.brdf);
+    if (o.lightCutoff && !(std::isfinite(*o.lightCutoff) && *o.lightCutoff > 0.0f))
+        throw std::invalid_argument("--light-cutoff: must be a finite number > 0");
+    if (o.lightCutoff && o.lightRadius.kind != RadiusSpec::Kind::SceneDefault)
+        throw std::invalid_argument("--light-cutoff with --light-radius: choose one (the cut-off sets every generated light's radius)");
+    model.cutoff = o.lightCutoff.value_or(0.0f);
+    if (o.cutoff == "hard") {
+        model.falloff = o.lightCutoff ? Falloff::Gltf : Falloff::Smooth;
+    } else if (o.cutoff == "stochastic") {
+        if (!o.lightCutoff) throw std::invalid_argument("--cutoff stochastic: needs --light-cutoff E (the contribution the roulette starts at)");
+        model.falloff = Falloff::Stochastic;
+    } else if (o.cutoff == "none") {
+        model.falloff = Falloff::Untruncated;
+    } else {
+        throw std::invalid_argument("--cutoff '" + o.cutoff + "': expected hard, stochastic or none");
+    }
+    return model;
+}
+
 void addFrameOptions(CLI::App& cmd, FrameOptions& o) {
     cmd.add_option("--scene", o.scene, "atrium, plane, boxes, or a .gltf/.glb file")->capture_default_str();
     cmd.add_option("--detail", o.detail, "tessellation scale of procedural scenes")->capture_default_str();
@@ -111,7 +132,12 @@ void addFrameOptions(CLI::App& cmd, FrameOptions& o) {
     cmd.add_flag("--bloom", o.bloom, "bloom: bright pass, half-resolution Gaussian, added to the HDR image before the tonemap");
     cmd.add_option("--bloom-threshold", o.bloomThreshold, "luminance above which pixels bloom")->capture_default_str();
     cmd.add_option("--bloom-strength", o.bloomStrength, "how much of the blurred bright part is added back")->capture_default_str();
-    cmd.add_option("--specular", o.specular, "on: Blinn-Phong specular term; off: Lambert only (every method and the reference alike)")->capture_default_str();
+    cmd.add_option("--specular", o.specular, "on: the BRDF's specular term; off: Lambert only (every method and the reference alike)")->capture_default_str();
+    cmd.add_option("--brdf", o.brdf, "blinn-phong (normalized Blinn-Phong, no 1/pi) or ggx (glTF's metallic-roughness BRDF, appendix B)")->capture_default_str();
+    cmd.add_option("--light-cutoff", o.lightCutoff, "E > 0 in output units: each generated light, and each scene light without a range, reaches as far as its "
+                   "inverse square max(colour) / d^2 exceeds E; lights fall off as glTF says (clamp(1 - (d/r)^4, 0, 1) / max(d, 0.01)^2)");
+    cmd.add_option("--cutoff", o.cutoff, "hard (glTF's window at each light's radius), stochastic (ranges drawn per frame by Russian roulette, "
+                   "unbiased; needs --light-cutoff) or none (every light reaches everywhere, pure inverse square: the physical reference, naive only)")->capture_default_str();
     cmd.add_option("--drift-speed", o.driftSpeed, "mean upward drift of the lights, units per second (0: still)")->capture_default_str();
     cmd.add_option("--backend", o.backend, "offscreen GL: auto (EGL, then OSMesa), egl, osmesa")->capture_default_str();
     cmd.add_flag("--gl-debug", o.glDebug, "debug context; print every KHR_debug message");
@@ -136,7 +162,7 @@ float lightRadiusFor(const FrameOptions& o, const Scene& scene) {
 std::vector<Light> frameLights(const FrameOptions& o, const Scene& scene) {
     if (!o.lightsFile.empty()) return loadLightsFile(o.lightsFile);
     std::vector<Light> lights;
-    if (parseOnOff("--scene-lights", o.sceneLights)) lights = lightsFromScene(scene);
+    if (parseOnOff("--scene-lights", o.sceneLights)) lights = lightsFromScene(scene, o.lightCutoff.value_or(kUnboundedLightThreshold));
     LightGeneration gen;
     gen.count = static_cast<std::uint32_t>(generatedLightCount(o, scene));
     gen.radius = lightRadiusFor(o, scene);
@@ -144,7 +170,8 @@ std::vector<Light> frameLights(const FrameOptions& o, const Scene& scene) {
     gen.seed = static_cast<std::uint32_t>(o.seed);
     gen.spotShare = o.spotShare;
     gen.spotAngleDeg = o.spotAngle;
-    const std::vector<Light> generated = generateLights(scene, gen, lightPlacementFor(o));
+    std::vector<Light> generated = generateLights(scene, gen, lightPlacementFor(o));
+    if (o.lightCutoff) applyCutoffRadii(generated, *o.lightCutoff);
     lights.insert(lights.end(), generated.begin(), generated.end());
     return lights;
 }
@@ -211,6 +238,9 @@ PreparedFrame prepareFrame(const FrameOptions& o, const Scene* loaded) {
         throw std::invalid_argument("--view " + o.view + ": needs a clustered method (--method forward-plus or deferred)");
     f.settings.method.resolve = parseResolve(o.resolve);
     f.settings.specular = parseOnOff("--specular", o.specular);
+    f.settings.lightModel = parseLightModel(o);
+    if (f.settings.lightModel.falloff == Falloff::Untruncated && f.settings.method.kind != MethodKind::Naive)
+        throw std::invalid_argument("--cutoff none: needs --method naive (every light reaches every pixel; no cluster can hold that)");
     f.settings.method.gbuffer = parseGBufferFormat(o.gbuffer);
     f.settings.method.prepass = parseOnOff("--prepass", o.prepass);
     if (!f.settings.method.prepass && f.settings.method.kind == MethodKind::ForwardPlus) {

@@ -62,6 +62,9 @@ struct FrameOptions {
     std::string transparency = "on";
     std::string triangleOrder = "overdraw";
     std::string specular = "on";
+    std::string brdf = "blinn-phong";
+    std::optional<float> lightCutoff;  // --light-cutoff E: radii where max(colour) / d^2 falls to E, glTF's falloff
+    std::string cutoff = "hard";       // --cutoff hard|stochastic|none
     bool bloom = false;
     float bloomThreshold = BloomSettings{}.threshold;
     float bloomStrength = BloomSettings{}.strength;
@@ -73,6 +76,9 @@ struct FrameOptions {
 };
 
 void addFrameOptions(CLI::App& command, FrameOptions& options);
+
+// --brdf, --light-cutoff and --cutoff, validated (std::invalid_argument, one line naming the flag).
+LightModel parseLightModel(const FrameOptions& options);
 
 // --lights as given, else its default for a scene: 0 where the scene brings lights of its own
 // (and --scene-lights is on), 1024 otherwise.

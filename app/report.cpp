@@ -65,7 +65,11 @@ void printClusterStatistics(const ClusterStatistics& s) {
 }
 
 void printShadingOptions(const FrameSettings& s) {
-    std::printf("specular: %s\n", s.specular ? "on (Blinn-Phong)" : "off (Lambert only)");
+    const LightModel& m = s.lightModel;
+    std::printf("BRDF: %s, specular %s\n", brdfName(m.brdf), s.specular ? "on" : "off (Lambert only)");
+    std::printf("falloff: %s", falloffName(m.falloff));
+    if (m.cutoff > 0.0f) std::printf(", cut-off E = %g", m.cutoff);
+    std::printf(" (guard: distances below %g count as %g)\n", ML_LIGHT_MIN_DISTANCE, ML_LIGHT_MIN_DISTANCE);
     const MethodKind kind = s.method.kind;
     if (kind == MethodKind::Deferred || kind == MethodKind::Visibility) {
         const std::size_t perPixel = gbufferBytesPerPixel(s.method.gbuffer);

@@ -1,7 +1,9 @@
 #version 450 core
 // Light animation: each light drifts upward at its own speed and wraps within the scene's
 // vertical extent; a spot also turns about +y at its own rate. Positions and directions are a
-// pure function of time, so frame K is reproducible alone. Mirrored by ml::animateLight.
+// pure function of time, so frame K is reproducible alone. Mirrored by ml::animateLight. Under
+// --cutoff stochastic it also draws each light's range for the frame (Russian roulette; mirrored
+// by ml::stochasticRadius, renderer/lights/light_model.h), so every clustering sees the drawn ranges.
 #include "include/bindings.h"
 #define ML_LIGHTS_WRITABLE
 #include "include/lights.glsl"
@@ -21,6 +23,8 @@ uniform uint u_lightCount;
 uniform float u_time;        // seconds
 uniform float u_driftSpeed;  // metres per second, mean
 uniform vec2 u_wrapY;        // min y, height
+uniform float u_stochasticCutoff;  // --cutoff stochastic: the cut-off E; 0: ranges as given
+uniform uint u_drawSeed;           // the frame's draw (ml::stochasticDrawSeed)
 
 void main() {
     uint i = gl_GlobalInvocationID.x;
@@ -42,6 +46,11 @@ void main() {
             cone.xyz = vec3(c * d.x + s * d.z, d.y, c * d.z - s * d.x);
         }
 #endif
+    }
+    if (u_stochasticCutoff > 0.0) {
+        vec3 c = l.colorCosInner.rgb;
+        float xi = 1.0 - hashToUnitFloat(pcgHash(i) ^ u_drawSeed);
+        l.positionRadius.w = sqrt(max(c.r, max(c.g, c.b)) / u_stochasticCutoff) / sqrt(xi);
     }
     animatedLights[i] = l;
 #if ML_SPOT_LIGHTS

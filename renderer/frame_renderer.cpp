@@ -63,22 +63,25 @@ void FrameRenderer::updateUniforms(float time) {
     uniforms_.cameraPos = glm::vec4(c.eye, 1.0f);
     uniforms_.viewport = glm::vec4(w, h, 1.0f / w, 1.0f / h);
     uniforms_.depthRange = glm::vec4(c.nearPlane, c.farPlane, time, settings_.ambient);
-    uniforms_.counts = glm::uvec4(lights_.count(), settings_.specular ? ML_SHADING_SPECULAR : 0u, 0, 0);
+    const LightModel& model = settings_.lightModel;
+    const std::uint32_t switches = (settings_.specular ? ML_SHADING_SPECULAR : 0u) | (model.brdf == Brdf::Ggx ? ML_SHADING_GGX : 0u);
+    uniforms_.counts = glm::uvec4(lights_.count(), switches, static_cast<std::uint32_t>(model.falloff), 0);
+    uniforms_.lightModel = glm::vec4(model.cutoff, 0.0f, 0.0f, 0.0f);
     frameUniformBuffer_.upload(&uniforms_, sizeof(uniforms_));
     frameUniformBuffer_.bindBase(GL_UNIFORM_BUFFER, ML_UBO_FRAME);
     lights_.bindSuns();
 }
 
-std::vector<PassTime> FrameRenderer::render(std::uint32_t frameIndex) {
-    return renderAt(static_cast<float>(frameIndex) * kSecondsPerFrame);
+std::vector<PassTime> FrameRenderer::render(std::uint32_t frameIndex, std::uint32_t draw) {
+    return renderAt(static_cast<float>(frameIndex) * kSecondsPerFrame, stochasticDrawSeed(frameIndex, draw));
 }
 
-std::vector<PassTime> FrameRenderer::renderAt(float time) {
+std::vector<PassTime> FrameRenderer::renderAt(float time, std::uint32_t drawSeed) {
     timer_.beginFrame();
     updateUniforms(time);
     {
         auto pass = timer_.pass("lights.animate");
-        animate_.run(lights_, time, settings_.animation);
+        animate_.run(lights_, time, settings_.animation, settings_.lightModel, drawSeed);
     }
     scene_.setSubmission(settings_.draw);
     scene_.setBackfaceCulling(settings_.backfaceCulling);

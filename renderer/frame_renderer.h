@@ -44,7 +44,8 @@ struct FrameSettings {
     bool backfaceCulling = true;                   // --backface-culling (SceneGpu::setBackfaceCulling)
     bool transparency = true;                      // --transparency: draw glTF BLEND surfaces (SceneGpu::setTransparency)
     TriangleOrder triangleOrder = TriangleOrder::Overdraw;  // --triangle-order, applied at upload
-    bool specular = true;  // the Blinn-Phong term (--specular), a frame uniform: no recompile
+    bool specular = true;  // the BRDF's specular term (--specular), a frame uniform: no recompile
+    LightModel lightModel;  // --brdf, --light-cutoff, --cutoff: frame uniforms, no recompile
     BloomSettings bloom;
     LightAnimation animation;
     bool timing = false;
@@ -57,10 +58,12 @@ public:
     FrameRenderer(const Scene& scene, const std::vector<Light>& lights, const FrameSettings& settings);
 
     // Renders the frame at animation time frameIndex * kSecondsPerFrame. Returns the pass times
-    // (empty unless settings.timing).
-    std::vector<PassTime> render(std::uint32_t frameIndex);
-    // The same at any animation time (the live view's clock runs at the real frame rate).
-    std::vector<PassTime> renderAt(float seconds);
+    // (empty unless settings.timing). `draw` numbers the stochastic cut-off's draws of one frame
+    // (render --accumulate): the lights and camera stay, the drawn ranges change.
+    std::vector<PassTime> render(std::uint32_t frameIndex, std::uint32_t draw = 0);
+    // The same at any animation time (the live view's clock runs at the real frame rate), the
+    // stochastic ranges drawn with `drawSeed`.
+    std::vector<PassTime> renderAt(float seconds, std::uint32_t drawSeed = 0);
 
     RgbaImage readLdr() const;
     FloatImage readHdr() const;
@@ -81,6 +84,7 @@ public:
     void setBackfaceCulling(bool on) { settings_.backfaceCulling = on; }
     void setTransparency(bool on) { settings_.transparency = on; }
     void setSpecular(bool on) { settings_.specular = on; }
+    void setLightModel(const LightModel& model) { settings_.lightModel = model; }
     void setBloom(const BloomSettings& bloom) { settings_.bloom = bloom; }
     const BloomPass& bloom() const { return bloom_; }
     const ShadingMethod& method() const { return *method_; }

@@ -54,9 +54,10 @@ struct alignas(16) FrameUniforms {
     glm::vec4 cameraPos;
     glm::vec4 viewport;    // width, height, 1/width, 1/height
     glm::vec4 depthRange;  // near, far, time, ambient
-    glm::uvec4 counts;     // light count, shading switches (ML_SHADING_*), ...
+    glm::uvec4 counts;     // light count, shading switches (ML_SHADING_*), falloff (ML_FALLOFF_*), stochastic draw seed
+    glm::vec4 lightModel;  // --light-cutoff E, 0, 0, 0
 };
-static_assert(sizeof(FrameUniforms) == 5 * 64 + 4 * 16);
+static_assert(sizeof(FrameUniforms) == 5 * 64 + 5 * 16);
 
 // glsl/include/cluster_grid.glsl: ClusterGridData (std430).
 struct alignas(16) ClusterGridGpu {

@@ -89,7 +89,7 @@ Sweep sweepFromOptions(const BenchOptions& o, nlohmann::json& overrides) {
     }
     if (!o.reference.empty()) {
         try {
-            sweep.run.supersampledReference = parseReferenceSetting(o.reference);
+            applyReferenceSetting(sweep.run, o.reference);
         } catch (const std::invalid_argument& e) {
             throw std::invalid_argument("--reference " + o.reference + ": " + e.what());
         }
@@ -110,7 +110,7 @@ nlohmann::ordered_json runJson(const RunSettings& run, const BenchRunner& runner
     r["timed_frames"] = run.timedFrames;
     r["frame_index"] = run.firstFrame;
     r["naive_budget_pixel_lights"] = runner.naiveBudget();
-    r["reference"] = referenceSettingName(run.supersampledReference);
+    r["reference"] = referenceSettingName(run);
     if (run.cameraPath) r["camera_path"] = true;
     r["clock"] = timingClockName(runner.clock());
     return r;
@@ -245,8 +245,9 @@ void addBenchCommand(CLI::App& app, int& exitCode) {
                             return std::string(buf);
                         }() + ")");
     run->add_option("--reference", o->reference,
-                    "naive (the accuracy columns), or supersampled:K: also aa_rmse and aa_psnr_db against naive at K x K "
-                    "samples per pixel, box-filtered (default: the sweep's run.reference, else naive)");
+                    "naive (the accuracy columns); supersampled:K: also aa_rmse and aa_psnr_db against naive at K x K "
+                    "samples per pixel, box-filtered; physical: also physical_* against naive with no cut-off (every light "
+                    "reaching every pixel, pure inverse square, the point's BRDF) (default: the sweep's run.reference, else naive)");
     run->add_option("--camera-path", o->cameraPath,
                     "every point's timed frames follow this JSON camera path (the format of `render` and `view "
                     "--camera-path`); the first timed frame is the accuracy frame")

@@ -15,8 +15,10 @@
 #include "renderer/context/gl_context.h"
 #include "renderer/gl/debug_output.h"
 #include "renderer/gl/gl_api.h"
+#include "renderer/frame_accumulation.h"
 #include "renderer/image/image_compare.h"
 #include "renderer/lights/light_set.h"
+#include "renderer/reference/tonemap_reference.h"
 #include "scenes/scene_library.h"
 
 namespace ml::app {
@@ -26,6 +28,7 @@ namespace {
 // Enough for a handful of 2560x1440 references (59 MB each); points are ordered so that the
 // ones sharing a reference run one after another, so the cache rarely needs more than one.
 constexpr std::size_t kReferenceCacheBytes = std::size_t{1} << 30;
+constexpr double kPhysicalBudgetScale = 10.0;
 constexpr std::size_t kSupersampledReferenceBytes = std::size_t{4} << 30;  // two 2560x1440 references at K = 4
 
 std::string scientific(double v) {
@@ -55,6 +58,9 @@ std::string frameKeyOf(const FrameOptions& o, double radius) {
     k["drift"] = o.driftSpeed;
     k["exposure"] = o.exposure;
     k["specular"] = o.specular;  // the naive reference must shade with the same model
+    k["brdf"] = o.brdf;
+    k["light_cutoff"] = o.lightCutoff ? nlohmann::json(*o.lightCutoff) : nlohmann::json();
+    k["cutoff"] = o.cutoff;
     k["bloom"] = o.bloom;        // and get the same post-process
     k["bloom_threshold"] = o.bloomThreshold;
     k["bloom_strength"] = o.bloomStrength;
@@ -90,6 +96,10 @@ BenchRow configColumns(const BenchPoint& p, int index, std::uint32_t frame, cons
     row["intensity"] = o.lightIntensity;
     row["drift_speed"] = o.driftSpeed;
     row["specular"] = o.specular;
+    row["brdf"] = o.brdf;
+    row["light_cutoff"] = o.lightCutoff ? nlohmann::ordered_json(*o.lightCutoff) : nlohmann::ordered_json();
+    row["cutoff"] = o.cutoff;
+    row["accumulate"] = p.accumulate;
     row["bloom"] = o.bloom;
     int w = 0, h = 0;
     parseSize(o.size, w, h);
@@ -134,7 +144,8 @@ BenchRunner::BenchRunner(const RunSettings& run, const GlInfo& info)
       clock_(info.software ? TimingClock::WallClockAfterFinish : TimingClock::GpuQueries),
       naiveBudget_(run.naiveBudget.value_or(info.software ? kNaiveBudgetSoftware : kNaiveBudgetGpu)),
       references_(kReferenceCacheBytes),
-      supersampledReferences_(kSupersampledReferenceBytes) {
+      supersampledReferences_(kSupersampledReferenceBytes),
+      physicalReferences_(kReferenceCacheBytes) {
     glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxTextureSize_);
 }
 
@@ -184,7 +195,7 @@ void BenchRunner::measureInto(BenchRow& row, const BenchPoint& point) {
     PreparedFrame f = prepareFrame(o, &scene);
     f.settings.clock = clock_;
     const double radius = lightRadiusFor(o, scene);
-    row["radius"] = radius;
+    row["radius"] = o.lightCutoff ? nlohmann::ordered_json() : nlohmann::ordered_json(radius);  // a cut-off: one per light
     row["near"] = f.settings.camera.nearPlane;
     row["far"] = f.settings.camera.farPlane;
 
@@ -346,8 +357,15 @@ void BenchRunner::measureInto(BenchRow& row, const BenchPoint& point) {
             row["zbin_lights_shaded"] = s.zbinStats.meanPassedPerPixel;
         }
     }
+    const FloatImage& pointHdr = referenceIsSelf ? reference->hdr : hdr;
+    if (run_.physicalReference) {
+        // The accumulated mean first, with the point's renderer; the reference has a renderer of its own.
+        const FloatImage mean = point.accumulate > 1 ? renderAccumulated(*renderer_, first, static_cast<std::uint32_t>(point.accumulate))
+                                                     : FloatImage{};
+        compareWithPhysical(row, f, o, point.accumulate > 1 ? mean : pointHdr);
+    }
     // Last: it renders with a renderer of its own.
-    if (run_.supersampledReference > 0) compareWithSupersampled(row, f, key, referenceIsSelf ? reference->hdr : hdr);
+    if (run_.supersampledReference > 0) compareWithSupersampled(row, f, key, pointHdr);
     row["gbuffer_bytes"] = renderer_->method().extraTargetBytes();
     row["target_bytes"] = renderer_->targets().bytes();
     row["light_bytes"] = renderer_->lights().bytes();
@@ -382,6 +400,46 @@ void BenchRunner::compareWithSupersampled(BenchRow& row, const PreparedFrame& f,
     const ImageDifference d = compareImages(hdr, reference->hdr);
     row["aa_rmse"] = d.rmse;
     row["aa_psnr_db"] = finiteOr(d.psnrDb, "inf");
+}
+
+void BenchRunner::compareWithPhysical(BenchRow& row, const PreparedFrame& f, const FrameOptions& o, const FloatImage& hdr) {
+    // Rendered once per frame for every cut-off and drawn in bands (naive_forward.h), so it may
+    // cost kPhysicalBudgetScale naive frames.
+    const double pixelLights = static_cast<double>(f.settings.width) * f.settings.height * static_cast<double>(f.lights.size());
+    const double budget = kPhysicalBudgetScale * naiveBudget_;
+    if (pixelLights > budget) {
+        addNote(row, "no physical reference: " + scientific(pixelLights) + " pixel-lights > " + scientific(budget) +
+                         " (10 x the naive budget)");
+        return;
+    }
+    // Radii and cut-offs do not matter to it: every light reaches everywhere.
+    FrameOptions untruncated = o;
+    untruncated.lightCutoff.reset();
+    untruncated.cutoff = "none";
+    const std::string key = frameKeyOf(untruncated, 0.0) + "@frame" + std::to_string(run_.firstFrame) + "@physical";
+    const ReferenceImages* reference = physicalReferences_.find(key);
+    if (!reference) {
+        FrameSettings settings = f.settings;
+        settings.method = MethodSettings{};
+        settings.supersample = 1;
+        settings.timing = false;
+        settings.lightModel.falloff = Falloff::Untruncated;
+        FrameRenderer physical(f.scene, f.lights, settings);
+        physical.render(run_.firstFrame);
+        checkNoGpuReset("the physical reference");
+        FloatImage referenceHdr = physical.readHdr();
+        RgbaImage referenceLdr = tonemapImage(referenceHdr, settings.exposure);
+        reference = &physicalReferences_.insert(key, ReferenceImages{std::move(referenceHdr), std::move(referenceLdr)});
+    }
+    const ImageDifference d = compareImages(hdr, reference->hdr);
+    const ImageDifference d8 = compareImages(tonemapImage(hdr, f.settings.exposure), reference->ldr);
+    row["physical_max_abs_err"] = d.maxAbs;
+    row["physical_rmse"] = d.rmse;
+    row["physical_psnr_db"] = finiteOr(d.psnrDb, "inf");
+    row["physical_ldr_max_abs_err"] = d8.maxAbs;
+    row["physical_ldr_psnr_db"] = finiteOr(d8.psnrDb, "inf");
+    row["physical_ldr_bad_pixel_share"] = d8.badPixelShare;
+    if (f.settings.bloom.enabled) addNote(row, "physical_ldr_* compare without bloom (the CPU tonemap has none)");
 }
 
 std::string describeResult(const BenchRow& row) {

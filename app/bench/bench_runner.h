@@ -44,6 +44,9 @@ private:
     // aa_rmse, aa_psnr_db: the point's HDR frame against naive at K x K samples per pixel
     // (RunSettings::supersampledReference), cached per frame as the naive reference is.
     void compareWithSupersampled(BenchRow& row, const PreparedFrame& frame, const std::string& frameKey, const FloatImage& hdr);
+    // physical_*: `hdr` (the point's frame, or the mean of its accumulated draws) against naive with
+    // no cut-off (RunSettings::physicalReference), and the same after the CPU tonemap.
+    void compareWithPhysical(BenchRow& row, const PreparedFrame& frame, const FrameOptions& options, const FloatImage& hdr);
 
     RunSettings run_;
     GlInfo info_;
@@ -61,6 +64,7 @@ private:
     // Supersampled references apart: 16 times a naive reference's size at K = 4, so sharing one
     // budget would evict the naive reference a comparison still holds (and themselves each point).
     ReferenceCache supersampledReferences_;
+    ReferenceCache physicalReferences_;  // keyed without radius or cut-off: one per frame serves every cut-off
 };
 
 // "12.345 ms (p10 12.1, p90 13.0), PSNR 87.3 dB [note]": a measured row, for the progress output.

@@ -155,6 +155,28 @@ const std::vector<AxisDef>& axisDefs() {
          Applies::Always, [](BenchPoint& p, const json& v) { p.frame.driftSpeed = static_cast<float>(asNumber(v)); }},
         {{"specular", "--specular", "Blinn-Phong specular term: on, off (Lambert only)"}, ValueKind::Boolean, Applies::Always,
          [](BenchPoint& p, const json& v) { p.frame.specular = asBoolean(v) ? "on" : "off"; }},
+        {{"brdf", "--brdf", "blinn-phong or ggx (glTF's metallic-roughness BRDF)"}, ValueKind::Text, Applies::Always,
+         [](BenchPoint& p, const json& v) {
+             (void)parseBrdf(asText(v));
+             p.frame.brdf = v.get<std::string>();
+         }},
+        {{"light_cutoff", "--light-cutoff", "E > 0: generated lights reach as far as max(colour) / d^2 exceeds E, glTF's falloff"},
+         ValueKind::Number, Applies::Always,
+         [](BenchPoint& p, const json& v) {
+             const double x = asNumber(v);
+             if (!(x > 0.0 && std::isfinite(x))) throw std::invalid_argument("must be a finite number > 0");
+             p.frame.lightCutoff = static_cast<float>(x);
+         }},
+        {{"cutoff", "--cutoff", "hard, stochastic (ranges drawn per frame; needs light_cutoff) or none (naive only)"}, ValueKind::Text,
+         Applies::Always,
+         [](BenchPoint& p, const json& v) {
+             const std::string s = asText(v);
+             if (s != "hard" && s != "stochastic" && s != "none") throw std::invalid_argument("expected hard, stochastic or none");
+             p.frame.cutoff = s;
+         }},
+        {{"accumulate", "--accumulate", "the physical_* columns on the mean of K stochastic draws of the frame (time: K frames)"},
+         ValueKind::Integer, Applies::Always,
+         [](BenchPoint& p, const json& v) { p.accumulate = static_cast<int>(asInteger(v, 1, 4096)); }},
         {{"bloom", "--bloom", "bloom after shading, before the tonemap: on, off"}, ValueKind::Boolean, Applies::Always,
          [](BenchPoint& p, const json& v) { p.frame.bloom = asBoolean(v); }},
         {{"method", "--method", "naive, forward-plus, deferred, visibility"}, ValueKind::Text, Applies::Always,
@@ -306,7 +328,7 @@ RunSettings parseRun(const json& run, const std::string& where) {
         if (!(b > 0.0)) throw std::invalid_argument("must be > 0 (pixels x lights)");
         r.naiveBudget = b;
     });
-    field("reference", [&](const json& v) { r.supersampledReference = parseReferenceSetting(asText(v)); });
+    field("reference", [&](const json& v) { applyReferenceSetting(r, asText(v)); });
     return r;
 }
 
@@ -333,6 +355,22 @@ int parseReferenceSetting(const std::string& text) {
         if (k.size() == 1 && k[0] >= '2' && k[0] <= '8') return k[0] - '0';
     }
     throw std::invalid_argument("expected naive or supersampled:K with K from 2 to 8 (naive at K x K samples per pixel)");
+}
+
+void applyReferenceSetting(RunSettings& run, const std::string& text) {
+    if (text == "physical") {
+        run.physicalReference = true;
+        return;
+    }
+    try {
+        run.supersampledReference = parseReferenceSetting(text);
+    } catch (const std::invalid_argument&) {
+        throw std::invalid_argument("expected naive, physical (naive with no cut-off) or supersampled:K with K from 2 to 8");
+    }
+}
+
+std::string referenceSettingName(const RunSettings& run) {
+    return run.physicalReference ? "physical" : referenceSettingName(run.supersampledReference);
 }
 
 std::string referenceSettingName(int supersampled) {
@@ -363,6 +401,9 @@ std::string describePoint(const BenchPoint& p) {
     if (p.forwardPlus && o.prepass == "off") s += ", no pre-pass";
     if (o.msaa > 1) s += ", MSAA " + std::to_string(o.msaa);
     if (o.specular == "off") s += ", specular off";
+    if (o.brdf != "blinn-phong") s += ", " + o.brdf;
+    if (o.lightCutoff) s += ", cut-off " + formatNumber(*o.lightCutoff) + (o.cutoff == "hard" ? "" : " " + o.cutoff);
+    if (p.accumulate > 1) s += ", " + std::to_string(p.accumulate) + " draws accumulated";
     if (o.bloom) s += ", bloom";
     return s;
 }

@@ -44,7 +44,14 @@ struct RunSettings {
     int supersampledReference = 0;
     // --camera-path: every point's timed frames follow it (and its first frame is the accuracy frame).
     std::optional<CameraPath> cameraPath;
+    // "reference": "physical" (--reference physical): every point is also compared with naive
+    // with no cut-off, every light reaching every pixel with its untruncated inverse square, in
+    // the point's BRDF (physical_* columns): what the cut-off throws away.
+    bool physicalReference = false;
 };
+// "naive", "supersampled:K" or "physical" into `run`. Throws std::invalid_argument with the reason.
+void applyReferenceSetting(RunSettings& run, const std::string& text);
+std::string referenceSettingName(const RunSettings& run);
 
 // "naive" -> 0, "supersampled:K" (K in 2..8) -> K. Throws std::invalid_argument with the reason.
 int parseReferenceSetting(const std::string& text);
@@ -59,6 +66,7 @@ struct BenchPoint {
     bool gbuffered = false;   // deferred or visibility: gbuffer and normal_cones apply
     bool forwardPlus = false; // prepass applies (and msaa with naive: !gbuffered)
     bool capped = false;      // max_per_cluster applies
+    int accumulate = 1;       // the physical_* columns on the mean of this many stochastic draws
 };
 
 // "lights: deferred, 256 lights, 160x90, grid 16 across x 16 fitted, exact, wg 64, ..."

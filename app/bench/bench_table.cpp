@@ -11,7 +11,7 @@ namespace {
 
 // Before the pass columns: what the point is and how long a frame took.
 const std::vector<std::string> kLeadingColumns = {
-    "experiment", "point", "scene", "method", "lights", "spot_share", "radius", "radius_rule", "seed", "intensity", "drift_speed", "specular", "bloom",
+    "experiment", "point", "scene", "method", "lights", "spot_share", "radius", "radius_rule", "seed", "intensity", "drift_speed", "specular", "brdf", "light_cutoff", "cutoff", "accumulate", "bloom",
     "width", "height", "camera", "near", "far", "tiles_x", "tiles_y", "slices", "slicing", "assign",
     "max_per_cluster", "active_only", "cull", "normal_cones", "gbuffer", "resolve", "prepass", "msaa", "draw", "draw_calls", "backface_culling", "transparency", "triangle_order", "workgroup", "frame_index", "warmup_frames",
     "timed_frames", "clock", "sm_clock_mhz", "frame_ms", "frame_ms_p10", "frame_ms_p90", "wall_ms",
@@ -19,7 +19,8 @@ const std::vector<std::string> kLeadingColumns = {
 // After them: accuracy, cluster statistics, memory, the machine and what went wrong.
 const std::vector<std::string> kTrailingColumns = {
     "max_abs_err", "rmse", "psnr_db", "bad_pixel_share", "ldr_max_abs_err", "ldr_psnr_db", "ldr_bad_pixel_share",
-    "reference", "aa_rmse", "aa_psnr_db", "aa_reference", "clusters", "empty_share", "mean_lights_per_cluster", "mean_lights_per_nonempty_cluster",
+    "reference", "aa_rmse", "aa_psnr_db", "aa_reference", "physical_max_abs_err", "physical_rmse", "physical_psnr_db",
+    "physical_ldr_max_abs_err", "physical_ldr_psnr_db", "physical_ldr_bad_pixel_share", "clusters", "empty_share", "mean_lights_per_cluster", "mean_lights_per_nonempty_cluster",
     "max_lights_per_cluster", "list_entries", "false_positive_share", "normal_cone_pairs_removed", "overflow_clusters", "dropped_lights", "active_clusters",
     "list_bytes", "grid_bytes", "zbin_mask_bytes", "zbin_lights_walked", "zbin_lights_shaded", "gbuffer_bytes",
     "target_bytes", "light_bytes", "renderer", "note",

@@ -17,11 +17,13 @@
 #include "app/render/sequence_timing.h"
 #include "app/render/video_encoder.h"
 #include "renderer/clustering/clustered_lighting.h"
+#include "renderer/frame_accumulation.h"
 #include "renderer/frame_renderer.h"
 #include "renderer/gl/debug_output.h"
 #include "renderer/gl/gl_api.h"
 #include "renderer/image/image.h"
 #include "renderer/lights/surface_reach.h"
+#include "renderer/reference/tonemap_reference.h"
 
 namespace ml::app {
 
@@ -41,6 +43,7 @@ struct RenderOptions {
     std::string timingCsv;
     bool stats = false;
     std::string dumpClusters;
+    long long accumulate = 1;  // --accumulate K: each frame is the mean of K stochastic draws
 };
 
 // The files a run writes, checked before the scene is built.
@@ -94,6 +97,10 @@ int runRender(RenderOptions o) {
     VideoSettings videoSettings{o.video, 0, 0, o.videoFps, o.videoCrf};
     if (!o.video.empty()) validateVideo(videoSettings);
 
+    if (o.accumulate < 1 || o.accumulate > 65536)
+        throw std::invalid_argument("--accumulate " + std::to_string(o.accumulate) + ": must be between 1 and 65536");
+    if (o.accumulate > 1 && o.frame.bloom)
+        throw std::invalid_argument("--accumulate with --bloom: the mean is tonemapped on the CPU, which has no bloom; drop one");
     PreparedFrame frame = prepareFrame(o.frame);
     for (const std::string& w : frame.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
     printNotes(frame);
@@ -124,17 +131,19 @@ int runRender(RenderOptions o) {
         renderer.setCamera(camera);
         const auto start = std::chrono::steady_clock::now();
         lastTimes = renderer.render(k);
+        std::optional<FloatImage> mean;
+        if (o.accumulate > 1) mean = renderAccumulated(renderer, k, static_cast<std::uint32_t>(o.accumulate));
         if (timing) {
             glFinish();
             timings.add(k, camera, lastTimes,
                         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
         }
         if (outputs.png || video) {
-            const RgbaImage ldr = renderer.readLdr();
+            const RgbaImage ldr = mean ? tonemapImage(*mean, frame.settings.exposure) : renderer.readLdr();
             if (outputs.png) writePng(outputs.png->path(k), ldr);
             if (video) video->addFrame(ldr);
         }
-        if (outputs.pfm) writePfm(outputs.pfm->path(k), renderer.readHdr());
+        if (outputs.pfm) writePfm(outputs.pfm->path(k), mean ? *mean : renderer.readHdr());
         progress.frameDone(k, k - range.first + 1);
         if (k == range.last) break;
     }
@@ -231,6 +240,9 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
         ->capture_default_str();
     cmd->add_option("--timing-csv", options->timingCsv,
                     "per-frame camera and pass times to CSV (the bench's column names; implies timing as --time)");
+    cmd->add_option("--accumulate", options->accumulate,
+                    "K: each frame is the mean of K draws of --cutoff stochastic's ranges, lights and camera held still "
+                    "(deterministic per --seed and frame; tonemapped on the CPU, no bloom)")->capture_default_str();
     cmd->add_flag("--stats", options->stats, "print cluster statistics (empty share, lights per cluster, overflow, memory) of the last frame");
     cmd->add_option("--dump-clusters", options->dumpClusters, "write the grid and every non-empty cluster's light indices to JSON");
     cmd->callback([options, cmd, &exitCode] {

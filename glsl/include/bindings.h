@@ -187,8 +187,22 @@
 #define ML_SSBO_EXPOSURE_PARTIALS 10   // per tile: sum of log2 luminance over its lit pixels, their count
 #define ML_SSBO_EXPOSURE 11            // the exposure the tonemap applies, and what it was computed from
 
-// Frame uniforms u_counts.y: switches of the shading model (--specular).
+// Frame uniforms u_counts.y: switches of the shading model (--specular, --brdf).
 #define ML_SHADING_SPECULAR 1u
+#define ML_SHADING_GGX 2u  // glTF's metallic-roughness BRDF (GGX); without it, normalized Blinn-Phong
+// GGX's smallest alpha (roughness^2): roughness 0 is a mirror, whose D is a delta no pixel samples;
+// Filament's floor (perceptual roughness 0.045), a highlight of a few pixels that fp32 holds.
+#define ML_GGX_MIN_ALPHA 0.002
+
+// Frame uniforms u_counts.z: the falloff of point and spot lights (renderer/lights/light_model.h).
+#define ML_FALLOFF_SMOOTH 0       // saturate(1 - (d/r)^4)^2 / (d^2 + 1): the seeds' model (--light-radius, overlap:K)
+#define ML_FALLOFF_GLTF 1         // saturate(1 - (d/r)^4) / max(d, dmin)^2: glTF's, r its range or the cut-off radius
+#define ML_FALLOFF_STOCHASTIC 2   // max(1 / max(d, dmin)^2, E / I) inside a range drawn per light and frame
+#define ML_FALLOFF_UNTRUNCATED 3  // 1 / max(d, dmin)^2 at every distance: the physical reference (naive)
+// The guard against inverse square's singularity at the light, in scene units (metres in glTF):
+// every falloff but the seeds' divides by max(d, this)^2, so a surface touching a light sees
+// at most 10^4 times its intensity. The same in every method and the CPU mirror.
+#define ML_LIGHT_MIN_DISTANCE 0.01
 
 // --gbuffer layouts, as the ML_GBUFFER_FORMAT define of the shaders that write or read it.
 #define ML_GBUFFER_STANDARD 0       // normal, albedo, specular: three RGBA16F targets (24 B per pixel)

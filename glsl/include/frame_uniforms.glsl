@@ -8,9 +8,13 @@ layout(std140, binding = ML_UBO_FRAME) uniform FrameUniformsBlock {
     vec4 u_cameraPos;      // xyz: world-space eye
     vec4 u_viewport;       // width, height, 1/width, 1/height
     vec4 u_depthRange;     // near, far, time (s), ambient
-    uvec4 u_counts;        // x: light count, y: shading switches (ML_SHADING_*)
+    uvec4 u_counts;        // x: light count, y: shading switches (ML_SHADING_*), z: falloff (ML_FALLOFF_*), w: stochastic draw seed
+    vec4 u_lightModel;     // x: --light-cutoff E (output units; 0 when none)
 };
 
 uint lightCount() { return u_counts.x; }
 float ambientStrength() { return u_depthRange.w; }
 bool specularEnabled() { return (u_counts.y & ML_SHADING_SPECULAR) != 0u; }
+bool ggxEnabled() { return (u_counts.y & ML_SHADING_GGX) != 0u; }
+uint falloffMode() { return u_counts.z; }
+float lightCutoff() { return u_lightModel.x; }

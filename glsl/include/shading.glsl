@@ -1,30 +1,63 @@
 // The shading model shared by every method (docs/lights-and-shading.md), mirrored on the CPU by
-// renderer/reference/shading_reference.cpp. A glTF metallic-roughness material maps onto normalized
-// Blinn-Phong:
-//   diffuse = base * (1 - metallic)        f0 = mix(0.04, base, metallic)
-//   alpha = roughness^2                    shininess s = clamp(2 / alpha^2 - 2, 1, 8192)
-//   L_out = ambient * occlusion * (diffuse + f0) + emissive
-//         + sum over lights of  color * W(d, r) * max(N.L, 0) * (diffuse + f0 * (s + 8) / 8 * max(N.H, 0)^s)
-//   W(d, r) = saturate(1 - (d/r)^4)^2 / (d^2 + 1)
-// A spot light's colour is further weighted by glTF's angular attenuation (KHR_lights_punctual):
+// renderer/reference/shading_reference.cpp. A glTF metallic-roughness material gives
+//   diffuse = base * (1 - metallic)        f0 = mix(0.04, base, metallic)      alpha = roughness^2
+//   L_out = ambient * occlusion * (diffuse + f0) + emissive + sum over lights of  color * falloff * max(N.L, 0) * f
+// with the BRDF f chosen by --brdf (a frame uniform, the same in every method):
+//   blinn-phong  f = diffuse + f0 * (s + 8) / 8 * max(N.H, 0)^s,  s = clamp(2 / alpha^2 - 2, 1, 8192)
+//                (normalized Blinn-Phong without the 1/pi: a white surface facing a light of
+//                intensity I at distance d shows I * falloff)
+//   ggx          glTF's (specification, appendix B): alpha floored at ML_GGX_MIN_ALPHA,
+//                F = f0 + (1 - f0) (1 - |V.H|)^5,  D = alpha^2 / (pi ((N.H)^2 (alpha^2 - 1) + 1)^2),
+//                Vis = 0.5 / (N.L sqrt((N.V)^2 (1 - alpha^2) + alpha^2) + |N.V| sqrt((N.L)^2 (1 - alpha^2) + alpha^2))
+//                (height-correlated Smith, as Khronos' Sample Viewer, Filament and Bevy),
+//                f = (1 - F) diffuse / pi + F D Vis   (a white surface shows I * falloff / pi)
+// and the falloff chosen by the light model (lightFalloff below). A spot light's colour is
+// further weighted by glTF's angular attenuation (KHR_lights_punctual):
 //   A = saturate((cos - cosOuter) / (cosInner - cosOuter))^2,  cos = angle between its direction and -L,
 // exactly zero at and outside the outer cone, so culling by the cone is as exact as by r. A
-// directional light has colour c from direction -L everywhere (W = A = 1).
-// W is smooth, and exactly zero at and beyond r, so culling a light outside its radius is exact.
-// The specular term is weighted by N.L too, so shading is continuous at the terminator and a
-// tiny error in a rebuilt position or normal cannot switch a highlight on or off. --specular off
-// (a frame uniform, the same in every method) leaves it out: the diffuse term only. Emissive
-// surfaces glow but light nothing else: only the scene's lights do.
+// directional light has colour c from direction -L everywhere (falloff = A = 1).
+// Every falloff but the untruncated one is exactly zero at and beyond the light's radius, so
+// culling a light outside it is exact. The specular term is weighted by N.L too, so shading is
+// continuous at the terminator and a tiny error in a rebuilt position or normal cannot switch a
+// highlight on or off. --specular off leaves it out: the diffuse term only. Emissive surfaces
+// glow but light nothing else: only the scene's lights do.
 
 #ifndef ML_SPOT_LIGHTS
 #define ML_SPOT_LIGHTS 1  // as in lights.glsl: spot paths compiled in unless the renderer says none
 #endif
 
-float lightFalloff(float d, float radius) {
+const float kPi = 3.14159265358979;
+
+// The falloff of a point or spot light of radius r and brightest channel `intensity` at distance
+// d, by the frame's falloff mode (bindings.h, ML_FALLOFF_*; renderer/lights/light_model.h):
+//   smooth       saturate(1 - (d/r)^4)^2 / (d^2 + 1)                  zero at r
+//   gltf         saturate(1 - (d/r)^4) / max(d, dmin)^2                zero at r
+//   stochastic   saturate(1 - (d/r)^4) / max(d, dmin)^2 / A(d), r drawn per light and frame
+//                (animate_lights.comp; Tokuyoshi and Harada 2016) and A(d) the window's mean over
+//                the draws, so that the expectation is 1 / max(d, dmin)^2 (stochasticAcceptance)
+//   untruncated  1 / max(d, dmin)^2 everywhere: the physical reference
+// Every windowed falloff is continuous and zero at r, so a surface point rebuilt from depth a
+// little off its true place is lit by a light at its edge almost as much as the true point.
+
+// The stochastic cut-off's mean window. r = r_E / sqrt(xi), xi uniform in (0, 1], r_E where the
+// light's inverse square falls to E; with u = (d / r_E)^2 the window is 1 - u^2 xi^2, whose mean
+// over xi is 1 - u^2 / 3 for u <= 1 and 2 / (3 u) beyond (zero for xi > 1/u).
+float stochasticAcceptance(float d, float intensity) {
+    float u = d * d * lightCutoff() / intensity;
+    return u <= 1.0 ? 1.0 - u * u / 3.0 : 2.0 / (3.0 * u);
+}
+
+float lightFalloff(float d, float radius, float intensity) {
+    uint mode = falloffMode();
+    float guarded = max(d, ML_LIGHT_MIN_DISTANCE);
+    float inverseSquare = 1.0 / (guarded * guarded);
+    if (mode == ML_FALLOFF_UNTRUNCATED) return inverseSquare;
     if (d >= radius) return 0.0;
     float x = d / radius;
     float x2 = x * x;
     float w = clamp(1.0 - x2 * x2, 0.0, 1.0);
+    if (mode == ML_FALLOFF_GLTF) return w * inverseSquare;
+    if (mode == ML_FALLOFF_STOCHASTIC) return w * inverseSquare / stochasticAcceptance(d, intensity);
     return (w * w) / (d * d + 1.0);
 }
 
@@ -40,8 +73,10 @@ struct SurfacePoint {
     // Derived by deriveShadingTerms: what the light loop reads, and the unlit term, worked out
     // before the loop so that the material's inputs need not stay in registers through it.
     vec3 diffuse;
-    vec3 specular;    // f0 * (s + 8) / 8
-    float shininess;
+    vec3 f0;          // GGX
+    float alpha;      // GGX: roughness^2, floored at ML_GGX_MIN_ALPHA
+    vec3 specular;    // Blinn-Phong: f0 * (s + 8) / 8
+    float shininess;  // Blinn-Phong
     vec3 unlit;       // ambient * occlusion * (diffuse + f0) + emissive
 };
 
@@ -50,10 +85,11 @@ void deriveShadingTerms(inout SurfacePoint s) {
     float r = clamp(s.roughness, 0.0, 1.0);
     float alpha = r * r;
     s.shininess = clamp(2.0 / max(alpha * alpha, 1e-6) - 2.0, 1.0, 8192.0);
+    s.alpha = max(alpha, ML_GGX_MIN_ALPHA);
     s.diffuse = s.baseColor * (1.0 - m);
-    vec3 f0 = mix(vec3(0.04), s.baseColor, m);
-    s.specular = f0 * ((s.shininess + 8.0) / 8.0);
-    s.unlit = ambientStrength() * s.occlusion * (s.diffuse + f0) + s.emissive;
+    s.f0 = mix(vec3(0.04), s.baseColor, m);
+    s.specular = s.f0 * ((s.shininess + 8.0) / 8.0);
+    s.unlit = ambientStrength() * s.occlusion * (s.diffuse + s.f0) + s.emissive;
 }
 
 // glTF's angular attenuation: linear in the cosine between the outer and inner cones, squared.
@@ -66,11 +102,35 @@ float spotAttenuation(float cosToAxis, float cosInner, float cosOuter) {
     return t * t;
 }
 
-// The Blinn-Phong terms of a light of colour `color` arriving from unit direction l, weighted
-// by its falloff (and cone).
+// glTF's BRDF (appendix B) for unit l, v, n with N.L > 0, with the height-correlated Smith
+// visibility of Khronos' Sample Viewer, Filament and Bevy (the appendix writes the separable one;
+// they differ at grazing angles). 1 - (N.H)^2 as |N x H|^2: near the peak of a small alpha, the
+// difference 1 - (N.H)^2 loses the bits D depends on (Filament does the same).
+vec3 ggxBrdf(SurfacePoint s, vec3 viewDir, vec3 l, float nDotL) {
+    vec3 h = normalize(l + viewDir);
+    float nDotV = abs(dot(s.normal, viewDir));
+    float nDotH = max(dot(s.normal, h), 0.0);
+    float vDotH = abs(dot(viewDir, h));
+    vec3 nCrossH = cross(s.normal, h);
+    float a2 = s.alpha * s.alpha;
+    float q = 1.0 - vDotH;
+    float q2 = q * q;
+    vec3 fresnel = s.f0 + (1.0 - s.f0) * (q2 * q2 * q);
+    float dDenominator = dot(nCrossH, nCrossH) + nDotH * nDotH * a2;  // (N.H)^2 (alpha^2 - 1) + 1
+    float distribution = a2 / (kPi * dDenominator * dDenominator);
+    float visibility = 0.5 / (nDotL * sqrt(nDotV * nDotV * (1.0 - a2) + a2) + nDotV * sqrt(nDotL * nDotL * (1.0 - a2) + a2));
+    return (1.0 - fresnel) * s.diffuse * (1.0 / kPi) + fresnel * (distribution * visibility);
+}
+
+// A light of colour `color` arriving from unit direction l, weighted by its falloff (and cone),
+// through the frame's BRDF.
 vec3 shadeIncoming(SurfacePoint s, vec3 viewDir, vec3 l, vec3 color, float weight) {
     float nDotL = dot(s.normal, l);
     if (nDotL <= 0.0) return vec3(0.0);
+    if (ggxEnabled()) {
+        if (!specularEnabled()) return color * (weight * nDotL * (1.0 / kPi)) * s.diffuse;
+        return color * (weight * nDotL) * ggxBrdf(s, viewDir, l, nDotL);
+    }
     if (!specularEnabled()) return color * (weight * nDotL) * s.diffuse;
     vec3 h = normalize(l + viewDir);
     float spec = pow(max(dot(s.normal, h), 0.0), s.shininess);
@@ -82,14 +142,15 @@ vec3 shadeIncoming(SurfacePoint s, vec3 viewDir, vec3 l, vec3 color, float weigh
 vec3 shadeLight(SurfacePoint s, vec3 viewDir, vec4 positionRadius, vec4 colorCosInner, vec4 directionCosOuter) {
     vec3 toLight = positionRadius.xyz - s.position;
     float d = length(toLight);
-    float falloff = lightFalloff(d, positionRadius.w);
+    vec3 color = colorCosInner.rgb;
+    float falloff = lightFalloff(d, positionRadius.w, max(color.r, max(color.g, color.b)));
     if (falloff <= 0.0) return vec3(0.0);
     vec3 l = toLight / max(d, 1e-6);
     if (ML_SPOT_LIGHTS != 0 && directionCosOuter.w > -1.5) {
         falloff *= spotAttenuation(dot(-l, directionCosOuter.xyz), colorCosInner.w, directionCosOuter.w);
         if (falloff <= 0.0) return vec3(0.0);
     }
-    return shadeIncoming(s, viewDir, l, colorCosInner.rgb, falloff);
+    return shadeIncoming(s, viewDir, l, color, falloff);
 }
 
 // A directional light travelling along the unit `direction`: no falloff, no cone.

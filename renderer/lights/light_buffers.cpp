@@ -98,13 +98,16 @@ std::pair<std::string, std::string> spotLightsDefine(bool spotLights) { return {
 AnimateLightsPass::AnimateLightsPass(bool spotLights)
     : program_(gl::Program::compute("animate_lights.comp", shaders::Defines{spotLightsDefine(spotLights)})) {}
 
-void AnimateLightsPass::run(const LightBuffers& lights, float time, const LightAnimation& animation) const {
+void AnimateLightsPass::run(const LightBuffers& lights, float time, const LightAnimation& animation, const LightModel& model,
+                            std::uint32_t drawSeed) const {
     if (lights.count() == 0) return;
     program_.use();
     program_.set("u_lightCount", lights.count());
     program_.set("u_time", time);
     program_.set("u_driftSpeed", animation.driftSpeed);
     program_.set("u_wrapY", glm::vec2(animation.wrapMinY, animation.wrapHeight));
+    program_.set("u_stochasticCutoff", model.falloff == Falloff::Stochastic ? model.cutoff : 0.0f);
+    program_.set("u_drawSeed", drawSeed);
     lights.bindForAnimation();
     glDispatchCompute(gl::groupsFor(lights.count(), ML_ANIMATE_WORKGROUP), 1, 1);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);

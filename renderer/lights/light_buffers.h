@@ -7,6 +7,7 @@
 #include "renderer/gl/buffer.h"
 #include "renderer/gl/program.h"
 #include "renderer/gpu_types.h"
+#include "renderer/lights/light_model.h"
 #include "renderer/lights/light_set.h"
 
 namespace ml {
@@ -57,11 +58,13 @@ private:
 // their spot paths compile out (glsl/include/lights.glsl).
 std::pair<std::string, std::string> spotLightsDefine(bool spotLights);
 
-// glsl/animate_lights.comp: writes the animated lights for a point in time.
+// glsl/animate_lights.comp: writes the animated lights for a point in time and, under
+// Falloff::Stochastic, their ranges drawn with `drawSeed`.
 class AnimateLightsPass {
 public:
     explicit AnimateLightsPass(bool spotLights);
-    void run(const LightBuffers& lights, float time, const LightAnimation& animation) const;
+    void run(const LightBuffers& lights, float time, const LightAnimation& animation, const LightModel& model = {},
+             std::uint32_t drawSeed = 0) const;
 
 private:
     gl::Program program_;

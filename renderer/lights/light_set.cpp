@@ -10,6 +10,7 @@
 
 #include "glsl/include/bindings.h"
 #include "renderer/hash.h"
+#include "renderer/lights/light_model.h"
 
 namespace ml {
 
@@ -104,19 +105,16 @@ Bounds lightVolume(const Bounds& sceneBounds) {
     return v;
 }
 
-float radiusWithoutRange(const glm::vec3& color) {
-    const float brightest = std::max({color.r, color.g, color.b, 0.0f});
-    return std::sqrt(brightest / kUnboundedLightThreshold);
-}
+float radiusWithoutRange(const glm::vec3& color, float cutoff) { return cutoffRadius(color, cutoff); }
 
-std::vector<Light> lightsFromScene(const Scene& scene) {
+std::vector<Light> lightsFromScene(const Scene& scene, float cutoff) {
     std::vector<Light> lights;
     lights.reserve(scene.lights.size());
     for (const SceneLight& s : scene.lights) {
         Light l;
         l.position = s.position;
         l.color = s.color * s.intensity;
-        l.radius = s.range > 0.0f ? s.range : radiusWithoutRange(l.color);
+        l.radius = s.range > 0.0f ? s.range : radiusWithoutRange(l.color, cutoff);
         l.direction = s.direction;
         switch (s.type) {
         case SceneLight::Type::Point: l.type = LightType::Point; break;

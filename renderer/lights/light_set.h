@@ -56,10 +56,11 @@ Bounds lightVolume(const Bounds& sceneBounds);
 // colour times its intensity, used as given (candela for points and spots, lux for directional
 // lights, as Khronos' Sample Viewer does); radius = the file's range, or where a light without
 // one stops mattering: the distance at which intensity / d^2 of its brightest channel falls to
-// kUnboundedLightThreshold (1/255, a step of the 8-bit output at exposure 1).
+// `cutoff` (--light-cutoff; by default kUnboundedLightThreshold, 1/255, a step of the 8-bit
+// output at exposure 1).
 inline constexpr float kUnboundedLightThreshold = 1.0f / 255.0f;
-float radiusWithoutRange(const glm::vec3& color);
-std::vector<Light> lightsFromScene(const Scene& scene);
+float radiusWithoutRange(const glm::vec3& color, float cutoff = kUnboundedLightThreshold);
+std::vector<Light> lightsFromScene(const Scene& scene, float cutoff = kUnboundedLightThreshold);
 
 // A radius that suits the scene when none is given: a tenth of the bounds' diagonal.
 float defaultLightRadius(const Bounds& bounds);

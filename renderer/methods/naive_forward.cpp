@@ -1,5 +1,8 @@
 #include "renderer/methods/naive_forward.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include "glsl/include/bindings.h"
 
 namespace ml {
@@ -10,6 +13,24 @@ NaiveForward::NaiveForward(std::uint32_t materialFeatures, bool spotLights)
       transparent_(TransparentPass::overAllLights("naive.transparent", materialFeatures, spotLights)) {}
 
 void NaiveForward::render(const FrameContext& ctx) {
+    const int width = ctx.targets.width(), height = ctx.targets.height();
+    const double pixelLights = static_cast<double>(width) * height * std::max<std::uint32_t>(ctx.lights.count(), 1u);
+    const int bands = std::clamp(static_cast<int>(std::ceil(pixelLights / kNaivePixelLightsPerDraw)), 1, height);
+    if (bands == 1) {
+        renderBand(ctx);
+        return;
+    }
+    glEnable(GL_SCISSOR_TEST);
+    for (int band = 0; band < bands; ++band) {
+        const int y0 = height * band / bands, y1 = height * (band + 1) / bands;
+        glScissor(0, y0, width, y1 - y0);
+        renderBand(ctx);
+        glFinish();  // each band its own submission, finished before the next
+    }
+    glDisable(GL_SCISSOR_TEST);
+}
+
+void NaiveForward::renderBand(const FrameContext& ctx) {
     shadeOpaque(ctx);
     transparent_.render(ctx, nullptr);
 }

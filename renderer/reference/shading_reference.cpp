@@ -5,11 +5,25 @@
 
 namespace ml {
 
-float lightFalloff(float d, float radius) {
+namespace {
+constexpr float kPi = 3.14159265358979f;
+}  // namespace
+
+float stochasticAcceptance(float d, float intensity, float cutoff) {
+    const float u = d * d * cutoff / intensity;
+    return u <= 1.0f ? 1.0f - u * u / 3.0f : 2.0f / (3.0f * u);
+}
+
+float lightFalloff(float d, float radius, float intensity, const LightModel& model) {
+    const float guarded = std::max(d, static_cast<float>(ML_LIGHT_MIN_DISTANCE));
+    const float inverseSquare = 1.0f / (guarded * guarded);
+    if (model.falloff == Falloff::Untruncated) return inverseSquare;
     if (d >= radius) return 0.0f;
     const float x = d / radius;
     const float x2 = x * x;
     const float w = std::clamp(1.0f - x2 * x2, 0.0f, 1.0f);
+    if (model.falloff == Falloff::Gltf) return w * inverseSquare;
+    if (model.falloff == Falloff::Stochastic) return w * inverseSquare / stochasticAcceptance(d, intensity, model.cutoff);
     return (w * w) / (d * d + 1.0f);
 }
 
@@ -25,14 +39,31 @@ ShadingTerms shadingTerms(const glm::vec3& baseColor, float metallic, float roug
     const float m = std::clamp(metallic, 0.0f, 1.0f);
     const float alpha = std::clamp(roughness, 0.0f, 1.0f) * std::clamp(roughness, 0.0f, 1.0f);
     t.shininess = std::clamp(2.0f / std::max(alpha * alpha, 1e-6f) - 2.0f, 1.0f, 8192.0f);
+    t.alpha = std::max(alpha, static_cast<float>(ML_GGX_MIN_ALPHA));
     t.diffuse = baseColor * (1.0f - m);
     t.f0 = glm::mix(glm::vec3(0.04f), baseColor, m);
     t.specular = t.f0 * ((t.shininess + 8.0f) / 8.0f);
     return t;
 }
 
+glm::vec3 ggxBrdf(const ShadingTerms& t, const glm::vec3& n, const glm::vec3& v, const glm::vec3& l) {
+    const glm::vec3 h = glm::normalize(l + v);
+    const float nDotL = glm::dot(n, l);
+    const float nDotV = std::abs(glm::dot(n, v));
+    const float nDotH = std::max(glm::dot(n, h), 0.0f);
+    const float vDotH = std::abs(glm::dot(v, h));
+    const glm::vec3 nCrossH = glm::cross(n, h);
+    const float a2 = t.alpha * t.alpha;
+    const glm::vec3 fresnel = t.f0 + (1.0f - t.f0) * std::pow(1.0f - vDotH, 5.0f);
+    const float dDenominator = glm::dot(nCrossH, nCrossH) + nDotH * nDotH * a2;
+    const float distribution = a2 / (kPi * dDenominator * dDenominator);
+    const float visibility =
+        0.5f / (nDotL * std::sqrt(nDotV * nDotV * (1.0f - a2) + a2) + nDotV * std::sqrt(nDotL * nDotL * (1.0f - a2) + a2));
+    return (1.0f - fresnel) * t.diffuse / kPi + fresnel * (distribution * visibility);
+}
+
 glm::vec3 shadeReference(const SurfaceSample& s, const glm::vec3& eye, const std::vector<Light>& lights, float ambient,
-                         bool specular) {
+                         bool specular, const LightModel& model) {
     const ShadingTerms t = shadingTerms(s.baseColor, s.metallic, s.roughness);
     glm::vec3 color = ambient * s.occlusion * (t.diffuse + t.f0) + s.emissive;
     const glm::vec3 v = glm::normalize(eye - s.position);
@@ -40,6 +71,10 @@ glm::vec3 shadeReference(const SurfaceSample& s, const glm::vec3& eye, const std
     const auto incoming = [&](const glm::vec3& dir, const glm::vec3& c, float weight) {
         const float nDotL = glm::dot(s.normal, dir);
         if (nDotL <= 0.0f) return glm::vec3(0.0f);
+        if (model.brdf == Brdf::Ggx) {
+            if (!specular) return c * (weight * nDotL / kPi) * t.diffuse;
+            return c * (weight * nDotL) * ggxBrdf(t, s.normal, v, dir);
+        }
         if (!specular) return c * (weight * nDotL) * t.diffuse;
         const glm::vec3 h = glm::normalize(dir + v);
         const float spec = std::pow(std::max(glm::dot(s.normal, h), 0.0f), t.shininess);
@@ -52,7 +87,7 @@ glm::vec3 shadeReference(const SurfaceSample& s, const glm::vec3& eye, const std
         if (l.type == LightType::Directional) continue;
         const glm::vec3 toLight = l.position - s.position;
         const float d = glm::length(toLight);
-        float falloff = lightFalloff(d, l.radius);
+        float falloff = lightFalloff(d, l.radius, std::max({l.color.r, l.color.g, l.color.b}), model);
         if (falloff <= 0.0f) continue;
         const glm::vec3 dir = toLight / std::max(d, 1e-6f);
         if (l.type == LightType::Spot) {

@@ -5,11 +5,16 @@
 
 #include <glm/glm.hpp>
 
+#include "renderer/lights/light_model.h"
 #include "renderer/lights/light_set.h"
 
 namespace ml {
 
-float lightFalloff(float distance, float radius);
+// The falloff of a light of radius r and brightest channel `intensity` at `distance`, in the
+// model's falloff mode (glsl/include/shading.glsl); the seeds' smooth one by default.
+float lightFalloff(float distance, float radius, float intensity = 1.0f, const LightModel& model = {});
+// The stochastic cut-off's window 1 - (d/r)^4 averaged over the drawn ranges r (shading.glsl).
+float stochasticAcceptance(float distance, float intensity, float cutoff);
 
 // glTF's angular attenuation of a spot (KHR_lights_punctual): saturate((cos - cosOuter) /
 // (cosInner - cosOuter))^2, exactly 0 at and outside the outer cone, 1 inside the inner.
@@ -26,19 +31,25 @@ struct SurfaceSample {
     glm::vec3 emissive{0.0f};     // added as is; lights nothing else
 };
 
-// The metallic-roughness mapping onto normalized Blinn-Phong, shared by every method.
+// The metallic-roughness material's terms, shared by every method.
 struct ShadingTerms {
     glm::vec3 diffuse;   // baseColor * (1 - metallic)
     glm::vec3 f0;        // mix(0.04, baseColor, metallic)
-    glm::vec3 specular;  // f0 * (shininess + 8) / 8
-    float shininess;     // 2 / alpha^2 - 2, alpha = roughness^2, clamped to [1, 8192]
+    float alpha;         // GGX: roughness^2, at least ML_GGX_MIN_ALPHA
+    glm::vec3 specular;  // Blinn-Phong: f0 * (shininess + 8) / 8
+    float shininess;     // Blinn-Phong: 2 / alpha^2 - 2, alpha = roughness^2, clamped to [1, 8192]
 };
 ShadingTerms shadingTerms(const glm::vec3& baseColor, float metallic, float roughness);
 
+// glTF's BRDF (specification, appendix B) for unit normal n, view v and light l with N.L > 0:
+// (1 - F) diffuse / pi + F D Vis, Vis the height-correlated Smith term (glsl/include/shading.glsl
+// has the formulas).
+glm::vec3 ggxBrdf(const ShadingTerms& t, const glm::vec3& n, const glm::vec3& v, const glm::vec3& l);
+
 // The linear radiance the shaders compute for a surface point seen from `eye`, from lights of
-// every type (glsl/include/shading.glsl and sun_lights.glsl); without
-// `specular` the Blinn-Phong term is left out (--specular off).
+// every type (glsl/include/shading.glsl and sun_lights.glsl), in the given light model; without
+// `specular` the BRDF's specular term is left out (--specular off).
 glm::vec3 shadeReference(const SurfaceSample& s, const glm::vec3& eye, const std::vector<Light>& lights, float ambient,
-                         bool specular = true);
+                         bool specular = true, const LightModel& model = {});
 
 }  // namespace ml

@@ -15,4 +15,13 @@ glm::vec3 tonemapToSrgb(glm::vec3 hdr, float exposure) {
     return out;
 }
 
+RgbaImage tonemapImage(const FloatImage& hdr, float exposure) {
+    RgbaImage out{hdr.width, hdr.height, std::vector<std::uint8_t>(static_cast<std::size_t>(hdr.width) * hdr.height * 4, 255)};
+    for (std::size_t p = 0; p < static_cast<std::size_t>(hdr.width) * hdr.height; ++p) {
+        const glm::vec3 c = tonemapToSrgb(glm::vec3(hdr.pixels[p * 3], hdr.pixels[p * 3 + 1], hdr.pixels[p * 3 + 2]), exposure);
+        for (int i = 0; i < 3; ++i) out.pixels[p * 4 + i] = static_cast<std::uint8_t>(std::lround(c[i] * 255.0f));
+    }
+    return out;
+}
+
 }  // namespace ml

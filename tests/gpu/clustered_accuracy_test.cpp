@@ -15,18 +15,26 @@ namespace {
 struct AccuracyCase {
     const char* scene;
     std::uint32_t lights;
+    LightModel model = {};  // a cut-off gives every light its cut-off radius
 };
+
+// glTF's BRDF with glTF's falloff at a hard cut-off, and with stochastic ranges (exact against
+// naive for the drawn ranges).
+constexpr LightModel kGgxHard{Brdf::Ggx, Falloff::Gltf, 0.2f};
+constexpr LightModel kGgxStochastic{Brdf::Ggx, Falloff::Stochastic, 0.2f};
 
 class ClusteredAccuracy : public GpuTest, public ::testing::WithParamInterface<AccuracyCase> {};
 
 TEST_P(ClusteredAccuracy, MatchesNaiveOnEveryGridAndSlicing) {
     const AccuracyCase c = GetParam();
-    const TestScene t = testScene(c.scene, c.lights, 5, c.lights >= 1024 ? 0.5f : 1.0f);
+    TestScene t = testScene(c.scene, c.lights, 5, c.lights >= 1024 ? 0.5f : 1.0f);
+    if (c.model.cutoff > 0.0f) applyCutoffRadii(t.lights, c.model.cutoff);
     const Scene& scene = t.scene;
     const std::vector<Light>& lights = t.lights;
     const std::uint32_t frame = 45;
 
     FrameSettings s = smallFrame(scene, 160, 90);
+    s.lightModel = c.model;
     FrameRenderer renderer(scene, lights, s);
     renderer.render(frame);
     const FloatImage referenceHdr = renderer.readHdr();
@@ -62,8 +70,13 @@ TEST_P(ClusteredAccuracy, MatchesNaiveOnEveryGridAndSlicing) {
 INSTANTIATE_TEST_SUITE_P(Scenes, ClusteredAccuracy,
     ::testing::Values(AccuracyCase{"boxes", 0}, AccuracyCase{"boxes", 1}, AccuracyCase{"boxes", 64}, AccuracyCase{"boxes", 1024},
                       AccuracyCase{"atrium", 0}, AccuracyCase{"atrium", 1}, AccuracyCase{"atrium", 64},
-                      AccuracyCase{"atrium", 1024}),
-    [](const auto& info) { return std::string(info.param.scene) + "_" + std::to_string(info.param.lights) + "_lights"; });
+                      AccuracyCase{"atrium", 1024}, AccuracyCase{"boxes", 64, kGgxHard}, AccuracyCase{"atrium", 1024, kGgxHard},
+                      AccuracyCase{"atrium", 256, kGgxStochastic}),
+    [](const auto& info) {
+        const LightModel& m = info.param.model;
+        return std::string(info.param.scene) + "_" + std::to_string(info.param.lights) + "_lights" +
+               (m.brdf == Brdf::BlinnPhong && m.falloff == Falloff::Smooth ? "" : "_" + testNameOf(std::string(brdfName(m.brdf)) + "_" + falloffName(m.falloff)));
+    });
 
 // The seeds' baseline on a frame built to overflow: many lights, a small cap. The overflow is
 // reported, and the error it causes against naive is measured, not hidden.

@@ -119,7 +119,14 @@ INSTANTIATE_TEST_SUITE_P(Flags, RenderCommandBadFlag,
                       BadFlag{"--method naive --supersample 9", "--supersample 9"},
                       BadFlag{"--method naive --supersample 0", "--supersample 0"},
                       BadFlag{"--method naive --supersample 2 --msaa 2", "--supersample"},
-                      BadFlag{"--method naive --scene boxes --lights 1 --size 5000x100 --supersample 4", "texture limit"}),
+                      BadFlag{"--method naive --scene boxes --lights 1 --size 5000x100 --supersample 4", "texture limit"},
+                      BadFlag{"--brdf cook-torrance", "cook-torrance"}, BadFlag{"--light-cutoff 0", "--light-cutoff"},
+                      BadFlag{"--light-cutoff -0.5", "--light-cutoff"}, BadFlag{"--light-cutoff nan", "--light-cutoff"},
+                      BadFlag{"--light-cutoff inf", "--light-cutoff"},
+                      BadFlag{"--light-cutoff 0.01 --light-radius 2", "--light-cutoff"}, BadFlag{"--cutoff soft", "soft"},
+                      BadFlag{"--cutoff stochastic", "--cutoff stochastic"}, BadFlag{"--cutoff none", "--cutoff none"},
+                      BadFlag{"--accumulate 0", "--accumulate"},
+                      BadFlag{"--light-cutoff 0.1 --cutoff stochastic --accumulate 4 --bloom", "--accumulate"}),
     [](const auto& info) { return testNameOf(info.param.args); });
 
 }  // namespace

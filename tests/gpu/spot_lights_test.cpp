@@ -75,14 +75,21 @@ TEST_F(SpotLights, ASpotOverAPlaneLightsExactlyTheDiskItsOuterConeCuts) {
     }
 }
 
-TEST_F(SpotLights, SpotsPointsAndASunMixedMatchNaiveForEveryAssignmentAndCullTest) {
+// The seeds' model, and glTF's BRDF with glTF's falloff at a hard cut-off and with stochastic
+// ranges (every clustering exact for the drawn ranges).
+class MixedLights : public GpuTest, public ::testing::WithParamInterface<LightModel> {};
+
+TEST_P(MixedLights, SpotsPointsAndASunMatchNaiveForEveryAssignmentAndCullTest) {
     TestScene t = testScene("atrium", 300, 7, 1.0f, 0.5f);
+    const LightModel model = GetParam();
+    if (model.cutoff > 0.0f) applyCutoffRadii(t.lights, model.cutoff);
     Light sun;
     sun.type = LightType::Directional;
     sun.direction = {0.3f, -1.0f, 0.2f};
     sun.color = {0.3f, 0.28f, 0.25f};
     t.lights.insert(t.lights.begin() + 17, sun);
     FrameSettings s = smallFrame(t.scene, 160, 90);
+    s.lightModel = model;
     s.animation = verticalDrift(lightVolume(t.scene.bounds), 0.5f);  // spots turn as they drift
     struct Variant {
         AssignMode assign;
@@ -102,6 +109,13 @@ TEST_F(SpotLights, SpotsPointsAndASunMixedMatchNaiveForEveryAssignmentAndCullTes
         expectWithinContract(clusteredErrors(t.scene, t.lights, s, 40), label);
     }
 }
+
+INSTANTIATE_TEST_SUITE_P(LightModels, MixedLights,
+                         ::testing::Values(LightModel{}, LightModel{Brdf::Ggx, Falloff::Gltf, 0.3f},
+                                           LightModel{Brdf::Ggx, Falloff::Stochastic, 0.3f}),
+                         [](const auto& info) {
+                             return testNameOf(std::string(brdfName(info.param.brdf)) + "_" + falloffName(info.param.falloff));
+                         });
 
 // A points-only light set compiles every spot path out (ML_SPOT_LIGHTS 0); a renderer whose lights
 // gain spots rebuilds its programs with them, and back without them gives the first frame again.

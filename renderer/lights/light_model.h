@@ -1,0 +1,57 @@
+// How light leaves a light and what a surface does with it: the BRDF, the falloff with distance,
+// and where a light is cut off (README, "The light model"). Frame uniforms, the same in every
+// method and in the CPU mirror (renderer/reference/shading_reference.h).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "glsl/include/bindings.h"
+#include "renderer/lights/light_set.h"
+
+namespace ml {
+
+// --brdf: glTF's metallic-roughness BRDF (GGX, height-correlated Smith, Schlick, Lambert), or the
+// normalized Blinn-Phong mapping of the seeds.
+enum class Brdf { BlinnPhong, Ggx };
+const char* brdfName(Brdf brdf);
+Brdf parseBrdf(const std::string& text);  // std::invalid_argument naming --brdf
+
+// The falloff of point and spot lights (glsl/include/shading.glsl, lightFalloff).
+enum class Falloff : std::uint32_t {
+    Smooth = ML_FALLOFF_SMOOTH,             // saturate(1 - (d/r)^4)^2 / (d^2 + 1): radii from --light-radius / overlap:K
+    Gltf = ML_FALLOFF_GLTF,                 // --light-cutoff E, --cutoff hard: glTF's window at the range or cut-off radius
+    Stochastic = ML_FALLOFF_STOCHASTIC,     // --light-cutoff E, --cutoff stochastic: ranges drawn by Russian roulette
+    Untruncated = ML_FALLOFF_UNTRUNCATED,   // --cutoff none: pure inverse square, every light everywhere (naive only)
+};
+const char* falloffName(Falloff falloff);
+
+struct LightModel {
+    Brdf brdf = Brdf::BlinnPhong;
+    Falloff falloff = Falloff::Smooth;
+    // --light-cutoff E: a light's unwindowed contribution max(colour) / d^2 falls to E at its
+    // cut-off radius; 0 when not given.
+    float cutoff = 0.0f;
+};
+
+// The distance at which max(colour) / d^2 falls to `cutoff`: sqrt(max(colour) / cutoff).
+float cutoffRadius(const glm::vec3& color, float cutoff);
+// Every point and spot light's radius set to its cut-off radius (--light-cutoff on generated lights).
+void applyCutoffRadii(std::vector<Light>& lights, float cutoff);
+
+// Stochastic light culling (Tokuyoshi and Harada, JCGT 5(1), 2016): light `index` reaches as far
+// as r = cutoffRadius / sqrt(xi) this draw, xi uniform in (0, 1] from the draw's seed; a point
+// at distance d sees its inverse square times glTF's window 1 - (d/r)^4, divided by that window's
+// mean over the draws (glsl/include/shading.glsl), so the expected contribution is the
+// untruncated max(colour) / d^2, and each draw's falloff is continuous and zero at r. A point
+// past the cut-off radius is reached with probability (cutoffRadius / d)^2 and sees at most
+// 1.5 E there. Mirrors glsl/animate_lights.comp.
+float stochasticRadius(const glm::vec3& color, float cutoff, std::uint32_t index, std::uint32_t drawSeed);
+// The seed of a frame's draw: frame index and draw number (render --accumulate) hashed together,
+// so every frame and every accumulated draw is reproducible alone.
+std::uint32_t stochasticDrawSeed(std::uint32_t frameIndex, std::uint32_t draw);
+
+}  // namespace ml
