@@ -6,6 +6,7 @@
 #include <CLI/CLI.hpp>
 
 #include "app/bench/bench_command.h"
+#include "app/compare/compare_command.h"
 #include "app/crash_report.h"
 #include "app/bench/raster_floors_command.h"
 #include "app/render/render_command.h"
@@ -20,6 +21,7 @@ int main(int argc, char** argv) {
     ml::app::addBenchCommand(app, exitCode);
     ml::app::addViewCommand(app, exitCode);
     ml::app::addRasterFloorsCommand(app, exitCode);
+    ml::app::addCompareCommand(app, exitCode);
     try {
         app.parse(argc, argv);
         // With no subcommand, do the main job: render the default scene.

@@ -127,5 +127,60 @@ TEST_F(CorpusVisibleAnswer, TextureTransformShowsItsCheckmarks) {
     });
 }
 
+
+TEST_F(CorpusVisibleAnswer, NormalTangentMirrorLightsEachPairAlike) {
+    // Each test pair is a cell of real bumps beside a flat cell whose normal map (mirrored UVs,
+    // supplied tangents) copies them: lit from the front, the two cells of a pair must look alike
+    // (the model's README). Measured on the left panel's four columns (pairs 1|2 and 3|4) as the
+    // columns' mean luminance.
+    const FrontView v = frontView("khronos/NormalTangentMirrorTest/glTF/NormalTangentMirrorTest.gltf");
+    forEveryMethod(v, [](const RgbaImage& image, const std::string&) {
+        double mean[4];
+        for (int c = 0; c < 4; ++c) {
+            const float x0 = 0.195f + 0.068f * c;
+            mean[c] = countPixels(image, {x0 + 0.01f, 0.12f, x0 + 0.058f, 0.78f}, lit).meanLuminance;
+        }
+        std::printf("left panel columns: %.1f %.1f %.1f %.1f\n", mean[0], mean[1], mean[2], mean[3]);
+        EXPECT_GT(mean[0], 60.0) << "the left panel is not lit";
+        EXPECT_NEAR(mean[1], mean[0], 0.1 * mean[0]) << "the first pair is lit differently";
+        EXPECT_NEAR(mean[3], mean[2], 0.1 * mean[2]) << "the second pair is lit differently";
+    });
+}
+
+TEST_F(CorpusVisibleAnswer, MeshPrimitiveModesDrawStripsAndFansAsTriangles) {
+    // Three shapes side by side, each the same outline drawn as TRIANGLES, TRIANGLE_STRIP and
+    // TRIANGLE_FAN (points and lines are skipped with a warning): each third of the frame holds
+    // the same covered area.
+    const FrontView v = frontView("khronos/MeshPrimitiveModes/glTF/MeshPrimitiveModes.gltf");
+    forEveryMethod(v, [](const RgbaImage& image, const std::string&) {
+        const PixelCounts a = countPixels(image, {0.0f, 0.0f, 1.0f / 3.0f, 1.0f}, lit);
+        const PixelCounts b = countPixels(image, {1.0f / 3.0f, 0.0f, 2.0f / 3.0f, 1.0f}, lit);
+        const PixelCounts c = countPixels(image, {2.0f / 3.0f, 0.0f, 1.0f, 1.0f}, lit);
+        std::printf("covered: %.3f %.3f %.3f\n", a.share(), b.share(), c.share());
+        EXPECT_GT(a.share(), 0.1);
+        EXPECT_NEAR(b.share(), a.share(), 0.05 * a.share());
+        EXPECT_NEAR(c.share(), a.share(), 0.05 * a.share());
+    });
+}
+
+TEST_F(CorpusVisibleAnswer, AlphaBlendModeCutsOutAndBlends) {
+    // Five striped panels on a marble wall: OPAQUE, BLEND, then MASK at three cutoffs over an
+    // alpha that fades upwards. The stripes (cyan and yellow, told from the grey-white marble by
+    // their saturation; yellow counts only in part) must cover the opaque panel, show faintly through the blended one, and
+    // cover less of each masked panel the higher its cutoff.
+    const FrontView v = frontView("khronos/AlphaBlendModeTest/glTF/AlphaBlendModeTest.gltf");
+    forEveryMethod(v, [](const RgbaImage& image, const std::string&) {
+        const float panels[5][2] = {{0.19f, 0.27f}, {0.335f, 0.405f}, {0.475f, 0.545f}, {0.62f, 0.69f}, {0.765f, 0.83f}};
+        const auto striped = [](int r, int g, int b) { return std::max(g, b) - r > 14; };
+        double share[5];
+        for (int i = 0; i < 5; ++i) share[i] = countPixels(image, {panels[i][0], 0.3f, panels[i][1], 0.65f}, striped).share();
+        std::printf("striped: opaque %.3f  blend %.3f  mask %.3f %.3f %.3f\n", share[0], share[1], share[2], share[3], share[4]);
+        EXPECT_GT(share[0], 0.3) << "the opaque panel's stripes are missing";
+        EXPECT_LT(share[1], 0.8 * share[0]) << "the blended panel is as opaque as the opaque one";
+        EXPECT_GT(share[2], share[3] + 0.05) << "the masks' cutoffs do not cut";
+        EXPECT_GT(share[3], share[4] + 0.05) << "the masks' cutoffs do not cut";
+    });
+}
+
 }  // namespace
 }  // namespace ml::test
