@@ -19,6 +19,7 @@
 
 #include "renderer/camera/camera.h"
 #include "scenes/scene_library.h"
+#include "tests/corpus/corpus.h"
 #include "tests/gpu/gpu_test.h"
 
 namespace ml::test {
@@ -45,7 +46,7 @@ std::vector<std::string> corpusFiles() {
 
 Scene loadCorpusScene(const std::string& relative) {
     std::vector<std::string> warnings;
-    return loadScene(SceneRequest{(fs::path(ML_CORPUS_DIR) / relative).string(), 1.0f}, warnings);
+    return loadScene(SceneRequest{corpusPath(relative), 1.0f}, warnings);
 }
 
 // The scene file's own lights and 48 generated ones (seed 5, the default radius): enough that
@@ -102,14 +103,6 @@ double allowedBadShare(const std::string& relative, MethodKind method) {
     return kMaxBadShare;
 }
 
-struct CorpusMethod {
-    MethodKind kind;
-    const char* name;
-};
-constexpr CorpusMethod kMethods[] = {{MethodKind::ForwardPlus, "forward-plus"},
-                                     {MethodKind::Deferred, "deferred"},
-                                     {MethodKind::Visibility, "visibility"}};
-
 class CorpusFile : public GpuTest, public ::testing::WithParamInterface<std::string> {};
 
 TEST_P(CorpusFile, EveryMethodHoldsTheContractAgainstNaive) {
@@ -124,18 +117,19 @@ TEST_P(CorpusFile, EveryMethodHoldsTheContractAgainstNaive) {
         s.animation = verticalDrift(lightVolume(scene.bounds), 0.5f);
         FrameRenderer renderer(scene, lights, s);
         const ReferenceFrame reference = renderReference(renderer, frame);
-        for (const CorpusMethod& m : kMethods) {
+        for (MethodKind kind : kEveryMethod) {
+            if (kind == MethodKind::Naive) continue;
             MethodSettings method;
-            method.kind = m.kind;
+            method.kind = kind;
             renderer.setMethod(method);
             renderer.render(frame);
             const RgbaImage ldr = renderer.readLdr();
             const ImageDifference d = compareImages(ldr, reference.ldr);
-            const std::string label = GetParam() + " " + camera.name + " " + m.name;
+            const std::string label = GetParam() + " " + camera.name + " " + methodName(kind);
             std::printf("%-70s max %3.0f/255  over 1/255 %.4f %%\n", label.c_str(), d.maxAbs * 255.0, d.badPixelShare * 100.0);
-            EXPECT_LE(d.badPixelShare, allowedBadShare(GetParam(), m.kind))
+            EXPECT_LE(d.badPixelShare, allowedBadShare(GetParam(), kind))
                 << label << ": max " << d.maxAbs * 255.0 << "/255; images in "
-                << writeFailureImages(testNameOf(camera.name + "_" + m.name), ldr, reference.ldr);
+                << writeFailureImages(testNameOf(camera.name + "_" + methodName(kind)), ldr, reference.ldr);
         }
     }
 }

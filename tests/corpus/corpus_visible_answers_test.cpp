@@ -14,6 +14,7 @@
 
 #include "renderer/camera/camera.h"
 #include "scenes/scene_library.h"
+#include "tests/corpus/corpus.h"
 #include "tests/gpu/gpu_test.h"
 
 namespace ml::test {
@@ -22,8 +23,6 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr int kWidth = 240, kHeight = 135;
-
-std::string corpusPath(const std::string& relative) { return (fs::path(ML_CORPUS_DIR) / relative).string(); }
 
 // The pixels of a region, as fractions of the image (x0, y0 top-left; y grows downwards).
 struct Region {
@@ -78,28 +77,20 @@ FrontView frontView(const std::string& relative, float margin = 1.15f) {
     return v;
 }
 
-struct AnyMethod {
-    MethodKind kind;
-    const char* name;
-};
-constexpr AnyMethod kAllMethods[] = {{MethodKind::Naive, "naive"},
-                                     {MethodKind::ForwardPlus, "forward-plus"},
-                                     {MethodKind::Deferred, "deferred"},
-                                     {MethodKind::Visibility, "visibility"}};
-
 // Renders the view in every method and hands each image to `check`, the method's name in the
 // failure message; each image is written as <method>.png under the test's output folder.
 void forEveryMethod(const FrontView& v, const std::function<void(const RgbaImage&, const std::string&)>& check) {
     FrameRenderer renderer(v.scene, v.lights, v.settings);
-    for (const AnyMethod& m : kAllMethods) {
+    for (MethodKind kind : kEveryMethod) {
         MethodSettings method;
-        method.kind = m.kind;
+        method.kind = kind;
         renderer.setMethod(method);
         renderer.render(0);
         const RgbaImage image = renderer.readLdr();
-        writePng((testOutputDir() / (std::string(m.name) + ".png")).string(), image);
-        SCOPED_TRACE(m.name);
-        check(image, m.name);
+        const std::string name = methodName(kind);
+        writePng((testOutputDir() / (name + ".png")).string(), image);
+        SCOPED_TRACE(name);
+        check(image, name);
     }
 }
 
