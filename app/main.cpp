@@ -6,6 +6,7 @@
 #include <CLI/CLI.hpp>
 
 #include "app/bench/bench_command.h"
+#include "app/compare/compare_command.h"
 #include "app/crash_report.h"
 #include "app/info/info_command.h"
 #include "app/bench/raster_floors_command.h"
@@ -22,6 +23,7 @@ int main(int argc, char** argv) {
     ml::app::addViewCommand(app, exitCode);
     ml::app::addRasterFloorsCommand(app, exitCode);
     ml::app::addInfoCommand(app, exitCode);
+    ml::app::addCompareCommand(app, exitCode);
     try {
         app.parse(argc, argv);
         // With no subcommand, do the main job: render the default scene.

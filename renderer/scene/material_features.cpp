@@ -62,11 +62,14 @@ std::string describeMaterialFeatures(std::uint32_t features) {
 }
 
 UvAffine uvAffine(const TextureTransform& t) {
-    // KHR_texture_transform's GLSL: rotation = mat3(cos, sin, 0, -sin, cos, 0, 0, 0, 1) (columns).
+    // KHR_texture_transform's rotation turns the UVs as glTF's sample viewer does: u' = c u + s v,
+    // v' = -s u + c v (v runs down the image). The extension's README writes the GLSL matrix with
+    // the opposite sign; the Khronos TextureTransformTest model (arrows onto a green marker, a red
+    // one for the opposite direction) and the corpus test CorpusVisibleAnswer pin this one.
     const float c = std::cos(t.rotation), s = std::sin(t.rotation);
     UvAffine a;
-    a.column0 = glm::vec2(c, s) * t.scale.x;
-    a.column1 = glm::vec2(-s, c) * t.scale.y;
+    a.column0 = glm::vec2(c, -s) * t.scale.x;
+    a.column1 = glm::vec2(s, c) * t.scale.y;
     a.offset = t.offset;
     return a;
 }

@@ -208,7 +208,7 @@ TEST_F(GltfMaterials, TextureTransformOnTexCoord1MatchesPretransformedUvs) {
     const auto transformUv = [&](glm::vec2 uv) {
         const float c = std::cos(rotation), s = std::sin(rotation);
         const glm::vec2 scaled = uv * scale;
-        return glm::vec2(c * scaled.x - s * scaled.y, s * scaled.x + c * scaled.y) + offset;
+        return glm::vec2(c * scaled.x + s * scaled.y, -s * scaled.x + c * scaled.y) + offset;
     };
     const std::vector<glm::vec2> uv = {{0, 1}, {1, 1}, {1, 0}, {0, 0}};
     const auto build = [&](bool transformed, const char* name) {
