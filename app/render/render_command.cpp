@@ -20,6 +20,7 @@
 #include "renderer/gl/debug_output.h"
 #include "renderer/gl/gl_api.h"
 #include "renderer/image/image.h"
+#include "renderer/passes/glass_fragments.h"
 
 namespace ml::app {
 
@@ -147,6 +148,10 @@ int runRender(RenderOptions o) {
                     drawSubmissionName(renderer.scene().submission()), renderer.scene().drawCallsPerPass(),
                     renderer.scene().drawRangeCount());
         printShadingOptions(frame.settings);
+        if (const GlassFragments* glass = renderer.method().transparentCapture(); glass && renderer.scene().hasTransparent())
+            std::printf("transparency: %llu fragments captured at %dx%d (%zu B each, %zu B per pixel), %.1f MiB\n",
+                        static_cast<unsigned long long>(glass->fragmentCount()), renderer.targets().width(), renderer.targets().height(),
+                        GlassFragments::kBytesPerFragment, GlassFragments::kBytesPerPixel, double(glass->bytes()) / (1 << 20));
         if (const OverdrawPass* overdraw = renderer.overdraw()) {
             // The view replaced the method's frame, so no light lists were built.
             const OverdrawStatistics s = overdrawStatistics(overdraw->readCounts());

@@ -14,14 +14,14 @@ gl::Program lightingProgram(Resolve resolve, const shaders::Defines& defines) {
 }  // namespace
 
 ClusteredDeferred::ClusteredDeferred(const ClusteringSettings& settings, Resolve resolve, GBufferFormat gbuffer,
-                                     std::uint32_t materialFeatures)
+                                     std::uint32_t materialFeatures, const TransparencySettings& transparency)
     : resolve_(resolve),
       gbuffer_(gbuffer, materialFeatures),
       gbufferProgram_("deferred.gbuffer", {{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "gbuffer.frag"}},
                       materialFeatures, RasterProgram::Reads::Material, gbuffer_.defines()),
       lightingProgram_(lightingProgram(resolve, deferredLightingDefines(settings, gbuffer_))),
       clustering_(settings, materialFeatures, gbuffer_.defines()),
-      transparent_(TransparentPass::overClusterLists("deferred.transparent", materialFeatures, settings)) {
+      transparent_(TransparentPass::overClusterLists("deferred.transparent", materialFeatures, settings, transparency)) {
     GLuint vao = 0;
     glCreateVertexArrays(1, &vao);
     emptyVao_ = gl::Handle<gl::VertexArrayDeleter>(vao);

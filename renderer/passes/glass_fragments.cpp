@@ -1,0 +1,84 @@
+#include "renderer/passes/glass_fragments.h"
+
+#include <stdexcept>
+#include <string>
+
+#include "glsl/include/bindings.h"
+#include "renderer/scene/transparent_ranges.h"
+
+namespace ml {
+
+namespace {
+constexpr GLbitfield kComputeToCompute = GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT;
+
+RasterProgram captureProgram(const char* label, std::uint32_t materialFeatures, bool fill) {
+    return transparentRangesProgram(label, "glass_capture.frag", materialFeatures, {{"ML_GLASS_FILL", fill ? "1" : "0"}});
+}
+
+std::string megabytes(std::uint64_t bytes) { return std::to_string((bytes + (1u << 20) - 1) >> 20) + " MiB"; }
+}  // namespace
+
+GlassFragments::GlassFragments(std::uint32_t materialFeatures, std::size_t budgetBytes)
+    : count_(captureProgram("transparent.capture-count", materialFeatures, false)),
+      fill_(captureProgram("transparent.capture-fill", materialFeatures, true)),
+      totals_("transparent.totals", 16),
+      budget_(budgetBytes) {
+    if (budget_ == 0) {
+        GLint64 maxBlock = 0;
+        glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &maxBlock);
+        budget_ = static_cast<std::size_t>(maxBlock);
+    }
+}
+
+void GlassFragments::capture(const FrameContext& ctx, bool withColors) {
+    const std::uint32_t pixels = std::uint32_t(ctx.targets.width()) * std::uint32_t(ctx.targets.height());
+    pixels_.ensure(std::size_t(pixels) * kBytesPerPixel);
+    glClearNamedBufferSubData(pixels_.buffer().id(), GL_R32UI, 0, static_cast<GLsizeiptr>(std::size_t(pixels) * kBytesPerPixel),
+                              GL_RED_INTEGER, GL_UNSIGNED_INT, nullptr);
+    glMemoryBarrier(kComputeToCompute);
+    // Tested against the opaque depth, writing neither colour nor depth.
+    beginTransparentRaster(ctx.targets);
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    const glm::vec3 eye(ctx.uniforms.cameraPos);
+    pixels_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_GLASS_PIXELS);
+    ctx.scene.drawTransparent(count_, eye);
+    glMemoryBarrier(kComputeToCompute);
+
+    // A uint total: 2^32 fragments (32 GiB) lie past any storage buffer, and the fill writes
+    // none past the buffer's end.
+    scan_.run(pixels_.buffer(), pixels, totals_, 0);
+    glMemoryBarrier(kComputeToCompute);
+    // The fragments are sized by this frame's total, read back here (one small sync per frame).
+    std::uint32_t total = 0;
+    totals_.download(&total, sizeof total, 0);
+    fragments_ = total;
+    const std::size_t perFragment = kBytesPerFragment + (withColors ? kColorBytesPerFragment : 0);
+    const std::uint64_t need = std::uint64_t(total) * perFragment;
+    if (need > budget_)
+        throw std::runtime_error("the transparent surfaces cover " + std::to_string(ctx.targets.width()) + "x" +
+                                 std::to_string(ctx.targets.height()) + " pixels with " + std::to_string(total) + " fragments x " +
+                                 std::to_string(perFragment) + " B = " + megabytes(need) + ", more than the " + megabytes(budget_) +
+                                 " one storage buffer holds; lower the resolution or --transparency off");
+    fragmentStore_.ensure(std::max<std::size_t>(std::size_t(total) * kBytesPerFragment, 8));
+    if (withColors) colors_.ensure(std::max<std::size_t>(std::size_t(total) * kColorBytesPerFragment, 16));
+
+    beginTransparentRaster(ctx.targets);
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    pixels_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_GLASS_PIXELS);
+    fragmentStore_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_GLASS_FRAGMENTS);
+    fill_.variant(false).use();
+    fill_.variant(false).set("u_capacity", total);
+    ctx.scene.drawTransparent(fill_, eye);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glDepthMask(GL_TRUE);
+    glMemoryBarrier(kComputeToCompute);
+}
+
+void GlassFragments::bindForShading() const {
+    pixels_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_GLASS_PIXELS);
+    fragmentStore_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_GLASS_FRAGMENTS);
+    // The single-set shading declares the colours and never reads them: something is bound.
+    (colors_.buffer() ? colors_.buffer() : fragmentStore_.buffer()).bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_GLASS_COLORS);
+}
+
+}  // namespace ml

@@ -1,0 +1,61 @@
+// The transparent pass's capture: every fragment of the transparent (BLEND) ranges that passes
+// the opaque depth, kept per pixel for a compute pass to sort, shade and blend
+// (glsl/glass_shade.comp). Sized by what the frame needs, as the exact light lists are:
+//
+//   [transparent.capture]  raster, no colour, no depth write, early depth test:
+//                          count  ─> pixels[p] = fragments at p
+//                          scan   ─> pixels[p] = where p's fragments start   (PrefixSum; total read back)
+//                          fill   ─> fragments[pixels[p]++] = (depth bits, triangle id);
+//                                    pixels[p] = where p's fragments end, so p's are
+//                                    fragments[pixels[p - 1] .. pixels[p])
+//
+// Memory: 4 B per pixel (14.1 MiB at 2560x1440, 31.6 MiB at 3840x2160) and 8 B per fragment
+// (the depth, to sort by, and the triangle, to rebuild the surface from); where the glass spans
+// more than one texture set, 16 B more per fragment for its shaded colour (the shading runs
+// once per set, the blend after the last). The worst case is every pixel covered by every
+// transparent triangle; a frame whose fragments do not fit one storage buffer is refused in one
+// line that names them. The capture rasters the glass twice (count, then fill), each with a
+// fragment shader of one atomic: no shading, no colour writes.
+#pragma once
+
+#include <cstdint>
+
+#include "renderer/clustering/prefix_sum.h"
+#include "renderer/frame_context.h"
+#include "renderer/gl/buffer.h"
+#include "renderer/scene/raster_program.h"
+
+namespace ml {
+
+class GlassFragments {
+public:
+    static constexpr std::size_t kBytesPerPixel = 4;
+    static constexpr std::size_t kBytesPerFragment = 8;
+    static constexpr std::size_t kColorBytesPerFragment = 16;
+
+    // Builds nothing where no material is BLEND (ML_FEATURE_BLEND). budgetBytes: what the
+    // fragments may take (0: this GPU's GL_MAX_SHADER_STORAGE_BLOCK_SIZE).
+    GlassFragments(std::uint32_t materialFeatures, std::size_t budgetBytes);
+
+    // Captures this frame's fragments. withColors: keep room for a colour per fragment.
+    // Throws std::runtime_error, naming the numbers, when they do not fit the budget.
+    void capture(const FrameContext& ctx, bool withColors);
+    // Binds the pixels, fragments and (with colours) colours at their ML_SSBO_GLASS_* points.
+    void bindForShading() const;
+
+    std::uint64_t fragmentCount() const { return fragments_; }  // of the last capture
+    // Bytes the capture's buffers hold now.
+    std::size_t bytes() const { return pixels_.buffer().size() + fragmentStore_.buffer().size() + colors_.buffer().size(); }
+
+private:
+    RasterProgram count_, fill_;
+    PrefixSum scan_;
+    gl::Buffer totals_;
+    std::size_t budget_ = 0;
+    std::uint64_t fragments_ = 0;
+    gl::GrowableBuffer pixels_{"transparent.pixels"};
+    gl::GrowableBuffer fragmentStore_{"transparent.fragments"};
+    gl::GrowableBuffer colors_{"transparent.colors"};
+};
+
+}  // namespace ml
