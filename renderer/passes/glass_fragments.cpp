@@ -36,13 +36,8 @@ void GlassFragments::capture(const FrameContext& ctx, bool withColors) {
     glClearNamedBufferSubData(pixels_.buffer().id(), GL_R32UI, 0, static_cast<GLsizeiptr>(std::size_t(pixels) * kBytesPerPixel),
                               GL_RED_INTEGER, GL_UNSIGNED_INT, nullptr);
     glMemoryBarrier(kComputeToCompute);
-    // Tested against the opaque depth, writing neither colour nor depth.
-    beginTransparentRaster(ctx.targets);
-    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-    const glm::vec3 eye(ctx.uniforms.cameraPos);
     pixels_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_GLASS_PIXELS);
-    ctx.scene.drawTransparent(count_, eye);
-    glMemoryBarrier(kComputeToCompute);
+    rasterGlass(ctx, count_);
 
     // A uint total: 2^32 fragments (32 GiB) lie past any storage buffer, and the fill writes
     // none past the buffer's end.
@@ -62,13 +57,19 @@ void GlassFragments::capture(const FrameContext& ctx, bool withColors) {
     fragmentStore_.ensure(std::max<std::size_t>(std::size_t(total) * kBytesPerFragment, 8));
     if (withColors) colors_.ensure(std::max<std::size_t>(std::size_t(total) * kColorBytesPerFragment, 16));
 
-    beginTransparentRaster(ctx.targets);
-    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
     pixels_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_GLASS_PIXELS);
     fragmentStore_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_GLASS_FRAGMENTS);
     fill_.variant(false).use();
     fill_.variant(false).set("u_capacity", total);
-    ctx.scene.drawTransparent(fill_, eye);
+    rasterGlass(ctx, fill_);
+}
+
+void GlassFragments::rasterGlass(const FrameContext& ctx, const RasterProgram& program) const {
+    // Tested against the opaque depth, writing neither colour nor depth; the masks are restored
+    // before anything can throw, so a refused frame leaves the next one a clean state.
+    beginTransparentRaster(ctx.targets);
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    ctx.scene.drawTransparent(program, glm::vec3(ctx.uniforms.cameraPos));
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glDepthMask(GL_TRUE);
     glMemoryBarrier(kComputeToCompute);

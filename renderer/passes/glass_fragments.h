@@ -48,6 +48,9 @@ public:
     std::size_t bytes() const { return pixels_.buffer().size() + fragmentStore_.buffer().size() + colors_.buffer().size(); }
 
 private:
+    // Draws the transparent ranges with `program` against the opaque depth.
+    void rasterGlass(const FrameContext& ctx, const RasterProgram& program) const;
+
     RasterProgram count_, fill_;
     PrefixSum scan_;
     gl::Buffer totals_;
