@@ -45,6 +45,8 @@ void ClusteredDeferred::render(const FrameContext& ctx) {
         ctx.scene.draw(gbufferProgram_);
         glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
     }
+    // The depth is final: the glass is counted now, its total long known when the fill needs it.
+    transparent_.countFragments(ctx, clustering_.settings().view);
     clustering_.build(ctx, &gbuffer_);
     {
         auto pass = ctx.timer.pass(resolve_ == Resolve::Compute ? "deferred.lighting-compute" : "deferred.lighting-fragment");

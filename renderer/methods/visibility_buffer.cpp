@@ -68,6 +68,8 @@ void VisibilityBuffer::render(const FrameContext& ctx) {
         }
         glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     }
+    // The depth is final: the glass is counted now, its total long known when the fill needs it.
+    transparent_.countFragments(ctx, clustering_.settings().view);
     {
         auto pass = ctx.timer.pass("visibility.resolve");
         resolveProgram_.use();

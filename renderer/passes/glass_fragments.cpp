@@ -10,6 +10,7 @@ namespace ml {
 
 namespace {
 constexpr GLbitfield kComputeToCompute = GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT;
+constexpr GLbitfield kMappedFlags = GL_MAP_READ_BIT | GL_MAP_PERSISTENT_BIT | GL_MAP_COHERENT_BIT;
 
 RasterProgram captureProgram(const char* label, std::uint32_t materialFeatures, bool fill) {
     return transparentRangesProgram(label, "glass_capture.frag", materialFeatures, {{"ML_GLASS_FILL", fill ? "1" : "0"}});
@@ -21,33 +22,40 @@ std::string megabytes(std::uint64_t bytes) { return std::to_string((bytes + (1u 
 GlassFragments::GlassFragments(std::uint32_t materialFeatures, std::size_t budgetBytes)
     : count_(captureProgram("transparent.capture-count", materialFeatures, false)),
       fill_(captureProgram("transparent.capture-fill", materialFeatures, true)),
-      totals_("transparent.totals", 16),
+      total_("transparent.total", 4, nullptr, kMappedFlags),
       budget_(budgetBytes) {
     if (budget_ == 0) {
         GLint64 maxBlock = 0;
         glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &maxBlock);
         budget_ = static_cast<std::size_t>(maxBlock);
     }
+    mappedTotal_ = static_cast<const std::uint32_t*>(glMapNamedBufferRange(total_.id(), 0, 4, kMappedFlags));
 }
 
-void GlassFragments::capture(const FrameContext& ctx, bool withColors) {
-    const std::uint32_t pixels = std::uint32_t(ctx.targets.width()) * std::uint32_t(ctx.targets.height());
-    pixels_.ensure(std::size_t(pixels) * kBytesPerPixel);
-    glClearNamedBufferSubData(pixels_.buffer().id(), GL_R32UI, 0, static_cast<GLsizeiptr>(std::size_t(pixels) * kBytesPerPixel),
+void GlassFragments::count(const FrameContext& ctx, bool withColors) {
+    withColors_ = withColors;
+    pixelCount_ = std::uint32_t(ctx.targets.width()) * std::uint32_t(ctx.targets.height());
+    pixels_.ensure(std::size_t(pixelCount_) * kBytesPerPixel);
+    glClearNamedBufferSubData(pixels_.buffer().id(), GL_R32UI, 0, static_cast<GLsizeiptr>(std::size_t(pixelCount_) * kBytesPerPixel),
                               GL_RED_INTEGER, GL_UNSIGNED_INT, nullptr);
     glMemoryBarrier(kComputeToCompute);
     pixels_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_GLASS_PIXELS);
     rasterGlass(ctx, count_);
-
     // A uint total: 2^32 fragments (32 GiB) lie past any storage buffer, and the fill writes
     // none past the buffer's end.
-    scan_.run(pixels_.buffer(), pixels, totals_, 0);
-    glMemoryBarrier(kComputeToCompute);
-    // The fragments are sized by this frame's total, read back here (one small sync per frame).
-    std::uint32_t total = 0;
-    totals_.download(&total, sizeof total, 0);
+    scan_.run(pixels_.buffer(), pixelCount_, total_, 0);
+    glMemoryBarrier(kComputeToCompute | GL_CLIENT_MAPPED_BUFFER_BARRIER_BIT);
+    totalReady_ = gl::Fence::now();
+}
+
+void GlassFragments::fill(const FrameContext& ctx) {
+    // The total is read from a mapped buffer behind a fence: the CPU waits for the count and
+    // its scan alone (long done where the method had work between them), not for the pipeline.
+    totalReady_.wait();
+    totalReady_.reset();
+    const std::uint32_t total = *mappedTotal_;
     fragments_ = total;
-    const std::size_t perFragment = kBytesPerFragment + (withColors ? kColorBytesPerFragment : 0);
+    const std::size_t perFragment = kBytesPerFragment + (withColors_ ? kColorBytesPerFragment : 0);
     const std::uint64_t need = std::uint64_t(total) * perFragment;
     if (need > budget_)
         throw std::runtime_error("the transparent surfaces cover " + std::to_string(ctx.targets.width()) + "x" +
@@ -55,8 +63,7 @@ void GlassFragments::capture(const FrameContext& ctx, bool withColors) {
                                  std::to_string(perFragment) + " B = " + megabytes(need) + ", more than the " + megabytes(budget_) +
                                  " one storage buffer holds; lower the resolution or --transparency off");
     fragmentStore_.ensure(std::max<std::size_t>(std::size_t(total) * kBytesPerFragment, 8));
-    if (withColors) colors_.ensure(std::max<std::size_t>(std::size_t(total) * kColorBytesPerFragment, 16));
-
+    if (withColors_) colors_.ensure(std::max<std::size_t>(std::size_t(total) * kColorBytesPerFragment, 16));
     pixels_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_GLASS_PIXELS);
     fragmentStore_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_GLASS_FRAGMENTS);
     fill_.variant(false).use();

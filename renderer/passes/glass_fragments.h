@@ -4,7 +4,8 @@
 //
 //   [transparent.capture]  raster, no colour, no depth write, early depth test:
 //                          count  ─> pixels[p] = fragments at p
-//                          scan   ─> pixels[p] = where p's fragments start   (PrefixSum; total read back)
+//                          scan   ─> pixels[p] = where p's fragments start   (PrefixSum; the total
+//                                    read back from a mapped buffer behind a fence)
 //                          fill   ─> fragments[pixels[p]++] = (depth bits, triangle id);
 //                                    pixels[p] = where p's fragments end, so p's are
 //                                    fragments[pixels[p - 1] .. pixels[p])
@@ -23,6 +24,7 @@
 #include "renderer/clustering/prefix_sum.h"
 #include "renderer/frame_context.h"
 #include "renderer/gl/buffer.h"
+#include "renderer/gl/fence.h"
 #include "renderer/scene/raster_program.h"
 
 namespace ml {
@@ -37,9 +39,13 @@ public:
     // fragments may take (0: this GPU's GL_MAX_SHADER_STORAGE_BLOCK_SIZE).
     GlassFragments(std::uint32_t materialFeatures, std::size_t budgetBytes);
 
-    // Captures this frame's fragments. withColors: keep room for a colour per fragment.
-    // Throws std::runtime_error, naming the numbers, when they do not fit the budget.
-    void capture(const FrameContext& ctx, bool withColors);
+    // The capture in two halves, so that a method can put work between them and the CPU never
+    // waits on the GPU for the total: count() as soon as the opaque depth is final, fill()
+    // before the shading. withColors: keep room for a colour per fragment. fill() throws
+    // std::runtime_error, naming the numbers, when the fragments do not fit the budget.
+    void count(const FrameContext& ctx, bool withColors);
+    void fill(const FrameContext& ctx);
+    bool counted() const { return static_cast<bool>(totalReady_); }
     // Binds the pixels, fragments and (with colours) colours at their ML_SSBO_GLASS_* points.
     void bindForShading() const;
 
@@ -53,7 +59,11 @@ private:
 
     RasterProgram count_, fill_;
     PrefixSum scan_;
-    gl::Buffer totals_;
+    gl::Buffer total_;  // the scan's total, mapped for reading
+    const std::uint32_t* mappedTotal_ = nullptr;
+    gl::Fence totalReady_;  // after count()'s scan, until fill() reads the total
+    std::uint32_t pixelCount_ = 0;
+    bool withColors_ = false;
     std::size_t budget_ = 0;
     std::uint64_t fragments_ = 0;
     gl::GrowableBuffer pixels_{"transparent.pixels"};

@@ -41,7 +41,15 @@ TransparentPass TransparentPass::overClusterLists(std::string timerName, std::ui
     return TransparentPass(std::move(timerName), materialFeatures, transparency, "forward_plus.frag", lightListDefines(settings));
 }
 
-void TransparentPass::render(const FrameContext& ctx, const ClusteredLighting* lists) const {
+void TransparentPass::countFragments(const FrameContext& ctx, DebugView view) {
+    if (!capture_ || !ctx.scene.hasTransparent() || view != DebugView::Shaded) return;
+    auto pass = ctx.timer.pass(timerName_ + "-count");
+    // The opaque depth may have come from compute passes' image stores.
+    glMemoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT);
+    capture_->count(ctx, ctx.scene.transparentTextureSets().size() > 1);
+}
+
+void TransparentPass::render(const FrameContext& ctx, const ClusteredLighting* lists) {
     if (!ctx.scene.hasTransparent()) return;
     if (lists && lists->settings().view != DebugView::Shaded) return;
     if (forward_.variant(false)) renderForward(ctx, lists);
@@ -63,14 +71,13 @@ void TransparentPass::renderForward(const FrameContext& ctx, const ClusteredLigh
     glDepthMask(GL_TRUE);
 }
 
-void TransparentPass::renderCaptured(const FrameContext& ctx, const ClusteredLighting* lists) const {
+void TransparentPass::renderCaptured(const FrameContext& ctx, const ClusteredLighting* lists) {
+    if (!capture_->counted()) countFragments(ctx);
     const std::vector<int> sets = ctx.scene.transparentTextureSets();
     const bool storesColors = sets.size() > 1;
     {
-        auto pass = ctx.timer.pass(timerName_ + "-capture");
-        // The opaque depth may have come from compute passes' image stores.
-        glMemoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT);
-        capture_->capture(ctx, storesColors);
+        auto pass = ctx.timer.pass(timerName_ + "-fill");
+        capture_->fill(ctx);
     }
     auto pass = ctx.timer.pass(timerName_);
     ctx.scene.bindGeometryForCompute();

@@ -3,10 +3,14 @@
 // ("over": colour * alpha + destination * (1 - alpha)), depth-tested against the opaque depth.
 //
 // One sample per pixel (every method without --msaa): captured, then shaded in compute.
-//   [<method>.transparent-capture]  the fragments that pass the opaque depth, per pixel
-//                                   (renderer/passes/glass_fragments.h: count, scan, fill)
-//   [<method>.transparent]          glsl/glass_shade.comp: per pixel, sort by depth, rebuild each
-//                                   surface from its triangle, shade, blend back to front
+//   [<method>.transparent-count]  once the opaque depth is final (countFragments): the fragments
+//                                 that pass it, counted per pixel, and the counts scanned
+//                                 (renderer/passes/glass_fragments.h)
+//   [<method>.transparent-fill]   the fragments stored: depth and triangle, 8 B each
+//   [<method>.transparent]        glsl/glass_shade.comp: per pixel, sort by depth, rebuild each
+//                                 surface from its triangle, shade, blend back to front
+// Deferred and visibility count right after their raster, so the total is long known when the
+// fill needs it (read behind a fence, no pipeline drain).
 // On GPUs where few SMs run graphics work a fragment shader runs ~30x slower than compute
 // (design.md), and the glass's shading was the frame's largest pass; the capture's fragment
 // shader is one atomic. Fragments blend in per-pixel depth order, so intersecting and
@@ -54,10 +58,13 @@ public:
     static TransparentPass overClusterLists(std::string timerName, std::uint32_t materialFeatures, const ClusteringSettings& settings,
                                             const TransparencySettings& transparency);
 
+    // The capture's first half, for a method to call as soon as its opaque depth is final (else
+    // render() does it). `view`: the frame's debug view (debug views leave the pass out).
+    void countFragments(const FrameContext& ctx, DebugView view = DebugView::Shaded);
     // Shades and blends the transparent ranges into the HDR target; nothing where the scene has
     // none (or --transparency off). `lists` is null for naive. Throws std::runtime_error when
-    // the capture does not fit (GlassFragments::capture).
-    void render(const FrameContext& ctx, const ClusteredLighting* lists) const;
+    // the capture does not fit (GlassFragments::fill).
+    void render(const FrameContext& ctx, const ClusteredLighting* lists);
 
     // The capture of the last frame (null with --msaa or without BLEND materials).
     const GlassFragments* capture() const { return capture_.get(); }
@@ -66,7 +73,7 @@ private:
     TransparentPass(std::string timerName, std::uint32_t materialFeatures, const TransparencySettings& transparency,
                     const char* forwardShader, const shaders::Defines& defines);
     void renderForward(const FrameContext& ctx, const ClusteredLighting* lists) const;
-    void renderCaptured(const FrameContext& ctx, const ClusteredLighting* lists) const;
+    void renderCaptured(const FrameContext& ctx, const ClusteredLighting* lists);
 
     std::string timerName_;
     RasterProgram forward_;                   // --msaa only; empty otherwise or without BLEND
