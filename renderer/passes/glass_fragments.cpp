@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "glsl/include/bindings.h"
 #include "renderer/scene/transparent_ranges.h"
@@ -19,8 +20,9 @@ RasterProgram captureProgram(const char* label, std::uint32_t materialFeatures, 
 std::string megabytes(std::uint64_t bytes) { return std::to_string((bytes + (1u << 20) - 1) >> 20) + " MiB"; }
 }  // namespace
 
-GlassFragments::GlassFragments(std::uint32_t materialFeatures, std::size_t budgetBytes)
-    : count_(captureProgram("transparent.capture-count", materialFeatures, false)),
+GlassFragments::GlassFragments(std::string timerName, std::uint32_t materialFeatures, std::size_t budgetBytes)
+    : timerName_(std::move(timerName)),
+      count_(captureProgram("transparent.capture-count", materialFeatures, false)),
       fill_(captureProgram("transparent.capture-fill", materialFeatures, true)),
       total_("transparent.total", 4, nullptr, kMappedFlags),
       budget_(budgetBytes) {
@@ -36,21 +38,28 @@ void GlassFragments::count(const FrameContext& ctx, bool withColors) {
     withColors_ = withColors;
     pixelCount_ = std::uint32_t(ctx.targets.width()) * std::uint32_t(ctx.targets.height());
     pixels_.ensure(std::size_t(pixelCount_) * kBytesPerPixel);
-    glClearNamedBufferSubData(pixels_.buffer().id(), GL_R32UI, 0, static_cast<GLsizeiptr>(std::size_t(pixelCount_) * kBytesPerPixel),
-                              GL_RED_INTEGER, GL_UNSIGNED_INT, nullptr);
-    glMemoryBarrier(kComputeToCompute);
-    pixels_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_GLASS_PIXELS);
-    rasterGlass(ctx, count_);
-    // A uint total: 2^32 fragments (32 GiB) lie past any storage buffer, and the fill writes
-    // none past the buffer's end.
-    scan_.run(pixels_.buffer(), pixelCount_, total_, 0);
-    glMemoryBarrier(kComputeToCompute | GL_CLIENT_MAPPED_BUFFER_BARRIER_BIT);
+    {
+        auto pass = ctx.timer.pass(timerName_ + "-count");
+        glClearNamedBufferSubData(pixels_.buffer().id(), GL_R32UI, 0, static_cast<GLsizeiptr>(std::size_t(pixelCount_) * kBytesPerPixel),
+                                  GL_RED_INTEGER, GL_UNSIGNED_INT, nullptr);
+        glMemoryBarrier(kComputeToCompute);
+        pixels_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_GLASS_PIXELS);
+        rasterGlass(ctx, count_);
+    }
+    {
+        auto pass = ctx.timer.pass(timerName_ + "-scan");
+        // A uint total: 2^32 fragments (32 GiB) lie past any storage buffer, and the fill
+        // writes none past the buffer's end.
+        scan_.run(pixels_.buffer(), pixelCount_, total_, 0);
+        glMemoryBarrier(kComputeToCompute | GL_CLIENT_MAPPED_BUFFER_BARRIER_BIT);
+    }
     totalReady_ = gl::Fence::now();
 }
 
 void GlassFragments::fill(const FrameContext& ctx) {
     // The total is read from a mapped buffer behind a fence: the CPU waits for the count and
     // its scan alone (long done where the method had work between them), not for the pipeline.
+    auto pass = ctx.timer.pass(timerName_ + "-fill");
     totalReady_.wait();
     totalReady_.reset();
     const std::uint32_t total = *mappedTotal_;

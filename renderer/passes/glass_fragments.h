@@ -20,6 +20,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 
 #include "renderer/clustering/prefix_sum.h"
 #include "renderer/frame_context.h"
@@ -37,7 +38,8 @@ public:
 
     // Builds nothing where no material is BLEND (ML_FEATURE_BLEND). budgetBytes: what the
     // fragments may take (0: this GPU's GL_MAX_SHADER_STORAGE_BLOCK_SIZE).
-    GlassFragments(std::uint32_t materialFeatures, std::size_t budgetBytes);
+    // timerName: the passes' prefix (<timerName>-count, -scan, -fill).
+    GlassFragments(std::string timerName, std::uint32_t materialFeatures, std::size_t budgetBytes);
 
     // The capture in two halves, so that a method can put work between them and the CPU never
     // waits on the GPU for the total: count() as soon as the opaque depth is final, fill()
@@ -57,6 +59,7 @@ private:
     // Draws the transparent ranges with `program` against the opaque depth.
     void rasterGlass(const FrameContext& ctx, const RasterProgram& program) const;
 
+    std::string timerName_;
     RasterProgram count_, fill_;
     PrefixSum scan_;
     gl::Buffer total_;  // the scan's total, mapped for reading

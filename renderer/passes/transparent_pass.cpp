@@ -22,7 +22,7 @@ TransparentPass::TransparentPass(std::string timerName, std::uint32_t materialFe
                                             materialFeatures, std::move(forwardDefines));
         return;
     }
-    capture_ = std::make_unique<GlassFragments>(materialFeatures, transparency.captureBudget);
+    capture_ = std::make_unique<GlassFragments>(timerName_, materialFeatures, transparency.captureBudget);
     shaders::Defines shadeDefines = defines;
     shadeDefines.emplace_back("ML_GLASS_ALL_LIGHTS", allLights ? "1" : "0");
     // BLEND ignores alphaCutoff: no alpha-tested paths.
@@ -43,7 +43,6 @@ TransparentPass TransparentPass::overClusterLists(std::string timerName, std::ui
 
 void TransparentPass::countFragments(const FrameContext& ctx, DebugView view) {
     if (!capture_ || !ctx.scene.hasTransparent() || view != DebugView::Shaded) return;
-    auto pass = ctx.timer.pass(timerName_ + "-count");
     // The opaque depth may have come from compute passes' image stores.
     glMemoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT);
     capture_->count(ctx, ctx.scene.transparentTextureSets().size() > 1);
@@ -75,10 +74,7 @@ void TransparentPass::renderCaptured(const FrameContext& ctx, const ClusteredLig
     if (!capture_->counted()) countFragments(ctx);
     const std::vector<int> sets = ctx.scene.transparentTextureSets();
     const bool storesColors = sets.size() > 1;
-    {
-        auto pass = ctx.timer.pass(timerName_ + "-fill");
-        capture_->fill(ctx);
-    }
+    capture_->fill(ctx);
     auto pass = ctx.timer.pass(timerName_);
     ctx.scene.bindGeometryForCompute();
     ctx.lights.bindForReading();

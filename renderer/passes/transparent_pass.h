@@ -4,8 +4,8 @@
 //
 // One sample per pixel (every method without --msaa): captured, then shaded in compute.
 //   [<method>.transparent-count]  once the opaque depth is final (countFragments): the fragments
-//                                 that pass it, counted per pixel, and the counts scanned
-//                                 (renderer/passes/glass_fragments.h)
+//                                 that pass it, counted per pixel (renderer/passes/glass_fragments.h)
+//   [<method>.transparent-scan]   the counts scanned into where each pixel's fragments start
 //   [<method>.transparent-fill]   the fragments stored: depth and triangle, 8 B each
 //   [<method>.transparent]        glsl/glass_shade.comp: per pixel, sort by depth, rebuild each
 //                                 surface from its triangle, shade, blend back to front
