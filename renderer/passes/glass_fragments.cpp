@@ -24,6 +24,7 @@ GlassFragments::GlassFragments(std::string timerName, std::uint32_t materialFeat
     : timerName_(std::move(timerName)),
       count_(captureProgram("transparent.capture-count", materialFeatures, false)),
       fill_(captureProgram("transparent.capture-fill", materialFeatures, true)),
+      clear_(materialFeatures & ML_FEATURE_BLEND ? gl::Program::compute("glass_clear_counts.comp") : gl::Program()),
       total_("transparent.total", 4, nullptr, kMappedFlags),
       budget_(budgetBytes) {
     if (budget_ == 0) {
@@ -37,13 +38,19 @@ GlassFragments::GlassFragments(std::string timerName, std::uint32_t materialFeat
 void GlassFragments::count(const FrameContext& ctx, bool withColors) {
     withColors_ = withColors;
     pixelCount_ = std::uint32_t(ctx.targets.width()) * std::uint32_t(ctx.targets.height());
-    pixels_.ensure(std::size_t(pixelCount_) * kBytesPerPixel);
+    // Padded to whole groups of four counts, which the clear writes as one uvec4.
+    pixels_.ensure((std::size_t(pixelCount_) + 3) / 4 * 16);
+    pixels_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_GLASS_PIXELS);
+    {
+        auto pass = ctx.timer.pass(timerName_ + "-clear");
+        const std::uint32_t quads = (pixelCount_ + 3) / 4;
+        clear_.use();
+        clear_.set("u_quads", quads);
+        glDispatchCompute(gl::groupsFor(quads, ML_SCAN_WORKGROUP), 1, 1);
+        glMemoryBarrier(kComputeToCompute);
+    }
     {
         auto pass = ctx.timer.pass(timerName_ + "-count");
-        glClearNamedBufferSubData(pixels_.buffer().id(), GL_R32UI, 0, static_cast<GLsizeiptr>(std::size_t(pixelCount_) * kBytesPerPixel),
-                                  GL_RED_INTEGER, GL_UNSIGNED_INT, nullptr);
-        glMemoryBarrier(kComputeToCompute);
-        pixels_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_GLASS_PIXELS);
         rasterGlass(ctx, count_);
     }
     {

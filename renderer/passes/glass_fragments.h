@@ -26,6 +26,7 @@
 #include "renderer/frame_context.h"
 #include "renderer/gl/buffer.h"
 #include "renderer/gl/fence.h"
+#include "renderer/gl/program.h"
 #include "renderer/scene/raster_program.h"
 
 namespace ml {
@@ -61,6 +62,7 @@ private:
 
     std::string timerName_;
     RasterProgram count_, fill_;
+    gl::Program clear_;  // the counts to zero (glsl/glass_clear_counts.comp)
     PrefixSum scan_;
     gl::Buffer total_;  // the scan's total, mapped for reading
     const std::uint32_t* mappedTotal_ = nullptr;
