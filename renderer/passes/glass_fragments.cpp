@@ -17,7 +17,11 @@ RasterProgram captureProgram(const char* label, std::uint32_t materialFeatures, 
     return transparentRangesProgram(label, "glass_capture.frag", materialFeatures, {{"ML_GLASS_FILL", fill ? "1" : "0"}});
 }
 
-std::string megabytes(std::uint64_t bytes) { return std::to_string((bytes + (1u << 20) - 1) >> 20) + " MiB"; }
+// Bytes in the unit that reads best: MiB from one MiB up, KiB below.
+std::string byteSize(std::uint64_t bytes) {
+    if (bytes >= (1u << 20)) return std::to_string((bytes + (1u << 20) - 1) >> 20) + " MiB";
+    return std::to_string((bytes + 1023) >> 10) + " KiB";
+}
 }  // namespace
 
 GlassFragments::GlassFragments(std::string timerName, std::uint32_t materialFeatures, std::size_t budgetBytes)
@@ -76,7 +80,7 @@ void GlassFragments::fill(const FrameContext& ctx) {
     if (need > budget_)
         throw std::runtime_error("the transparent surfaces cover " + std::to_string(ctx.targets.width()) + "x" +
                                  std::to_string(ctx.targets.height()) + " pixels with " + std::to_string(total) + " fragments x " +
-                                 std::to_string(perFragment) + " B = " + megabytes(need) + ", more than the " + megabytes(budget_) +
+                                 std::to_string(perFragment) + " B = " + byteSize(need) + ", more than the " + byteSize(budget_) +
                                  " one storage buffer holds; lower the resolution or --transparency off");
     fragmentStore_.ensure(std::max<std::size_t>(std::size_t(total) * kBytesPerFragment, 8));
     if (withColors_) colors_.ensure(std::max<std::size_t>(std::size_t(total) * kColorBytesPerFragment, 16));
