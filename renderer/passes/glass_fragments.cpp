@@ -80,8 +80,8 @@ void GlassFragments::fill(const FrameContext& ctx) {
     if (need > budget_)
         throw std::runtime_error("the transparent surfaces cover " + std::to_string(ctx.targets.width()) + "x" +
                                  std::to_string(ctx.targets.height()) + " pixels with " + std::to_string(total) + " fragments x " +
-                                 std::to_string(perFragment) + " B = " + byteSize(need) + ", more than the " + byteSize(budget_) +
-                                 " one storage buffer holds; lower the resolution or --transparency off");
+                                 std::to_string(perFragment) + " B = " + byteSize(need) + ", more than the capture's " + byteSize(budget_) +
+                                 " (at most one storage buffer); lower the resolution or --transparency off");
     fragmentStore_.ensure(std::max<std::size_t>(std::size_t(total) * kBytesPerFragment, 8));
     if (withColors_) colors_.ensure(std::max<std::size_t>(std::size_t(total) * kColorBytesPerFragment, 16));
     pixels_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_GLASS_PIXELS);
