@@ -26,28 +26,50 @@
 #else
 #include "include/cluster_grid.glsl"
 #include "include/normal_bins.glsl"
+#define ML_ZBIN_LISTS_ONLY 1
 #include "include/cluster_lists.glsl"
 #endif
 
 layout(local_size_x = ML_SCREEN_TILE, local_size_y = ML_SCREEN_TILE) in;
 layout(binding = ML_IMG_HDR, rgba32f) uniform image2D u_hdr;
 layout(std430, binding = ML_SSBO_GLASS_PIXELS) readonly buffer GlassPixels { uint glassEnds[]; };
-layout(std430, binding = ML_SSBO_GLASS_FRAGMENTS) buffer GlassFragments { uvec2 glassFragments[]; };
-layout(std430, binding = ML_SSBO_GLASS_COLORS) buffer GlassColors { vec4 glassColors[]; };
+// The fragments (two words each) and, from word u_colorBase, a colour per fragment (four words)
+// where there is more than one set: one block, as llvmpipe offers a compute shader 16 and
+// z-binning with every vertex stream and spot lights needs 15 with the pixels'.
+layout(std430, binding = ML_SSBO_GLASS_FRAGMENTS) buffer GlassFragments { uint glassWords[]; };
+uniform uint u_colorBase;
 uniform int u_textureSet;
 uniform uint u_sorts;        // 1: the first dispatch, which sorts each pixel's fragments in place
 uniform uint u_blends;       // 1: the last dispatch, which blends them over the frame
-uniform uint u_storesColors; // 1: more than one dispatch; colours go through glassColors
+uniform uint u_storesColors; // 1: more than one dispatch; colours go through the buffer
+
+uvec2 fragmentAt(uint k) { return uvec2(glassWords[2u * k], glassWords[2u * k + 1u]); }
+void storeFragment(uint k, uvec2 f) {
+    glassWords[2u * k] = f.x;
+    glassWords[2u * k + 1u] = f.y;
+}
+vec4 colorAt(uint k) {
+    uint w = u_colorBase + 4u * k;
+    return uintBitsToFloat(uvec4(glassWords[w], glassWords[w + 1u], glassWords[w + 2u], glassWords[w + 3u]));
+}
+void storeColor(uint k, vec4 c) {
+    uint w = u_colorBase + 4u * k;
+    uvec4 bits = floatBitsToUint(c);
+    glassWords[w] = bits.x;
+    glassWords[w + 1u] = bits.y;
+    glassWords[w + 2u] = bits.z;
+    glassWords[w + 3u] = bits.w;
+}
 
 bool nearerThan(uvec2 a, uvec2 b) { return a.x < b.x || (a.x == b.x && a.y < b.y); }
 
 // Insertion sort: a pixel holds a few fragments, mostly captured near-sorted already.
 void sortFragments(uint begin, uint end) {
     for (uint i = begin + 1u; i < end; ++i) {
-        uvec2 key = glassFragments[i];
+        uvec2 key = fragmentAt(i);
         uint j = i;
-        for (; j > begin && nearerThan(key, glassFragments[j - 1u]); --j) glassFragments[j] = glassFragments[j - 1u];
-        if (j != i) glassFragments[j] = key;
+        for (; j > begin && nearerThan(key, fragmentAt(j - 1u)); --j) storeFragment(j, fragmentAt(j - 1u));
+        if (j != i) storeFragment(j, key);
     }
 }
 
@@ -79,17 +101,17 @@ void main() {
     vec3 color = frame.rgb;
     if (u_storesColors == 0u) {
         for (uint k = end; k-- > begin;) {
-            uint triangle = glassFragments[k].y;
+            uint triangle = fragmentAt(k).y;
             color = over(shadeFragment(triangle, materials[triangleMaterial[triangle]], p), color);
         }
     } else {
         for (uint k = begin; k < end; ++k) {
-            uint triangle = glassFragments[k].y;
+            uint triangle = fragmentAt(k).y;
             Material m = materials[triangleMaterial[triangle]];
-            if (int(m.info.z) - 1 == u_textureSet) glassColors[k] = shadeFragment(triangle, m, p);
+            if (int(m.info.z) - 1 == u_textureSet) storeColor(k, shadeFragment(triangle, m, p));
         }
         if (u_blends == 0u) return;
-        for (uint k = end; k-- > begin;) color = over(glassColors[k], color);
+        for (uint k = end; k-- > begin;) color = over(colorAt(k), color);
     }
     // The frame's alpha stays as it was (1: the frame is opaque), as the forward blend leaves it.
     imageStore(u_hdr, p, vec4(color, frame.a));

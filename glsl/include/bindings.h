@@ -44,8 +44,7 @@
 // The transparent pass's captured fragments (renderer/passes/glass_fragments.h), on the exact
 // assignment's points: the capture and its shading run after the lists are built.
 #define ML_SSBO_GLASS_PIXELS 16        // per pixel: its fragment count, then (scanned, filled) where its fragments end
-#define ML_SSBO_GLASS_FRAGMENTS 17     // per fragment: depth bits, triangle id
-#define ML_SSBO_GLASS_COLORS 18        // per fragment: shaded colour and alpha (glass of more than one texture set)
+#define ML_SSBO_GLASS_FRAGMENTS 17     // per fragment: depth bits, triangle id; then, glass of more than one texture set, its colour
 // Radix sort (glsl/radix_sort.comp) and z-binning (--assign zbin, glsl/zbin_assign.comp). Kept
 // below 32: llvmpipe offers 32 storage-buffer bindings.
 #define ML_SSBO_RADIX_KEYS_IN 20       // keys to sort (one pass reads these...)

@@ -82,8 +82,10 @@ void GlassFragments::fill(const FrameContext& ctx) {
                                  std::to_string(ctx.targets.height()) + " pixels with " + std::to_string(total) + " fragments x " +
                                  std::to_string(perFragment) + " B = " + byteSize(need) + ", more than the capture's " + byteSize(budget_) +
                                  " (at most one storage buffer); lower the resolution or --transparency off");
-    fragmentStore_.ensure(std::max<std::size_t>(std::size_t(total) * kBytesPerFragment, 8));
-    if (withColors_) colors_.ensure(std::max<std::size_t>(std::size_t(total) * kColorBytesPerFragment, 16));
+    // The colours (16 B each) after the fragments, from a 16-byte boundary.
+    const std::size_t fragmentBytes = (std::size_t(total) * kBytesPerFragment + 15) / 16 * 16;
+    colorWordOffset_ = static_cast<std::uint32_t>(fragmentBytes / 4);
+    fragmentStore_.ensure(std::max<std::size_t>(fragmentBytes + (withColors_ ? std::size_t(total) * kColorBytesPerFragment : 0), 16));
     pixels_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_GLASS_PIXELS);
     fragmentStore_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_GLASS_FRAGMENTS);
     fill_.variant(false).use();
@@ -105,8 +107,6 @@ void GlassFragments::rasterGlass(const FrameContext& ctx, const RasterProgram& p
 void GlassFragments::bindForShading() const {
     pixels_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_GLASS_PIXELS);
     fragmentStore_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_GLASS_FRAGMENTS);
-    // The single-set shading declares the colours and never reads them: something is bound.
-    (colors_.buffer() ? colors_.buffer() : fragmentStore_.buffer()).bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_GLASS_COLORS);
 }
 
 }  // namespace ml

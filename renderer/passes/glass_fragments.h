@@ -50,12 +50,14 @@ public:
     void count(const FrameContext& ctx, bool withColors);
     void fill(const FrameContext& ctx);
     bool counted() const { return static_cast<bool>(totalReady_); }
-    // Binds the pixels, fragments and (with colours) colours at their ML_SSBO_GLASS_* points.
+    // Binds the pixels and the fragments (with colours after them) at their ML_SSBO_GLASS_* points.
     void bindForShading() const;
+    // Where the colours start in the fragment buffer, in 4-byte words (after the last fragment).
+    std::uint32_t colorWordOffset() const { return colorWordOffset_; }
 
     std::uint64_t fragmentCount() const { return fragments_; }  // of the last capture
     // Bytes the capture's buffers hold now.
-    std::size_t bytes() const { return pixels_.buffer().size() + fragmentStore_.buffer().size() + colors_.buffer().size(); }
+    std::size_t bytes() const { return pixels_.buffer().size() + fragmentStore_.buffer().size(); }
 
 private:
     // Draws the transparent ranges with `program` against the opaque depth.
@@ -74,7 +76,7 @@ private:
     std::uint64_t fragments_ = 0;
     gl::GrowableBuffer pixels_{"transparent.pixels"};
     gl::GrowableBuffer fragmentStore_{"transparent.fragments"};
-    gl::GrowableBuffer colors_{"transparent.colors"};
+    std::uint32_t colorWordOffset_ = 0;
 };
 
 }  // namespace ml

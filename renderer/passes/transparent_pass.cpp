@@ -83,6 +83,7 @@ void TransparentPass::renderCaptured(const FrameContext& ctx, const ClusteredLig
     glBindImageTexture(ML_IMG_HDR, ctx.targets.hdr().id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
     shade_.use();
     shade_.set("u_storesColors", storesColors ? 1u : 0u);
+    shade_.set("u_colorBase", capture_->colorWordOffset());
     const GLuint groupsX = gl::groupsFor(ctx.targets.width(), ML_SCREEN_TILE);
     const GLuint groupsY = gl::groupsFor(ctx.targets.height(), ML_SCREEN_TILE);
     for (std::size_t i = 0; i < sets.size(); ++i) {
