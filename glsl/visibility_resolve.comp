@@ -1,37 +1,23 @@
 #version 450 core
-// Visibility resolve: for each pixel, the triangle id from the raster pass gives three
-// vertices; the pixel-centre ray through the triangle gives perspective-correct barycentrics
-// (what the rasterizer interpolates with), and the rays through the next pixel right and up
-// give the UV gradients the rasterizer's 2x2 quads would. The surface is written to the
-// G-buffer images, which deferred_lighting.comp then lights.
+// Visibility resolve: for each pixel, the triangle id from the raster pass gives the surface
+// (include/triangle_surface.glsl rebuilds it as the rasterizer would have interpolated it),
+// written to the G-buffer images, which deferred_lighting.comp then lights.
 //
 // Textures cannot be chosen per pixel without bindless textures, so the pass runs once per
 // texture set (the textures a material binds, SceneGpu's grouping; u_textureSet) plus once for
 // untextured materials (-1); each pixel is written by exactly the one dispatch whose set is its
 // material's. Each dispatch visits the 8x8 tiles visibility_classify.comp listed for its set
-// (a workgroup per tile), or, where a scene has more sets than a tile's mask holds, the screen. The optional vertex streams (tangents, TEXCOORD_1, COLOR_0) are read only where the
-// scene has them (ML_MATERIAL_FEATURES), interpolated with the same barycentrics.
+// (a workgroup per tile), or, where a scene has more sets than a tile's mask holds, the screen.
 #include "include/bindings.h"
 #include "include/frame_uniforms.glsl"
 #include "include/shading.glsl"
 #define ML_EXPLICIT_GRADIENTS 1
 #include "include/material.glsl"
 #include "include/gbuffer_layout.glsl"
+#include "include/triangle_surface.glsl"
 
 layout(local_size_x = ML_SCREEN_TILE, local_size_y = ML_SCREEN_TILE) in;
 layout(binding = ML_TEX_VISIBILITY) uniform usampler2D u_visibility;
-layout(std430, binding = ML_SSBO_VERTICES) readonly buffer Vertices { float vertexData[]; };  // 8 floats a vertex
-layout(std430, binding = ML_SSBO_INDICES) readonly buffer Indices { uint indexData[]; };
-layout(std430, binding = ML_SSBO_TRIANGLE_MATERIALS) readonly buffer TriangleMaterials { uint triangleMaterial[]; };
-#if ML_HAS(ML_FEATURE_NORMAL_MAP)
-layout(std430, binding = ML_SSBO_VERTEX_TANGENTS) readonly buffer VertexTangents { vec4 vertexTangent[]; };
-#endif
-#if ML_HAS(ML_FEATURE_UV1)
-layout(std430, binding = ML_SSBO_VERTEX_UV1) readonly buffer VertexUv1 { vec2 vertexUv1[]; };
-#endif
-#if ML_HAS(ML_FEATURE_VERTEX_COLOR)
-layout(std430, binding = ML_SSBO_VERTEX_COLORS) readonly buffer VertexColors { vec4 vertexColor[]; };
-#endif
 #if ML_GBUFFER_FLOAT_TARGETS == 0
 layout(binding = ML_IMG_GBUFFER0, rgba32ui) uniform writeonly uimage2D u_gPackedOut;
 #else
@@ -65,40 +51,6 @@ void storeGBuffer(ivec2 p, GBufferTexel t) {
 #endif
 }
 
-vec3 vertexPosition(uint v) { return vec3(vertexData[8u * v], vertexData[8u * v + 1u], vertexData[8u * v + 2u]); }
-vec3 vertexNormal(uint v) { return vec3(vertexData[8u * v + 3u], vertexData[8u * v + 4u], vertexData[8u * v + 5u]); }
-vec2 vertexUv(uint v) { return vec2(vertexData[8u * v + 6u], vertexData[8u * v + 7u]); }
-
-// World-space ray through a window position.
-void pixelRay(vec2 windowPos, out vec3 origin, out vec3 direction) {
-    vec2 ndc = windowPos * u_viewport.zw * 2.0 - 1.0;
-    vec4 farView = u_invProj * vec4(ndc, 1.0, 1.0);
-    vec3 dirView = farView.xyz / farView.w;
-    origin = u_cameraPos.xyz;
-    direction = normalize(mat3(u_invView) * dirView);
-}
-
-// Barycentrics (b1, b2) of the ray's hit on the triangle's plane (Moller-Trumbore, unclipped).
-vec2 rayBarycentrics(vec3 origin, vec3 direction, vec3 p0, vec3 p1, vec3 p2) {
-    vec3 e1 = p1 - p0, e2 = p2 - p0;
-    vec3 pv = cross(direction, e2);
-    float det = dot(e1, pv);
-    if (abs(det) < 1e-20) return vec2(1.0 / 3.0);
-    float inv = 1.0 / det;
-    vec3 tv = origin - p0;
-    vec3 qv = cross(tv, e1);
-    return vec2(dot(tv, pv), dot(direction, qv)) * inv;
-}
-
-// A vertex attribute at the pixel centre (w) and its differences across the pixel's 2x2 quad
-// (the rows wq[1] - wq[0] and wq[2] - wq[0]), as a rasterizer's coarse derivatives take them.
-void interpolateCoords(vec2 a0, vec2 a1, vec2 a2, vec3 w, vec3 wq[3], out vec2 value, out vec2 dx, out vec2 dy) {
-    value = w.x * a0 + w.y * a1 + w.z * a2;
-    vec2 q0 = wq[0].x * a0 + wq[0].y * a1 + wq[0].z * a2;
-    dx = wq[1].x * a0 + wq[1].y * a1 + wq[1].z * a2 - q0;
-    dy = wq[2].x * a0 + wq[2].y * a1 + wq[2].z * a2 - q0;
-}
-
 void main() {
     ivec2 p = resolvedPixel();
     if (any(greaterThanEqual(p, ivec2(u_viewport.xy)))) return;
@@ -110,43 +62,8 @@ void main() {
     int textureSet = int(m.info.z) - 1;
     if (textureSet != u_textureSet) return;
 
-    uint i0 = indexData[3u * triangle], i1 = indexData[3u * triangle + 1u], i2 = indexData[3u * triangle + 2u];
-    vec3 p0 = vertexPosition(i0), p1 = vertexPosition(i1), p2 = vertexPosition(i2);
-    vec3 origin, direction;
-    pixelRay(vec2(p) + 0.5, origin, direction);
-    vec2 b = rayBarycentrics(origin, direction, p0, p1, p2);
-    vec3 w = vec3(1.0 - b.x - b.y, b.x, b.y);
-
-    // Gradients as a rasterizer's 2x2 quad takes them (coarse): differences across the quad's
-    // first row and column, the triangle's plane extended past its edges.
-    vec3 wq[3] = vec3[3](w, w, w);
-    if (textureSet >= 0) {
-        vec2 quad = vec2(p & ~1) + 0.5;
-        for (int k = 0; k < 3; ++k) {
-            pixelRay(quad + vec2(k == 1 ? 1.0 : 0.0, k == 2 ? 1.0 : 0.0), origin, direction);
-            vec2 bq = rayBarycentrics(origin, direction, p0, p1, p2);
-            wq[k] = vec3(1.0 - bq.x - bq.y, bq.x, bq.y);
-        }
-    }
-    MaterialCoords c;
-    interpolateCoords(vertexUv(i0), vertexUv(i1), vertexUv(i2), w, wq, c.uv[0], c.dx[0], c.dy[0]);
-#if ML_HAS(ML_FEATURE_UV1)
-    interpolateCoords(vertexUv1[i0], vertexUv1[i1], vertexUv1[i2], w, wq, c.uv[1], c.dx[1], c.dy[1]);
-#else
-    c.uv[1] = c.uv[0];
-    c.dx[1] = c.dx[0];
-    c.dy[1] = c.dy[0];
-#endif
-    vec4 color = vec4(1.0);
-#if ML_HAS(ML_FEATURE_VERTEX_COLOR)
-    color = w.x * vertexColor[i0] + w.y * vertexColor[i1] + w.z * vertexColor[i2];
-#endif
-    vec4 tangent = vec4(1.0, 0.0, 0.0, 1.0);
-#if ML_HAS(ML_FEATURE_NORMAL_MAP)
-    tangent = w.x * vertexTangent[i0] + w.y * vertexTangent[i1] + w.z * vertexTangent[i2];
-#endif
-    vec3 normal = w.x * vertexNormal(i0) + w.y * vertexNormal(i1) + w.z * vertexNormal(i2);
-    // The G-buffer stores no position; the lighting rebuilds it from depth.
-    SurfacePoint s = surfaceFromMaterial(m, vec3(0.0), normal, tangent, materialBaseColor(m, c, color), c);
+    // The G-buffer stores no position (the lighting rebuilds it from depth) nor alpha.
+    float alpha;
+    SurfacePoint s = triangleSurface(triangle, m, p, alpha);
     storeGBuffer(p, encodeGBuffer(s));
 }

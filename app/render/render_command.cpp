@@ -24,6 +24,7 @@
 #include "renderer/image/image.h"
 #include "renderer/lights/surface_reach.h"
 #include "renderer/reference/tonemap_reference.h"
+#include "renderer/passes/glass_fragments.h"
 
 namespace ml::app {
 
@@ -168,6 +169,10 @@ int runRender(RenderOptions o) {
             std::printf("auto exposure: EV %+.2f (log-average luminance %.4g over %.1f %% of the pixels, to %.2f)\n",
                         std::log2(exposure->exposure), std::exp2(exposure->logAverage), 100.0 * exposure->litShare,
                         kAutoExposureKey);
+        if (const GlassFragments* glass = renderer.method().transparentCapture(); glass && renderer.scene().hasTransparent())
+            std::printf("transparency: %llu fragments captured at %dx%d (%zu B each, %zu B per pixel), %.1f MiB\n",
+                        static_cast<unsigned long long>(glass->fragmentCount()), renderer.targets().width(), renderer.targets().height(),
+                        GlassFragments::kBytesPerFragment, GlassFragments::kBytesPerPixel, double(glass->bytes()) / (1 << 20));
         if (const OverdrawPass* overdraw = renderer.overdraw()) {
             // The view replaced the method's frame, so no light lists were built.
             const OverdrawStatistics s = overdrawStatistics(overdraw->readCounts());

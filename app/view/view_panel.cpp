@@ -143,13 +143,14 @@ void shadingSection(ViewSettings& s, const ViewStatistics& stats, PanelEdits& ed
     if (comboOf("scene draws", draw, {drawSubmissionName(DrawSubmission::Direct), drawSubmissionName(DrawSubmission::Indirect)}))
         s.draw = static_cast<DrawSubmission>(draw);
     ImGui::Checkbox("back-face culling", &s.backfaceCulling);
-    // Every method draws transparent surfaces (a forward pass after the opaque frame).
+    // Every method draws transparent surfaces: captured per pixel and shaded in compute (a
+    // forward pass with --msaa).
     ImGui::BeginDisabled(stats.transparentRanges == 0);
     ImGui::Checkbox("transparency", &s.transparency);
     ImGui::EndDisabled();
     ImGui::SameLine();
     if (stats.transparentRanges == 0) ImGui::TextColored(kDim, "(no BLEND material in this scene)");
-    else ImGui::TextColored(kDim, "(%zu glass ranges, back to front)", stats.transparentRanges);
+    else ImGui::TextColored(kDim, "(%zu glass ranges, per-pixel depth order)", stats.transparentRanges);
     ImGui::BeginDisabled(s.method.kind != MethodKind::Deferred && s.method.kind != MethodKind::Visibility);
     int gbuffer = static_cast<int>(s.method.gbuffer);
     if (comboOf("G-buffer", gbuffer, gbufferFormatNames())) {

@@ -22,14 +22,17 @@
 #define ML_SSBO_SCAN_DATA 10       // prefix sum: the values, scanned in place
 #define ML_SSBO_SCAN_BLOCKS 11     // prefix sum: one total per block
 #define ML_SSBO_FILL_CURSORS 12    // per-cluster write positions of the fill pass
-#define ML_SSBO_VERTICES 13        // scene vertices as floats (visibility resolve)
-#define ML_SSBO_INDICES 14         // scene triangle indices (visibility resolve)
+// Scene geometry for compute passes that rebuild surfaces from triangle ids (the visibility
+// resolve, the transparent pass's shading). The vertices share the exact fill's cursors' point
+// (every pass binds what it reads before it runs), away from the spot cones, which the
+// transparent shading reads with them.
+#define ML_SSBO_VERTICES 12        // scene vertices as floats
+#define ML_SSBO_INDICES 14         // scene triangle indices
 // Spot cones (where the light set has spots): animated, read with the lights; at time 0, read by
-// the animation. The visibility resolve reads no lights, and every pass binds what it reads
-// before it runs, so these share the resolve's geometry points.
+// the animation. The animation reads no geometry, so the base cones share the indices' point.
 #define ML_SSBO_LIGHT_CONES 13
 #define ML_SSBO_LIGHT_CONES_BASE 14
-#define ML_SSBO_TRIANGLE_MATERIALS 15  // material of every triangle (visibility resolve)
+#define ML_SSBO_TRIANGLE_MATERIALS 15  // material of every triangle (visibility resolve, transparent shading)
 #define ML_SSBO_LIGHT_RANGES 16    // exact assignment: each light's block of candidate clusters
 #define ML_SSBO_LIGHT_VIEW 17      // exact assignment: each light's view-space centre and radius
 #define ML_SSBO_CANDIDATE_OFFSETS 18   // exact assignment: prefix sum of candidates per light
@@ -38,6 +41,10 @@
 #define ML_SSBO_RESOLVE_TILES 16       // per texture set slot, the screen tiles holding its pixels
 #define ML_SSBO_RESOLVE_DISPATCH 17    // per slot, the indirect dispatch of its resolve: tiles, 1, 1
 #define ML_RESOLVE_MAX_SLOTS 32        // slots a tile's mask holds (texture sets + untextured); more: full-screen dispatches
+// The transparent pass's captured fragments (renderer/passes/glass_fragments.h), on the exact
+// assignment's points: the capture and its shading run after the lists are built.
+#define ML_SSBO_GLASS_PIXELS 16        // per pixel: its fragment count, then (scanned, filled) where its fragments end
+#define ML_SSBO_GLASS_FRAGMENTS 17     // per fragment: depth bits, triangle id; then, glass of more than one texture set, its colour
 // Radix sort (glsl/radix_sort.comp) and z-binning (--assign zbin, glsl/zbin_assign.comp). Kept
 // below 32: llvmpipe offers 32 storage-buffer bindings.
 #define ML_SSBO_RADIX_KEYS_IN 20       // keys to sort (one pass reads these...)

@@ -1,9 +1,14 @@
 // Read access to the light lists built by the assignment passes: the one light loop of every
 // clustered method (Forward+, both deferred resolves, the visibility buffer). ML_ZBIN selects
 // z-binning (--assign zbin, glsl/include/zbin.glsl); without it, the per-cluster lists.
+// A pass that reads z-binning's lists alone (ML_ZBIN_LISTS_ONLY: no debug views, the transparent
+// shading) leaves the per-cluster buffers out: llvmpipe gives a compute shader 16 storage
+// blocks, and with every vertex stream and spot lights that shading needs them all.
+#if !(defined(ML_ZBIN) && defined(ML_ZBIN_LISTS_ONLY))
 layout(std430, binding = ML_SSBO_CLUSTER_COUNTS) readonly buffer ClusterCounts { uint clusterCounts[]; };
 layout(std430, binding = ML_SSBO_CLUSTER_OFFSETS) readonly buffer ClusterOffsets { uint clusterOffsets[]; };
 layout(std430, binding = ML_SSBO_LIGHT_INDICES) readonly buffer LightIndices { uint lightIndices[]; };
+#endif
 
 // The list a shaded point reads: its cluster's, or with --normal-cones (ML_NORMAL_CONES, deferred
 // and visibility only) the one of its (cluster, view-space normal bin) key. Needs normal_bins.

@@ -14,14 +14,14 @@ gl::Program lightingProgram(Resolve resolve, const shaders::Defines& defines) {
 }  // namespace
 
 ClusteredDeferred::ClusteredDeferred(const ClusteringSettings& settings, Resolve resolve, GBufferFormat gbuffer,
-                                     std::uint32_t materialFeatures)
+                                     std::uint32_t materialFeatures, const TransparencySettings& transparency)
     : resolve_(resolve),
       gbuffer_(gbuffer, materialFeatures),
       gbufferProgram_("deferred.gbuffer", {{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "gbuffer.frag"}},
                       materialFeatures, RasterProgram::Reads::Material, gbuffer_.defines()),
       lightingProgram_(lightingProgram(resolve, deferredLightingDefines(settings, gbuffer_))),
       clustering_(settings, materialFeatures, gbuffer_.defines()),
-      transparent_(TransparentPass::overClusterLists("deferred.transparent", materialFeatures, settings)) {
+      transparent_(TransparentPass::overClusterLists("deferred.transparent", materialFeatures, settings, transparency)) {
     GLuint vao = 0;
     glCreateVertexArrays(1, &vao);
     emptyVao_ = gl::Handle<gl::VertexArrayDeleter>(vao);
@@ -45,6 +45,8 @@ void ClusteredDeferred::render(const FrameContext& ctx) {
         ctx.scene.draw(gbufferProgram_);
         glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
     }
+    // The depth is final: the glass is counted now, its total long known when the fill needs it.
+    transparent_.countFragments(ctx, clustering_.settings().view);
     clustering_.build(ctx, &gbuffer_);
     {
         auto pass = ctx.timer.pass(resolve_ == Resolve::Compute ? "deferred.lighting-compute" : "deferred.lighting-fragment");

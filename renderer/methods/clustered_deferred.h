@@ -14,9 +14,11 @@ namespace ml {
 
 class ClusteredDeferred final : public ShadingMethod {
 public:
-    ClusteredDeferred(const ClusteringSettings& settings, Resolve resolve, GBufferFormat gbuffer, std::uint32_t materialFeatures);
+    ClusteredDeferred(const ClusteringSettings& settings, Resolve resolve, GBufferFormat gbuffer, std::uint32_t materialFeatures,
+                      const TransparencySettings& transparency = {});
     std::string name() const override { return "deferred"; }
     void render(const FrameContext& ctx) override;
+    const GlassFragments* transparentCapture() const override { return transparent_.capture(); }
     const ClusteredLighting* clustering() const override { return &clustering_; }
     std::size_t extraTargetBytes() const override { return gbuffer_.bytes(); }
 

@@ -19,14 +19,15 @@ ClusteringSettings clusteringFor(ClusteringSettings settings, bool prepass) {
 }
 }  // namespace
 
-ForwardPlus::ForwardPlus(const ClusteringSettings& settings, bool prepass, std::uint32_t materialFeatures)
+ForwardPlus::ForwardPlus(const ClusteringSettings& settings, bool prepass, std::uint32_t materialFeatures,
+                         const TransparencySettings& transparency)
     : prepass_(prepass),
       depthProgram_("forward-plus.depth", {{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "depth_only.frag"}},
                     materialFeatures, RasterProgram::Reads::CoverageOnly),
       shadeProgram_("forward-plus.shade", {{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "forward_plus.frag"}},
                     materialFeatures, RasterProgram::Reads::Material, lightListDefines(settings)),
       clustering_(clusteringFor(settings, prepass), materialFeatures),
-      transparent_(TransparentPass::overClusterLists("forward+.transparent", materialFeatures, clusteringFor(settings, prepass))) {}
+      transparent_(TransparentPass::overClusterLists("forward+.transparent", materialFeatures, clusteringFor(settings, prepass), transparency)) {}
 
 void ForwardPlus::render(const FrameContext& ctx) {
     shadeOpaque(ctx);

@@ -13,9 +13,11 @@ namespace ml {
 
 class ForwardPlus final : public ShadingMethod {
 public:
-    ForwardPlus(const ClusteringSettings& settings, bool prepass, std::uint32_t materialFeatures);
+    ForwardPlus(const ClusteringSettings& settings, bool prepass, std::uint32_t materialFeatures,
+                const TransparencySettings& transparency = {});
     std::string name() const override { return "forward-plus"; }
     void render(const FrameContext& ctx) override;
+    const GlassFragments* transparentCapture() const override { return transparent_.capture(); }
     const ClusteredLighting* clustering() const override { return &clustering_; }
     // The pre-pass path marks each pixel's first nearest fragment in the stencil.
     bool needsStencil() const override { return prepass_; }

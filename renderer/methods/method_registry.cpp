@@ -63,19 +63,21 @@ int validMsaa(long long samples) {
 std::unique_ptr<ShadingMethod> createMethod(const MethodSettings& settings, std::uint32_t materialFeatures) {
     if (const char* refusal = msaaRefusal(settings.kind); refusal && settings.msaa > 1)
         throw std::invalid_argument("--msaa " + std::to_string(settings.msaa) + ": " + refusal);
+    const TransparencySettings transparency{settings.msaa, settings.transparentCaptureBudget};
     switch (settings.kind) {
-    case MethodKind::Naive: return std::make_unique<NaiveForward>(materialFeatures, settings.clustering.spotLights);
+    case MethodKind::Naive: return std::make_unique<NaiveForward>(materialFeatures, settings.clustering.spotLights, transparency);
     case MethodKind::ForwardPlus: {
         // Forward+ shades before any normal is known: no normal bins (the flag is refused by
         // `render` and greyed out in `view`; here it is ignored).
         ClusteringSettings clustering = settings.clustering;
         clustering.normalCones = false;
         clustering.depthSamples = static_cast<std::uint32_t>(settings.msaa);
-        return std::make_unique<ForwardPlus>(clustering, settings.prepass, materialFeatures);
+        return std::make_unique<ForwardPlus>(clustering, settings.prepass, materialFeatures, transparency);
     }
     case MethodKind::Deferred:
-        return std::make_unique<ClusteredDeferred>(settings.clustering, settings.resolve, settings.gbuffer, materialFeatures);
-    case MethodKind::Visibility: return std::make_unique<VisibilityBuffer>(settings.clustering, settings.gbuffer, materialFeatures);
+        return std::make_unique<ClusteredDeferred>(settings.clustering, settings.resolve, settings.gbuffer, materialFeatures, transparency);
+    case MethodKind::Visibility:
+        return std::make_unique<VisibilityBuffer>(settings.clustering, settings.gbuffer, materialFeatures, transparency);
     }
     throw std::invalid_argument("unhandled method");
 }

@@ -13,6 +13,7 @@
 namespace ml {
 
 class ClusteredLighting;
+class GlassFragments;
 
 class ShadingMethod {
 public:
@@ -26,6 +27,8 @@ public:
     virtual bool needsStencil() const { return false; }
     // Bytes of screen-sized targets the method owns beyond FrameTargets (the G-buffer).
     virtual std::size_t extraTargetBytes() const { return 0; }
+    // The transparent pass's capture of the last frame (null with --msaa or without BLEND).
+    virtual const GlassFragments* transparentCapture() const { return nullptr; }
 };
 
 enum class MethodKind { Naive, ForwardPlus, Deferred, Visibility };
@@ -45,6 +48,9 @@ struct MethodSettings {
     bool prepass = true;  // forward-plus: depth pre-pass, then shading with EQUAL (off: one LESS pass)
     // --msaa: samples per pixel of the colour and depth the method draws into (1, 2, 4, 8).
     int msaa = 1;
+    // Bytes the transparent pass's capture may take (renderer/passes/glass_fragments.h); 0: this
+    // GPU's storage-buffer limit. Tests lower it to see a frame refused.
+    std::size_t transparentCaptureBudget = 0;
 };
 
 // Why a method cannot draw with --msaa above 1, or null where it can (naive, forward-plus).

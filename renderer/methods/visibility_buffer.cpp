@@ -5,7 +5,8 @@
 
 namespace ml {
 
-VisibilityBuffer::VisibilityBuffer(const ClusteringSettings& settings, GBufferFormat gbuffer, std::uint32_t materialFeatures)
+VisibilityBuffer::VisibilityBuffer(const ClusteringSettings& settings, GBufferFormat gbuffer, std::uint32_t materialFeatures,
+                                   const TransparencySettings& transparency)
     : gbuffer_(gbuffer, materialFeatures),
       rasterProgram_("visibility.raster", {{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "visibility.frag"}},
                      materialFeatures, RasterProgram::Reads::CoverageOnly),
@@ -14,7 +15,7 @@ VisibilityBuffer::VisibilityBuffer(const ClusteringSettings& settings, GBufferFo
       resolveProgram_(gl::Program::compute("visibility_resolve.comp", gbuffer_.defines())),
       lightingProgram_(gl::Program::compute("deferred_lighting.comp", deferredLightingDefines(settings, gbuffer_))),
       clustering_(settings, materialFeatures, gbuffer_.defines()),
-      transparent_(TransparentPass::overClusterLists("visibility.transparent", materialFeatures, settings)) {}
+      transparent_(TransparentPass::overClusterLists("visibility.transparent", materialFeatures, settings, transparency)) {}
 
 void VisibilityBuffer::prepareTargets(const FrameTargets& frame) {
     if (!stamp_.update(frame)) return;
@@ -67,6 +68,8 @@ void VisibilityBuffer::render(const FrameContext& ctx) {
         }
         glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     }
+    // The depth is final: the glass is counted now, its total long known when the fill needs it.
+    transparent_.countFragments(ctx, clustering_.settings().view);
     {
         auto pass = ctx.timer.pass("visibility.resolve");
         resolveProgram_.use();

@@ -22,9 +22,11 @@ namespace ml {
 
 class VisibilityBuffer final : public ShadingMethod {
 public:
-    VisibilityBuffer(const ClusteringSettings& settings, GBufferFormat gbuffer, std::uint32_t materialFeatures);
+    VisibilityBuffer(const ClusteringSettings& settings, GBufferFormat gbuffer, std::uint32_t materialFeatures,
+                     const TransparencySettings& transparency = {});
     std::string name() const override { return "visibility"; }
     void render(const FrameContext& ctx) override;
+    const GlassFragments* transparentCapture() const override { return transparent_.capture(); }
     const ClusteredLighting* clustering() const override { return &clustering_; }
     std::size_t extraTargetBytes() const override {
         return gbuffer_.bytes() + std::size_t(stamp_.width()) * stamp_.height() * 4 + resolveTiles_.size() + resolveDispatch_.size();

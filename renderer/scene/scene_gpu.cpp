@@ -317,6 +317,14 @@ std::vector<std::uint32_t> SceneGpu::transparentOrder(const glm::vec3& eye) cons
     return order;
 }
 
+std::vector<int> SceneGpu::transparentTextureSets() const {
+    std::vector<int> sets;
+    for (const TransparentRange& r : transparent_) sets.push_back(r.textureSet);
+    std::sort(sets.begin(), sets.end());
+    sets.erase(std::unique(sets.begin(), sets.end()), sets.end());
+    return sets;
+}
+
 void SceneGpu::drawTransparent(const RasterProgram& program, const glm::vec3& eye) const {
     if (!hasTransparent()) return;
     bindDrawState();

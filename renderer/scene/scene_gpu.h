@@ -71,6 +71,9 @@ public:
     // distances keep scene order. Within a range, triangles blend in index order. Every method
     // (and the naive reference) draws this order, so they blend the same colours.
     std::vector<std::uint32_t> transparentOrder(const glm::vec3& eye) const;
+    // The texture sets the transparent ranges bind (-1: untextured), each once, ascending: a
+    // compute pass that shades them binds each set in turn (GL 4.5 has no bindless textures).
+    std::vector<int> transparentTextureSets() const;
     // Draws the transparent ranges in transparentOrder(eye), one direct call each, with the
     // program's opaque variant and each range's textures and cull state. Blend and depth state
     // are the caller's.

@@ -47,18 +47,8 @@ const json kNearest = {{"magFilter", 9728}, {"minFilter", 9728}};
 // to it within the accuracy contract. Returns naive's frame.
 test::ReferenceFrame expectEveryMethodMatchesNaive(const Scene& scene, const std::vector<Light>& lights,
                                                    const std::string& label, const CameraPose& pose = kFrontView) {
-    FrameSettings s = test::smallFrame(scene, pose, kWidth, kHeight);
-    FrameRenderer renderer(scene, lights, s);
-    const test::ReferenceFrame naive = test::renderReference(renderer, 0);
-    for (const test::ClusteredVariant& v : test::kClusteredVariants) {
-        MethodSettings m;
-        m.kind = v.kind;
-        m.resolve = v.resolve;
-        renderer.setMethod(m);
-        renderer.render(0);
-        test::expectWithinContract(renderer, naive, label + " " + v.name, label + "_" + std::to_string(int(v.kind)) + "_" +
-                                                                              std::to_string(int(v.resolve)));
-    }
+    FrameRenderer renderer(scene, lights, test::smallFrame(scene, pose, kWidth, kHeight));
+    const test::ReferenceFrame naive = test::expectClusteredVariantsMatchNaive(renderer, label);
     MethodSettings standard;
     standard.kind = MethodKind::Deferred;
     standard.gbuffer = GBufferFormat::Standard;

@@ -144,6 +144,19 @@ ReferenceFrame renderReference(FrameRenderer& renderer, std::uint32_t frame) {
     return readReference(renderer);
 }
 
+ReferenceFrame expectClusteredVariantsMatchNaive(FrameRenderer& renderer, const std::string& label) {
+    const ReferenceFrame naive = renderReference(renderer, 0);
+    for (const ClusteredVariant& v : kClusteredVariants) {
+        MethodSettings m;
+        m.kind = v.kind;
+        m.resolve = v.resolve;
+        renderer.setMethod(m);
+        renderer.render(0);
+        expectWithinContract(renderer, naive, label + " " + v.name, label + "_" + std::to_string(int(v.kind)) + "_" + std::to_string(int(v.resolve)));
+    }
+    return naive;
+}
+
 ImageDifference expectWithinContract(const FrameRenderer& renderer, const ReferenceFrame& reference, const std::string& label,
                                      const std::string& imageName) {
     const ImageDifference hdr = compareImages(renderer.readHdr(), reference.hdr);

@@ -82,6 +82,10 @@ ReferenceFrame renderReference(FrameRenderer& renderer, std::uint32_t frame);
 // the contract (imageName, or the label when empty). Returns the float-output difference.
 ImageDifference expectWithinContract(const FrameRenderer& renderer, const ReferenceFrame& reference, const std::string& label,
                                      const std::string& imageName = "");
+// Renders frame 0 with the renderer's current method (naive, as built), then holds each of
+// kClusteredVariants to it (expectWithinContract, images named label_kind_resolve). Returns
+// naive's frame; the renderer is left on the last variant.
+ReferenceFrame expectClusteredVariantsMatchNaive(FrameRenderer& renderer, const std::string& label);
 
 // A test scene (seed 5; radius halved from 1024 lights up) rendered by naive forward at 160x90
 // on one frame: the reference the methods rendered by `renderer` next are held to.

@@ -1,0 +1,118 @@
+#version 450 core
+// The transparent pass's shading (renderer/passes/transparent_pass.h): per pixel, its captured
+// fragments (glass_capture.frag) sorted by depth, each surface rebuilt from its triangle as the
+// visibility resolve rebuilds one (include/triangle_surface.glsl), shaded with the method's
+// lights (ML_GLASS_ALL_LIGHTS: naive's every light; else the cluster lists) and blended back to
+// front over the opaque HDR frame: colour * alpha + destination * (1 - alpha), the forward
+// pass's blend, in linear HDR before the MSAA resolve, bloom and the tonemap.
+//
+// Textures cannot be chosen per fragment without bindless textures, so the pass runs once per
+// texture set the glass binds (u_textureSet). With one set (the common case) the one dispatch
+// sorts, shades and blends, and no colour is stored. With more, the first dispatch sorts,
+// each stores the colours of its set's fragments, and the last blends them.
+//
+// Order: nearest first by depth, equal depths by triangle id, so every method (and naive)
+// blends the same fragments in the same order, intersecting and interleaved panes included.
+#include "include/bindings.h"
+#include "include/frame_uniforms.glsl"
+#include "include/lights.glsl"
+#include "include/shading.glsl"
+#include "include/sun_lights.glsl"
+#define ML_EXPLICIT_GRADIENTS 1
+#include "include/material.glsl"
+#include "include/triangle_surface.glsl"
+#if ML_GLASS_ALL_LIGHTS
+#include "include/every_light.glsl"
+#else
+#include "include/cluster_grid.glsl"
+#include "include/normal_bins.glsl"
+#define ML_ZBIN_LISTS_ONLY 1
+#include "include/cluster_lists.glsl"
+#endif
+
+layout(local_size_x = ML_SCREEN_TILE, local_size_y = ML_SCREEN_TILE) in;
+layout(binding = ML_IMG_HDR, rgba32f) uniform image2D u_hdr;
+layout(std430, binding = ML_SSBO_GLASS_PIXELS) readonly buffer GlassPixels { uint glassEnds[]; };
+// The fragments (two words each) and, from word u_colorBase, a colour per fragment (four words)
+// where there is more than one set: one block, as llvmpipe offers a compute shader 16 and
+// z-binning with every vertex stream and spot lights needs 15 with the pixels'.
+layout(std430, binding = ML_SSBO_GLASS_FRAGMENTS) buffer GlassFragments { uint glassWords[]; };
+uniform uint u_colorBase;
+uniform int u_textureSet;
+uniform uint u_sorts;        // 1: the first dispatch, which sorts each pixel's fragments in place
+uniform uint u_blends;       // 1: the last dispatch, which blends them over the frame
+uniform uint u_storesColors; // 1: more than one dispatch; colours go through the buffer
+
+uvec2 fragmentAt(uint k) { return uvec2(glassWords[2u * k], glassWords[2u * k + 1u]); }
+void storeFragment(uint k, uvec2 f) {
+    glassWords[2u * k] = f.x;
+    glassWords[2u * k + 1u] = f.y;
+}
+vec4 colorAt(uint k) {
+    uint w = u_colorBase + 4u * k;
+    return uintBitsToFloat(uvec4(glassWords[w], glassWords[w + 1u], glassWords[w + 2u], glassWords[w + 3u]));
+}
+void storeColor(uint k, vec4 c) {
+    uint w = u_colorBase + 4u * k;
+    uvec4 bits = floatBitsToUint(c);
+    glassWords[w] = bits.x;
+    glassWords[w + 1u] = bits.y;
+    glassWords[w + 2u] = bits.z;
+    glassWords[w + 3u] = bits.w;
+}
+
+bool nearerThan(uvec2 a, uvec2 b) { return a.x < b.x || (a.x == b.x && a.y < b.y); }
+
+// Insertion sort: a pixel holds a few fragments, mostly captured near-sorted already.
+void sortFragments(uint begin, uint end) {
+    for (uint i = begin + 1u; i < end; ++i) {
+        uvec2 key = fragmentAt(i);
+        uint j = i;
+        for (; j > begin && nearerThan(key, fragmentAt(j - 1u)); --j) storeFragment(j, fragmentAt(j - 1u));
+        if (j != i) storeFragment(j, key);
+    }
+}
+
+// The fragment's shaded colour and its alpha, as the forward pass's fragment shader gives them.
+vec4 shadeFragment(uint triangle, Material m, ivec2 p) {
+    float alpha;
+    SurfacePoint s = triangleSurface(triangle, m, p, alpha);
+    vec3 viewDir = normalize(u_cameraPos.xyz - s.position);
+#if ML_GLASS_ALL_LIGHTS
+    return vec4(addEveryLight(s, viewDir, shadeUnclustered(s, viewDir)), alpha);
+#else
+    float viewDepth = -(u_view * vec4(s.position, 1.0)).z;
+    uint cluster = clusterForFragment(vec2(p) + 0.5, viewDepth);
+    return vec4(shadeUnclustered(s, viewDir) + shadeClusterLights(s, viewDir, cluster, viewDepth), alpha);
+#endif
+}
+
+vec3 over(vec4 c, vec3 destination) { return c.rgb * c.a + destination * (1.0 - c.a); }
+
+void main() {
+    ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+    if (any(greaterThanEqual(p, ivec2(u_viewport.xy)))) return;
+    uint pixel = uint(p.y) * uint(u_viewport.x) + uint(p.x);
+    uint end = glassEnds[pixel];
+    uint begin = pixel == 0u ? 0u : glassEnds[pixel - 1u];
+    if (begin == end) return;
+    if (u_sorts != 0u) sortFragments(begin, end);
+    vec4 frame = imageLoad(u_hdr, p);
+    vec3 color = frame.rgb;
+    if (u_storesColors == 0u) {
+        for (uint k = end; k-- > begin;) {
+            uint triangle = fragmentAt(k).y;
+            color = over(shadeFragment(triangle, materials[triangleMaterial[triangle]], p), color);
+        }
+    } else {
+        for (uint k = begin; k < end; ++k) {
+            uint triangle = fragmentAt(k).y;
+            Material m = materials[triangleMaterial[triangle]];
+            if (int(m.info.z) - 1 == u_textureSet) storeColor(k, shadeFragment(triangle, m, p));
+        }
+        if (u_blends == 0u) return;
+        for (uint k = end; k-- > begin;) color = over(colorAt(k), color);
+    }
+    // The frame's alpha stays as it was (1: the frame is opaque), as the forward blend leaves it.
+    imageStore(u_hdr, p, vec4(color, frame.a));
+}

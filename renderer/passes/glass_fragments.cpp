@@ -1,0 +1,112 @@
+#include "renderer/passes/glass_fragments.h"
+
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+#include "glsl/include/bindings.h"
+#include "renderer/scene/transparent_ranges.h"
+
+namespace ml {
+
+namespace {
+constexpr GLbitfield kComputeToCompute = GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT;
+constexpr GLbitfield kMappedFlags = GL_MAP_READ_BIT | GL_MAP_PERSISTENT_BIT | GL_MAP_COHERENT_BIT;
+
+RasterProgram captureProgram(const char* label, std::uint32_t materialFeatures, bool fill) {
+    return transparentRangesProgram(label, "glass_capture.frag", materialFeatures, {{"ML_GLASS_FILL", fill ? "1" : "0"}});
+}
+
+// Bytes in the unit that reads best: MiB from one MiB up, KiB below.
+std::string byteSize(std::uint64_t bytes) {
+    if (bytes >= (1u << 20)) return std::to_string((bytes + (1u << 20) - 1) >> 20) + " MiB";
+    return std::to_string((bytes + 1023) >> 10) + " KiB";
+}
+}  // namespace
+
+GlassFragments::GlassFragments(std::string timerName, std::uint32_t materialFeatures, std::size_t budgetBytes)
+    : timerName_(std::move(timerName)),
+      count_(captureProgram("transparent.capture-count", materialFeatures, false)),
+      fill_(captureProgram("transparent.capture-fill", materialFeatures, true)),
+      clear_(materialFeatures & ML_FEATURE_BLEND ? gl::Program::compute("glass_clear_counts.comp") : gl::Program()),
+      total_("transparent.total", 4, nullptr, kMappedFlags),
+      budget_(budgetBytes) {
+    if (budget_ == 0) {
+        GLint64 maxBlock = 0;
+        glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &maxBlock);
+        budget_ = static_cast<std::size_t>(maxBlock);
+    }
+    mappedTotal_ = static_cast<const std::uint32_t*>(glMapNamedBufferRange(total_.id(), 0, 4, kMappedFlags));
+}
+
+void GlassFragments::count(const FrameContext& ctx, bool withColors) {
+    withColors_ = withColors;
+    pixelCount_ = std::uint32_t(ctx.targets.width()) * std::uint32_t(ctx.targets.height());
+    // Padded to whole groups of four counts, which the clear writes as one uvec4.
+    pixels_.ensure((std::size_t(pixelCount_) + 3) / 4 * 16);
+    pixels_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_GLASS_PIXELS);
+    {
+        auto pass = ctx.timer.pass(timerName_ + "-clear");
+        const std::uint32_t quads = (pixelCount_ + 3) / 4;
+        clear_.use();
+        clear_.set("u_quads", quads);
+        glDispatchCompute(gl::groupsFor(quads, ML_SCAN_WORKGROUP), 1, 1);
+        glMemoryBarrier(kComputeToCompute);
+    }
+    {
+        auto pass = ctx.timer.pass(timerName_ + "-count");
+        rasterGlass(ctx, count_);
+    }
+    {
+        auto pass = ctx.timer.pass(timerName_ + "-scan");
+        // A uint total: 2^32 fragments (32 GiB) lie past any storage buffer, and the fill
+        // writes none past the buffer's end.
+        scan_.run(pixels_.buffer(), pixelCount_, total_, 0);
+        glMemoryBarrier(kComputeToCompute | GL_CLIENT_MAPPED_BUFFER_BARRIER_BIT);
+    }
+    totalReady_ = gl::Fence::now();
+}
+
+void GlassFragments::fill(const FrameContext& ctx) {
+    // The total is read from a mapped buffer behind a fence: the CPU waits for the count and
+    // its scan alone (long done where the method had work between them), not for the pipeline.
+    auto pass = ctx.timer.pass(timerName_ + "-fill");
+    totalReady_.wait();
+    totalReady_.reset();
+    const std::uint32_t total = *mappedTotal_;
+    fragments_ = total;
+    const std::size_t perFragment = kBytesPerFragment + (withColors_ ? kColorBytesPerFragment : 0);
+    const std::uint64_t need = std::uint64_t(total) * perFragment;
+    if (need > budget_)
+        throw std::runtime_error("the transparent surfaces cover " + std::to_string(ctx.targets.width()) + "x" +
+                                 std::to_string(ctx.targets.height()) + " pixels with " + std::to_string(total) + " fragments x " +
+                                 std::to_string(perFragment) + " B = " + byteSize(need) + ", more than the capture's " + byteSize(budget_) +
+                                 " (at most one storage buffer); lower the resolution or --transparency off");
+    // The colours (16 B each) after the fragments, from a 16-byte boundary.
+    const std::size_t fragmentBytes = (std::size_t(total) * kBytesPerFragment + 15) / 16 * 16;
+    colorWordOffset_ = static_cast<std::uint32_t>(fragmentBytes / 4);
+    fragmentStore_.ensure(std::max<std::size_t>(fragmentBytes + (withColors_ ? std::size_t(total) * kColorBytesPerFragment : 0), 16));
+    pixels_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_GLASS_PIXELS);
+    fragmentStore_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_GLASS_FRAGMENTS);
+    fill_.variant(false).use();
+    fill_.variant(false).set("u_capacity", total);
+    rasterGlass(ctx, fill_);
+}
+
+void GlassFragments::rasterGlass(const FrameContext& ctx, const RasterProgram& program) const {
+    // Tested against the opaque depth, writing neither colour nor depth; the masks are restored
+    // before anything can throw, so a refused frame leaves the next one a clean state.
+    beginTransparentRaster(ctx.targets);
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    ctx.scene.drawTransparent(program, glm::vec3(ctx.uniforms.cameraPos));
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glDepthMask(GL_TRUE);
+    glMemoryBarrier(kComputeToCompute);
+}
+
+void GlassFragments::bindForShading() const {
+    pixels_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_GLASS_PIXELS);
+    fragmentStore_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_GLASS_FRAGMENTS);
+}
+
+}  // namespace ml

@@ -1,0 +1,82 @@
+// The transparent pass's capture: every fragment of the transparent (BLEND) ranges that passes
+// the opaque depth, kept per pixel for a compute pass to sort, shade and blend
+// (glsl/glass_shade.comp). Sized by what the frame needs, as the exact light lists are:
+//
+//   count():  [-clear]  pixels[p] = 0                                (compute)
+//             [-count]  raster, no colour, no depth write, early depth test:
+//                       pixels[p] = fragments at p
+//             [-scan]   pixels[p] = where p's fragments start        (PrefixSum; the total into a
+//                                                                    mapped buffer, then a fence)
+//   fill():   [-fill]   the total read behind the fence; the same raster again:
+//                       fragments[pixels[p]++] = (depth bits, triangle id), which leaves pixels[p]
+//                       where p's fragments end: p's are fragments[pixels[p - 1] .. pixels[p])
+//
+// Memory: 4 B per pixel (14.1 MiB at 2560x1440, 31.6 MiB at 3840x2160) and 8 B per fragment
+// (the depth, to sort by, and the triangle, to rebuild the surface from); where the glass spans
+// more than one texture set, 16 B more per fragment for its shaded colour (the shading runs
+// once per set, the blend after the last). The worst case is every pixel covered by every
+// transparent triangle; a frame whose fragments do not fit one storage buffer is refused in one
+// line that names them. Both rasters run a fragment shader of one atomic: no shading, no colour
+// writes (H100, atrium, 2560x1440: 0.01-0.03 ms each; the scan 0.07 ms).
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "renderer/clustering/prefix_sum.h"
+#include "renderer/frame_context.h"
+#include "renderer/gl/buffer.h"
+#include "renderer/gl/fence.h"
+#include "renderer/gl/program.h"
+#include "renderer/scene/raster_program.h"
+
+namespace ml {
+
+class GlassFragments {
+public:
+    static constexpr std::size_t kBytesPerPixel = 4;
+    static constexpr std::size_t kBytesPerFragment = 8;
+    static constexpr std::size_t kColorBytesPerFragment = 16;
+
+    // Builds nothing where no material is BLEND (ML_FEATURE_BLEND). budgetBytes: what the
+    // fragments may take (0: this GPU's GL_MAX_SHADER_STORAGE_BLOCK_SIZE).
+    // timerName: the passes' prefix (<timerName>-count, -scan, -fill).
+    GlassFragments(std::string timerName, std::uint32_t materialFeatures, std::size_t budgetBytes);
+
+    // The capture in two halves, so that a method can put work between them and the CPU never
+    // waits on the GPU for the total: count() as soon as the opaque depth is final, fill()
+    // before the shading. withColors: keep room for a colour per fragment. fill() throws
+    // std::runtime_error, naming the numbers, when the fragments do not fit the budget.
+    void count(const FrameContext& ctx, bool withColors);
+    void fill(const FrameContext& ctx);
+    bool counted() const { return static_cast<bool>(totalReady_); }
+    // Binds the pixels and the fragments (with colours after them) at their ML_SSBO_GLASS_* points.
+    void bindForShading() const;
+    // Where the colours start in the fragment buffer, in 4-byte words (after the last fragment).
+    std::uint32_t colorWordOffset() const { return colorWordOffset_; }
+
+    std::uint64_t fragmentCount() const { return fragments_; }  // of the last capture
+    // Bytes the capture's buffers hold now.
+    std::size_t bytes() const { return pixels_.buffer().size() + fragmentStore_.buffer().size(); }
+
+private:
+    // Draws the transparent ranges with `program` against the opaque depth.
+    void rasterGlass(const FrameContext& ctx, const RasterProgram& program) const;
+
+    std::string timerName_;
+    RasterProgram count_, fill_;
+    gl::Program clear_;  // the counts to zero (glsl/glass_clear_counts.comp)
+    PrefixSum scan_;
+    gl::Buffer total_;  // the scan's total, mapped for reading
+    const std::uint32_t* mappedTotal_ = nullptr;
+    gl::Fence totalReady_;  // after count()'s scan, until fill() reads the total
+    std::uint32_t pixelCount_ = 0;
+    bool withColors_ = false;
+    std::size_t budget_ = 0;
+    std::uint64_t fragments_ = 0;
+    gl::GrowableBuffer pixels_{"transparent.pixels"};
+    gl::GrowableBuffer fragmentStore_{"transparent.fragments"};
+    std::uint32_t colorWordOffset_ = 0;
+};
+
+}  // namespace ml

@@ -1,0 +1,239 @@
+// The transparent pass's capture and compute shading (renderer/passes/transparent_pass.h):
+// per-pixel depth order where panes intersect (which no order of whole ranges can give), many
+// layers blended as the ROPs blend them, a pane with a normal map, a texture transform and
+// vertex colours (glass over two texture sets), every method held to naive on each; a frame
+// whose fragments do not fit is refused in one line; a scene without BLEND builds none of it.
+#include <array>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "renderer/passes/glass_fragments.h"
+#include "renderer/scene/material_features.h"
+#include "tests/gpu/gpu_test.h"
+#include "tests/scenes/gltf_test_files.h"
+
+namespace ml {
+namespace {
+
+using namespace gltf_test;
+using test::GpuTest;
+
+constexpr int kWidth = 160, kHeight = 90;
+const CameraPose kBackView{{0.0f, 0.0f, -4.0f}, {0.0f, 0.0f, 0.0f}, 60.0f};
+const std::vector<Light> kFrontAndBackLights{{{0.3f, 0.2f, 3.0f}, 12.0f, {3.0f, 3.0f, 3.0f}}, {{-0.3f, 0.1f, -3.0f}, 12.0f, {3.0f, 3.0f, 3.0f}}};
+
+int colourMaterial(Gltf& g, glm::vec4 colour, const char* alphaMode) {
+    return g.add("materials", {{"pbrMetallicRoughness",
+                                {{"baseColorFactor", {colour.r, colour.g, colour.b, colour.a}}, {"metallicFactor", 0.0}, {"roughnessFactor", 0.5}}},
+                               {"alphaMode", alphaMode},
+                               {"doubleSided", true}});
+}
+
+// A quad from four corners, its normal from the first three (counter-clockwise seen from the front).
+json quad(Gltf& g, const std::array<glm::vec3, 4>& c, int material, const json& extra = json::object()) {
+    const glm::vec3 n = glm::normalize(glm::cross(c[1] - c[0], c[2] - c[0]));
+    json attributes = {{"POSITION", g.vec3({c[0], c[1], c[2], c[3]})},
+                       {"NORMAL", g.vec3({n, n, n, n})},
+                       {"TEXCOORD_0", g.vec2({{0, 1}, {1, 1}, {1, 0}, {0, 0}})}};
+    attributes.update(extra);
+    return primitive(attributes, g.indices({0, 1, 2, 0, 2, 3}), material);
+}
+
+FrameSettings frame(const Scene& scene, const CameraPose& pose, MethodKind kind = MethodKind::Naive, int msaa = 1) {
+    FrameSettings s = test::smallFrame(scene, pose, kWidth, kHeight);
+    s.method.kind = kind;
+    s.method.msaa = msaa;
+    return s;
+}
+
+FloatImage render(const Scene& scene, const std::vector<Light>& lights, const FrameSettings& s) {
+    FrameRenderer renderer(scene, lights, s);
+    renderer.render(0);
+    return renderer.readHdr();
+}
+
+glm::vec3 pixel(const FloatImage& image, int x, int y) {
+    const float* p = image.at(x, y);
+    return {p[0], p[1], p[2]};
+}
+
+void expectColourNear(glm::vec3 actual, glm::vec3 expected, const std::string& what) {
+    for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(actual[c], expected[c], 1e-4f + 1e-3f * std::abs(expected[c])) << what << " channel " << c;
+}
+
+// Every clustered method against naive on the scene (the images written where one fails).
+void expectMethodsMatchNaive(const Scene& scene, const std::vector<Light>& lights, const CameraPose& pose, const std::string& label) {
+    FrameRenderer renderer(scene, lights, frame(scene, pose));
+    test::expectClusteredVariantsMatchNaive(renderer, label);
+}
+
+class GlassCapture : public GpuTest {};
+
+// A red pane in z = 0 and a blue one tilted through it (z = 0.5 x): right of the crossing the
+// blue is nearer from the front, left of it the red, and from behind the other way round. Each
+// pixel blends its own two fragments far first, which no order of the two whole panes gives.
+TEST_F(GlassCapture, IntersectingPanesBlendInDepthOrderOnBothSidesOfTheCrossing) {
+    const auto scene = [&](const char* alphaMode, bool red, bool blue) {
+        Gltf g;
+        const int redPane = colourMaterial(g, {0.9f, 0.05f, 0.05f, 0.5f}, alphaMode);
+        const int bluePane = colourMaterial(g, {0.05f, 0.05f, 0.9f, 0.5f}, alphaMode);
+        std::vector<json> prims;
+        if (red) prims.push_back(quad(g, {{{-2, -1, 0}, {2, -1, 0}, {2, 1, 0}, {-2, 1, 0}}}, redPane));
+        if (blue) prims.push_back(quad(g, {{{-2, -1.2f, -1}, {2, -1.2f, 1}, {2, 1.2f, 1}, {-2, 1.2f, -1}}}, bluePane));
+        return writeAndLoad(g, prims, std::string("crossing_") + alphaMode + (red ? "_red" : "") + (blue ? "_blue" : ""));
+    };
+    const Scene both = scene("BLEND", true, true);
+    for (const auto& [pose, front] : {std::pair{kFrontView, true}, std::pair{kBackView, false}}) {
+        const FloatImage mix = render(both, kFrontAndBackLights, frame(both, pose));
+        const FloatImage red = render(scene("OPAQUE", true, false), kFrontAndBackLights, frame(both, pose));
+        const FloatImage blue = render(scene("OPAQUE", false, true), kFrontAndBackLights, frame(both, pose));
+        // 20 pixels either side of the centre: world x = +-1 on the red pane, 0.5 from the crossing.
+        for (int dx : {-20, 20}) {
+            const int x = kWidth / 2 + dx, y = kHeight / 2;
+            // Seen from behind, screen right is world -x.
+            const bool worldRight = front == (dx > 0);
+            const bool blueNearer = worldRight == front;
+            const glm::vec3 nearer = blueNearer ? pixel(blue, x, y) : pixel(red, x, y);
+            const glm::vec3 farther = blueNearer ? pixel(red, x, y) : pixel(blue, x, y);
+            expectColourNear(pixel(mix, x, y), 0.5f * nearer + 0.25f * farther,
+                             std::string(front ? "front" : "back") + (dx > 0 ? ", screen right" : ", screen left"));
+        }
+        expectMethodsMatchNaive(both, kFrontAndBackLights, pose, std::string("crossing panes from the ") + (front ? "front" : "back"));
+    }
+}
+
+// Twelve parallel panes over a wall, listed in no depth order: the capture and the compute
+// blend give, away from the edges, what the ROPs give the forward pass (naive with --msaa 2,
+// whose per-range order is right for parallel panes); every method holds to naive.
+TEST_F(GlassCapture, ManyLayersBlendAsTheForwardPassBlendsThem) {
+    Gltf g;
+    std::vector<json> prims{square(g, -2.0f, 4.0f, colourMaterial(g, {0.6f, 0.6f, 0.6f, 1.0f}, "OPAQUE"))};
+    for (int i = 0; i < 12; ++i) {
+        const float z = -1.5f + 0.25f * float((i * 5) % 12);
+        const glm::vec4 colour(0.2f + 0.06f * float(i), 0.9f - 0.07f * float(i), 0.3f + 0.05f * float(i % 4), 0.2f + 0.05f * float(i % 5));
+        prims.push_back(square(g, z, 1.0f + 0.05f * float(i), colourMaterial(g, colour, "BLEND")));
+    }
+    const Scene scene = writeAndLoad(g, prims, "twelve_layers");
+    FrameRenderer renderer(scene, kFrontAndBackLights, frame(scene, kFrontView));
+    renderer.render(0);
+    const FloatImage captured = renderer.readHdr();
+    ASSERT_NE(renderer.method().transparentCapture(), nullptr);
+    const std::uint64_t fragments = renderer.method().transparentCapture()->fragmentCount();
+    EXPECT_GT(fragments, 12u * 20u * 20u) << "every pane's pixels, twelve deep in the middle";
+    const FloatImage forward = render(scene, kFrontAndBackLights, frame(scene, kFrontView, MethodKind::Naive, 2));
+    for (int y = kHeight / 2 - 12; y <= kHeight / 2 + 12; y += 4)
+        for (int x = kWidth / 2 - 12; x <= kWidth / 2 + 12; x += 4)
+            expectColourNear(pixel(captured, x, y), pixel(forward, x, y), "pixel " + std::to_string(x) + "," + std::to_string(y));
+    expectMethodsMatchNaive(scene, kFrontAndBackLights, kFrontView, "twelve layers");
+}
+
+// A pane with a normal map, a base-colour texture read through KHR_texture_transform on
+// TEXCOORD_1 and COLOR_0, half in front of a plain glass pane (so the glass spans two texture
+// sets: the shading stores colours and blends after the last set): the compute rebuild (UVs,
+// gradients, tangents, vertex colours) gives what the forward pass's varyings give.
+TEST_F(GlassCapture, TexturedNormalMappedPaneMatchesTheForwardPass) {
+    Gltf g;
+    const auto image = [](int w, int h, auto texel) {
+        std::vector<std::uint8_t> out;
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x) {
+                const std::array<std::uint8_t, 4> t = texel(x, y);
+                out.insert(out.end(), t.begin(), t.end());
+            }
+        return out;
+    };
+    const auto texture = [&](const std::vector<std::uint8_t>& rgba) {
+        const int img = g.add("images", {{"uri", "data:image/png;base64," + base64(encodePng(8, 8, rgba))}});
+        return g.add("textures", {{"source", img}});
+    };
+    const int colourMap = texture(image(8, 8, [](int x, int y) {
+        return std::array<std::uint8_t, 4>{std::uint8_t(30 * x), std::uint8_t(30 * y), std::uint8_t(240 - 25 * (x + y) / 2), 200};
+    }));
+    const int normalMap = texture(image(8, 8, [](int x, int) {
+        return std::array<std::uint8_t, 4>{std::uint8_t(x < 4 ? 204 : 51), 128, 230, 255};
+    }));
+    g.doc["extensionsUsed"] = {"KHR_texture_transform"};
+    const json transform = {{"KHR_texture_transform", {{"offset", {0.25, -0.5}}, {"rotation", 0.4}, {"scale", {2.0, 1.5}}}}};
+    const int textured = g.add("materials", {{"pbrMetallicRoughness",
+                                              {{"baseColorTexture", {{"index", colourMap}, {"texCoord", 1}, {"extensions", transform}}},
+                                               {"baseColorFactor", {1.0, 1.0, 1.0, 0.7}},
+                                               {"metallicFactor", 0.0},
+                                               {"roughnessFactor", 0.6}}},
+                                             {"normalTexture", {{"index", normalMap}}},
+                                             {"alphaMode", "BLEND"}});
+    const std::vector<float> tint = {1, 0.5f, 0.5f, 1, 0.5f, 1, 0.5f, 1, 0.5f, 0.5f, 1, 0.8f, 1, 1, 1, 0.6f};
+    const std::vector<float> tangents = {1, 0, 0, -1, 1, 0, 0, -1, 1, 0, 0, -1, 1, 0, 0, -1};
+    const json extra = {{"COLOR_0", g.accessor(g.view(tint.data(), tint.size() * 4), kFloat, 4, "VEC4")},
+                        {"TANGENT", g.accessor(g.view(tangents.data(), tangents.size() * 4), kFloat, 4, "VEC4")},
+                        {"TEXCOORD_1", g.vec2({{0, 1}, {1, 1}, {1, 0}, {0, 0}})}};
+    const Scene scene = writeAndLoad(g,
+                                     {square(g, -2.0f, 4.0f, colourMaterial(g, {0.5f, 0.6f, 0.7f, 1.0f}, "OPAQUE")),
+                                      square(g, 0.5f, 1.3f, textured, extra),
+                                      quad(g, {{{-0.5f, -1.5f, -0.5f}, {2.5f, -1.5f, -0.5f}, {2.5f, 1.5f, -0.5f}, {-0.5f, 1.5f, -0.5f}}},
+                                           colourMaterial(g, {0.2f, 0.8f, 0.4f, 0.4f}, "BLEND"))},
+                                     "textured_glass");
+    const std::uint32_t needed = ML_FEATURE_NORMAL_MAP | ML_FEATURE_TEXTURE_TRANSFORM | ML_FEATURE_UV1 | ML_FEATURE_VERTEX_COLOR | ML_FEATURE_BLEND;
+    ASSERT_EQ(materialFeatures(scene) & needed, needed);
+    const std::vector<Light> fromRight{{{3.0f, 0.5f, 2.5f}, 20.0f, {4.0f, 4.0f, 4.0f}}};
+    const FloatImage captured = render(scene, fromRight, frame(scene, kFrontView));
+    const FloatImage forward = render(scene, fromRight, frame(scene, kFrontView, MethodKind::Naive, 2));
+    // Away from the panes' edges and the texels' edges (the forward pass's samples see them
+    // from a pixel centre too, but a texel border may fall between two samples' resolve).
+    double worst = 0.0, sum = 0.0;
+    int count = 0;
+    for (int y = kHeight / 2 - 20; y <= kHeight / 2 + 20; ++y)
+        for (int x = kWidth / 2 - 26; x <= kWidth / 2 + 26; ++x) {
+            const glm::vec3 d = glm::abs(pixel(captured, x, y) - pixel(forward, x, y));
+            worst = std::max(worst, double(std::max(d.x, std::max(d.y, d.z))));
+            sum += d.x + d.y + d.z;
+            ++count;
+        }
+    std::printf("textured glass: capture against forward, max %.5f, mean %.6f\n", worst, sum / (3.0 * count));
+    EXPECT_LT(sum / (3.0 * count), 2e-3);
+    const glm::vec3 centre = pixel(captured, kWidth / 2, kHeight / 2);
+    EXPECT_GT(centre.r + centre.g + centre.b, 0.05f);
+    expectMethodsMatchNaive(scene, fromRight, kFrontView, "textured glass");
+}
+
+// The fragments are sized by what the frame needs; a frame whose need passes the budget (the
+// GPU's storage-buffer limit, lowered here) is refused in one line that names the numbers.
+TEST_F(GlassCapture, AFrameWhoseFragmentsDoNotFitIsRefusedInOneLine) {
+    Gltf g;
+    const Scene scene = writeAndLoad(g, {square(g, 0.0f, 1.5f, colourMaterial(g, {0.9f, 0.1f, 0.1f, 0.5f}, "BLEND"))}, "one_pane");
+    for (MethodKind kind : {MethodKind::Naive, MethodKind::Visibility}) {
+        FrameSettings s = frame(scene, kFrontView, kind);
+        s.method.transparentCaptureBudget = 1024;
+        FrameRenderer renderer(scene, kFrontAndBackLights, s);
+        try {
+            renderer.render(0);
+            ADD_FAILURE() << methodName(kind) << ": a frame of more than 128 fragments was drawn";
+        } catch (const std::runtime_error& e) {
+            const std::string message = e.what();
+            std::printf("%s refused: %s\n", methodName(kind).c_str(), message.c_str());
+            EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+            EXPECT_NE(message.find("fragments x 8 B"), std::string::npos) << message;
+            EXPECT_NE(message.find("160x90"), std::string::npos) << message;
+        }
+    }
+}
+
+// A scene with no BLEND material builds no capture and no shading program in any method.
+TEST_F(GlassCapture, ASceneWithoutBlendBuildsNoneOfIt) {
+    Gltf g;
+    const Scene scene = writeAndLoad(g, {square(g, 0.0f, 1.5f, colourMaterial(g, {0.9f, 0.1f, 0.1f, 1.0f}, "OPAQUE"))}, "opaque_only");
+    ASSERT_EQ(materialFeatures(scene) & ML_FEATURE_BLEND, 0u);
+    FrameRenderer renderer(scene, kFrontAndBackLights, frame(scene, kFrontView));
+    for (MethodKind kind : {MethodKind::Naive, MethodKind::ForwardPlus, MethodKind::Deferred, MethodKind::Visibility}) {
+        MethodSettings m;
+        m.kind = kind;
+        renderer.setMethod(m);
+        renderer.render(0);
+        EXPECT_EQ(renderer.method().transparentCapture(), nullptr) << methodName(kind);
+    }
+}
+
+}  // namespace
+}  // namespace ml
