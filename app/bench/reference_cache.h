@@ -14,6 +14,7 @@ namespace ml::app {
 struct ReferenceImages {
     FloatImage hdr;  // linear colour: the accuracy numbers
     RgbaImage ldr;   // tonemapped sRGB: what a person sees
+    float exposure = 1.0f;  // the multiplier the tonemap applied (measured, with --exposure auto)
     std::size_t bytes() const { return hdr.pixels.size() * sizeof(float) + ldr.pixels.size(); }
 };
 
