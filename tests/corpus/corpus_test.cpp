@@ -81,7 +81,7 @@ std::vector<NamedCamera> corpusCameras(const Scene& scene) {
 }
 
 // Where a method cannot hold the contract on a file, for a known cause, the bound it is held to
-// instead (docs/notes/issue23.md). The visibility resolve rebuilds each pixel's UVs, normal and
+// instead (docs/accuracy-and-stability.md, "Exceptions"). The visibility resolve rebuilds each pixel's UVs, normal and
 // their gradients from its triangle by a ray through the pixel centre; the rasterizer interpolates
 // from its own fixed-point set-up (vertices snapped to 1/256 pixel). The two differ in the last
 // bits, which moves a handful of pixels where a lookup sits on a step: MultiUVTest's TEXCOORD_1
