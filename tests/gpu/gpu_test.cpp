@@ -144,14 +144,14 @@ ReferenceFrame renderReference(FrameRenderer& renderer, std::uint32_t frame) {
     return readReference(renderer);
 }
 
-ReferenceFrame expectClusteredVariantsMatchNaive(FrameRenderer& renderer, const std::string& label) {
-    const ReferenceFrame naive = renderReference(renderer, 0);
+ReferenceFrame expectClusteredVariantsMatchNaive(FrameRenderer& renderer, const std::string& label, std::uint32_t frame) {
+    const ReferenceFrame naive = renderReference(renderer, frame);
     for (const ClusteredVariant& v : kClusteredVariants) {
         MethodSettings m;
         m.kind = v.kind;
         m.resolve = v.resolve;
         renderer.setMethod(m);
-        renderer.render(0);
+        renderer.render(frame);
         expectWithinContract(renderer, naive, label + " " + v.name, label + "_" + std::to_string(int(v.kind)) + "_" + std::to_string(int(v.resolve)));
     }
     return naive;

@@ -85,7 +85,7 @@ ImageDifference expectWithinContract(const FrameRenderer& renderer, const Refere
 // Renders frame 0 with the renderer's current method (naive, as built), then holds each of
 // kClusteredVariants to it (expectWithinContract, images named label_kind_resolve). Returns
 // naive's frame; the renderer is left on the last variant.
-ReferenceFrame expectClusteredVariantsMatchNaive(FrameRenderer& renderer, const std::string& label);
+ReferenceFrame expectClusteredVariantsMatchNaive(FrameRenderer& renderer, const std::string& label, std::uint32_t frame = 0);
 
 // A test scene (seed 5; radius halved from 1024 lights up) rendered by naive forward at 160x90
 // on one frame: the reference the methods rendered by `renderer` next are held to.

@@ -9,16 +9,6 @@
 namespace ml::test {
 namespace {
 
-struct Variant {
-    MethodKind kind;
-    Resolve resolve;
-    const char* name;
-};
-constexpr Variant kVariants[] = {{MethodKind::ForwardPlus, Resolve::Compute, "forward-plus"},
-                                 {MethodKind::Deferred, Resolve::Compute, "deferred/compute"},
-                                 {MethodKind::Deferred, Resolve::Fragment, "deferred/fragment"},
-                                 {MethodKind::Visibility, Resolve::Compute, "visibility"}};
-
 class SpecularOff : public GpuTest, public ::testing::WithParamInterface<const char*> {};
 
 TEST_P(SpecularOff, EveryMethodMatchesNaive) {
@@ -26,15 +16,7 @@ TEST_P(SpecularOff, EveryMethodMatchesNaive) {
     FrameSettings s = smallFrame(t.scene, 160, 90);
     s.specular = false;
     FrameRenderer renderer(t.scene, t.lights, s);
-    const ReferenceFrame naive = renderReference(renderer, 30);
-    for (const Variant& v : kVariants) {
-        MethodSettings m;
-        m.kind = v.kind;
-        m.resolve = v.resolve;
-        renderer.setMethod(m);
-        renderer.render(30);
-        expectWithinContract(renderer, naive, std::string(GetParam()) + " specular off " + v.name);
-    }
+    expectClusteredVariantsMatchNaive(renderer, std::string(GetParam()) + " specular off", 30);
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, SpecularOff, ::testing::Values("atrium", "boxes"),
