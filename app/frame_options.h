@@ -54,15 +54,16 @@ struct FrameOptions {
     std::optional<float> nearPlane;
     std::optional<float> farPlane;
     long long frames = 0;
-    // --exposure: auto, or EV stops (2^EV before the tonemap); empty: EV 0 for a built-in scene
-    // (its look, and its golden images, as they were), auto for a file.
+    // --exposure: auto, or EV stops (2^EV before the tonemap); empty: auto for a file, and for a
+    // built-in scene the fixed EV that keeps its look under the BRDF (unitlessLightExposure:
+    // log2(pi) under GGX, 0 under Blinn-Phong; its ambient fill is divided by the same factor).
     std::string exposure;
     std::string draw = "direct";
     std::string backfaceCulling = "on";
     std::string transparency = "on";
     std::string triangleOrder = "overdraw";
     std::string specular = "on";
-    std::string brdf = "blinn-phong";
+    std::string brdf = "ggx";
     std::optional<float> lightCutoff;  // --light-cutoff E: radii where max(colour) / d^2 falls to E, glTF's falloff
     std::string cutoff = "hard";       // --cutoff hard|stochastic|none
     bool bloom = false;

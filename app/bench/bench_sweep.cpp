@@ -401,7 +401,7 @@ std::string describePoint(const BenchPoint& p) {
     if (p.forwardPlus && o.prepass == "off") s += ", no pre-pass";
     if (o.msaa > 1) s += ", MSAA " + std::to_string(o.msaa);
     if (o.specular == "off") s += ", specular off";
-    if (o.brdf != "blinn-phong") s += ", " + o.brdf;
+    if (o.brdf != FrameOptions{}.brdf) s += ", " + o.brdf;
     if (o.lightCutoff) s += ", cut-off " + formatNumber(*o.lightCutoff) + (o.cutoff == "hard" ? "" : " " + o.cutoff);
     if (p.accumulate > 1) s += ", " + std::to_string(p.accumulate) + " draws accumulated";
     if (o.bloom) s += ", bloom";
