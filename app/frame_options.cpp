@@ -65,6 +65,17 @@ LightModel parseLightModel(const FrameOptions& o) {
     return model;
 }
 
+void checkCutoffForMethod(const LightModel& model, MethodKind method) {
+    if (model.falloff == Falloff::Untruncated && method != MethodKind::Naive)
+        throw std::invalid_argument("--cutoff none: needs --method naive (every light reaches every pixel; no cluster can hold that)");
+}
+
+SceneLook defaultLook(const std::string& scene, Brdf brdf) {
+    if (!isBuiltinScene(scene)) return SceneLook{};
+    const float unitless = unitlessLightExposure(brdf);
+    return SceneLook{FrameSettings{}.ambient / unitless, std::log2(unitless)};
+}
+
 void addFrameOptions(CLI::App& cmd, FrameOptions& o) {
     cmd.add_option("--scene", o.scene, "atrium, plane, boxes, or a .gltf/.glb file")->capture_default_str();
     cmd.add_option("--detail", o.detail, "tessellation scale of procedural scenes")->capture_default_str();
@@ -240,8 +251,7 @@ PreparedFrame prepareFrame(const FrameOptions& o, const Scene* loaded) {
     f.settings.method.resolve = parseResolve(o.resolve);
     f.settings.specular = parseOnOff("--specular", o.specular);
     f.settings.lightModel = parseLightModel(o);
-    if (f.settings.lightModel.falloff == Falloff::Untruncated && f.settings.method.kind != MethodKind::Naive)
-        throw std::invalid_argument("--cutoff none: needs --method naive (every light reaches every pixel; no cluster can hold that)");
+    checkCutoffForMethod(f.settings.lightModel, f.settings.method.kind);
     f.settings.method.gbuffer = parseGBufferFormat(o.gbuffer);
     f.settings.method.prepass = parseOnOff("--prepass", o.prepass);
     if (!f.settings.method.prepass && f.settings.method.kind == MethodKind::ForwardPlus) {
@@ -278,14 +288,10 @@ PreparedFrame prepareFrame(const FrameOptions& o, const Scene* loaded) {
     if (!(std::isfinite(o.lightIntensity) && o.lightIntensity >= 0.0f))
         throw std::invalid_argument("--light-intensity: must be a finite number >= 0");
     const bool exposureGiven = !o.exposure.empty();
-    // A built-in scene's lights are the seeds' unitless ones: under GGX, whose Lambert divides by
-    // pi, its default exposure is pi and its ambient fill (no 1/pi under either BRDF) a pi-th, so
-    // it looks as it did under Blinn-Phong (unitlessLightExposure). A file's lights have units.
-    const float unitless = isBuiltinScene(o.scene) ? unitlessLightExposure(f.settings.lightModel.brdf) : 1.0f;
-    f.settings.ambient /= unitless;
-    const ExposureSpec exposure = exposureGiven             ? parseExposure(o.exposure)
-                                  : isBuiltinScene(o.scene) ? ExposureSpec{false, std::log2(unitless)}
-                                                            : ExposureSpec{true, 0.0f};
+    const SceneLook look = defaultLook(o.scene, f.settings.lightModel.brdf);
+    f.settings.ambient = look.ambient;
+    const ExposureSpec exposure = exposureGiven ? parseExposure(o.exposure)
+                                                : ExposureSpec{!look.exposureStops, look.exposureStops.value_or(0.0f)};
     const LightPlacement placement = lightPlacementFor(o);
     if (!std::isfinite(o.driftSpeed)) throw std::invalid_argument("--drift-speed: must be finite");
     if (!(std::isfinite(o.detail) && o.detail > 0.0f && o.detail <= 16.0f))

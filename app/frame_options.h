@@ -54,9 +54,8 @@ struct FrameOptions {
     std::optional<float> nearPlane;
     std::optional<float> farPlane;
     long long frames = 0;
-    // --exposure: auto, or EV stops (2^EV before the tonemap); empty: auto for a file, and for a
-    // built-in scene the fixed EV that keeps its look under the BRDF (unitlessLightExposure:
-    // log2(pi) under GGX, 0 under Blinn-Phong; its ambient fill is divided by the same factor).
+    // --exposure: auto, or EV stops (2^EV before the tonemap); empty: defaultLook (auto for a file;
+    // for a built-in scene log2(pi) under GGX, 0 under Blinn-Phong).
     std::string exposure;
     std::string draw = "direct";
     std::string backfaceCulling = "on";
@@ -80,6 +79,18 @@ void addFrameOptions(CLI::App& command, FrameOptions& options);
 
 // --brdf, --light-cutoff and --cutoff, validated (std::invalid_argument, one line naming the flag).
 LightModel parseLightModel(const FrameOptions& options);
+// Refuses --cutoff none with a clustered method (std::invalid_argument): render, bench and the view's panel.
+void checkCutoffForMethod(const LightModel& model, MethodKind method);
+
+// What a frame of `scene` looks like by default under `brdf`: a built-in scene's lights are the
+// seeds' unitless ones, so under GGX, whose Lambert divides by pi, its fixed exposure is pi and
+// its ambient fill (no 1/pi under either BRDF) a pi-th, and it looks as it did under Blinn-Phong
+// (unitlessLightExposure). A file's lights have units: the ambient as it is, automatic exposure.
+struct SceneLook {
+    float ambient = FrameSettings{}.ambient;
+    std::optional<float> exposureStops;  // fixed EV; none: automatic
+};
+SceneLook defaultLook(const std::string& scene, Brdf brdf);
 
 // --lights as given, else its default for a scene: 0 where the scene brings lights of its own
 // (and --scene-lights is on), 1024 otherwise.

@@ -27,7 +27,7 @@ Brdf parseBrdf(const std::string& text);  // std::invalid_argument naming --brdf
 // I / (pi d^2) under GGX and I / d^2 under Blinn-Phong. pi for GGX (EV log2(pi) = 1.65), 1 for
 // Blinn-Phong. The built-in scenes' default exposure, and the divisor of their ambient fill, which
 // has no 1/pi under either BRDF and would otherwise come out pi times brighter against the lights
-// (app/frame_options.cpp, prepareFrame; the tests' setLightModel).
+// (app/frame_options.h, defaultLook; the tests' setLightModel).
 float unitlessLightExposure(Brdf brdf);
 
 // The falloff of point and spot lights (glsl/include/shading.glsl, lightFalloff).
