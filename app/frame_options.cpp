@@ -65,6 +65,17 @@ LightModel parseLightModel(const FrameOptions& o) {
     return model;
 }
 
+void checkCutoffForMethod(const LightModel& model, MethodKind method) {
+    if (model.falloff == Falloff::Untruncated && method != MethodKind::Naive)
+        throw std::invalid_argument("--cutoff none: needs --method naive (every light reaches every pixel; no cluster can hold that)");
+}
+
+SceneLook defaultLook(const std::string& scene, Brdf brdf) {
+    if (!isBuiltinScene(scene)) return SceneLook{};
+    const float unitless = unitlessLightExposure(brdf);
+    return SceneLook{FrameSettings{}.ambient / unitless, std::log2(unitless)};
+}
+
 void addFrameOptions(CLI::App& cmd, FrameOptions& o) {
     cmd.add_option("--scene", o.scene, "atrium, plane, boxes, or a .gltf/.glb file")->capture_default_str();
     cmd.add_option("--detail", o.detail, "tessellation scale of procedural scenes")->capture_default_str();
@@ -123,7 +134,8 @@ void addFrameOptions(CLI::App& cmd, FrameOptions& o) {
            "far clip plane, or auto (the default: fits the scene's bounds)");
     cmd.add_option("--frames", o.frames, "advance the light animation this many frames (1/60 s each) first")->capture_default_str();
     cmd.add_option("--exposure", o.exposure, "auto (from the frame's log-average luminance, computed on the GPU), or EV "
-                   "stops (the HDR frame times 2^EV before the tonemap) (default: 0 for a built-in scene, auto for a file)")
+                   "stops (the HDR frame times 2^EV before the tonemap) (default: auto for a file; for a built-in scene "
+                   "log2(pi) = 1.65 under --brdf ggx, whose Lambert divides by pi, and 0 under blinn-phong: the same look)")
         ->type_name("auto|EV");
     cmd.add_option("--draw", o.draw, "scene submission: direct (a draw call per draw range) or indirect (multi-draw indirect, a call per texture)")->capture_default_str();
     cmd.add_option("--triangle-order", o.triangleOrder, "each draw range's triangles at upload: as-loaded, vertex-cache or overdraw (meshoptimizer; renderer/scene/triangle_order.h)")->capture_default_str();
@@ -133,7 +145,7 @@ void addFrameOptions(CLI::App& cmd, FrameOptions& o) {
     cmd.add_option("--bloom-threshold", o.bloomThreshold, "luminance above which pixels bloom")->capture_default_str();
     cmd.add_option("--bloom-strength", o.bloomStrength, "how much of the blurred bright part is added back")->capture_default_str();
     cmd.add_option("--specular", o.specular, "on: the BRDF's specular term; off: Lambert only (every method and the reference alike)")->capture_default_str();
-    cmd.add_option("--brdf", o.brdf, "blinn-phong (normalized Blinn-Phong, no 1/pi) or ggx (glTF's metallic-roughness BRDF, appendix B)")->capture_default_str();
+    cmd.add_option("--brdf", o.brdf, "ggx (glTF's metallic-roughness BRDF, appendix B) or blinn-phong (the seeds' normalized Blinn-Phong, no 1/pi)")->capture_default_str();
     cmd.add_option("--light-cutoff", o.lightCutoff, "E > 0 in output units: each generated light, and each scene light without a range, reaches as far as its "
                    "inverse square max(colour) / d^2 exceeds E; lights fall off as glTF says (clamp(1 - (d/r)^4, 0, 1) / max(d, 0.01)^2)");
     cmd.add_option("--cutoff", o.cutoff, "hard (glTF's window at each light's radius), stochastic (ranges drawn per frame by Russian roulette, "
@@ -239,8 +251,7 @@ PreparedFrame prepareFrame(const FrameOptions& o, const Scene* loaded) {
     f.settings.method.resolve = parseResolve(o.resolve);
     f.settings.specular = parseOnOff("--specular", o.specular);
     f.settings.lightModel = parseLightModel(o);
-    if (f.settings.lightModel.falloff == Falloff::Untruncated && f.settings.method.kind != MethodKind::Naive)
-        throw std::invalid_argument("--cutoff none: needs --method naive (every light reaches every pixel; no cluster can hold that)");
+    checkCutoffForMethod(f.settings.lightModel, f.settings.method.kind);
     f.settings.method.gbuffer = parseGBufferFormat(o.gbuffer);
     f.settings.method.prepass = parseOnOff("--prepass", o.prepass);
     if (!f.settings.method.prepass && f.settings.method.kind == MethodKind::ForwardPlus) {
@@ -277,7 +288,10 @@ PreparedFrame prepareFrame(const FrameOptions& o, const Scene* loaded) {
     if (!(std::isfinite(o.lightIntensity) && o.lightIntensity >= 0.0f))
         throw std::invalid_argument("--light-intensity: must be a finite number >= 0");
     const bool exposureGiven = !o.exposure.empty();
-    const ExposureSpec exposure = exposureGiven ? parseExposure(o.exposure) : ExposureSpec{!isBuiltinScene(o.scene), 0.0f};
+    const SceneLook look = defaultLook(o.scene, f.settings.lightModel.brdf);
+    f.settings.ambient = look.ambient;
+    const ExposureSpec exposure = exposureGiven ? parseExposure(o.exposure)
+                                                : ExposureSpec{!look.exposureStops, look.exposureStops.value_or(0.0f)};
     const LightPlacement placement = lightPlacementFor(o);
     if (!std::isfinite(o.driftSpeed)) throw std::invalid_argument("--drift-speed: must be finite");
     if (!(std::isfinite(o.detail) && o.detail > 0.0f && o.detail <= 16.0f))

@@ -54,15 +54,15 @@ struct FrameOptions {
     std::optional<float> nearPlane;
     std::optional<float> farPlane;
     long long frames = 0;
-    // --exposure: auto, or EV stops (2^EV before the tonemap); empty: EV 0 for a built-in scene
-    // (its look, and its golden images, as they were), auto for a file.
+    // --exposure: auto, or EV stops (2^EV before the tonemap); empty: defaultLook (auto for a file;
+    // for a built-in scene log2(pi) under GGX, 0 under Blinn-Phong).
     std::string exposure;
     std::string draw = "direct";
     std::string backfaceCulling = "on";
     std::string transparency = "on";
     std::string triangleOrder = "overdraw";
     std::string specular = "on";
-    std::string brdf = "blinn-phong";
+    std::string brdf = "ggx";
     std::optional<float> lightCutoff;  // --light-cutoff E: radii where max(colour) / d^2 falls to E, glTF's falloff
     std::string cutoff = "hard";       // --cutoff hard|stochastic|none
     bool bloom = false;
@@ -79,6 +79,18 @@ void addFrameOptions(CLI::App& command, FrameOptions& options);
 
 // --brdf, --light-cutoff and --cutoff, validated (std::invalid_argument, one line naming the flag).
 LightModel parseLightModel(const FrameOptions& options);
+// Refuses --cutoff none with a clustered method (std::invalid_argument): render, bench and the view's panel.
+void checkCutoffForMethod(const LightModel& model, MethodKind method);
+
+// What a frame of `scene` looks like by default under `brdf`: a built-in scene's lights are the
+// seeds' unitless ones, so under GGX, whose Lambert divides by pi, its fixed exposure is pi and
+// its ambient fill (no 1/pi under either BRDF) a pi-th, and it looks as it did under Blinn-Phong
+// (unitlessLightExposure). A file's lights have units: the ambient as it is, automatic exposure.
+struct SceneLook {
+    float ambient = FrameSettings{}.ambient;
+    std::optional<float> exposureStops;  // fixed EV; none: automatic
+};
+SceneLook defaultLook(const std::string& scene, Brdf brdf);
 
 // --lights as given, else its default for a scene: 0 where the scene brings lights of its own
 // (and --scene-lights is on), 1024 otherwise.

@@ -84,6 +84,7 @@ public:
     void setBackfaceCulling(bool on) { settings_.backfaceCulling = on; }
     void setTransparency(bool on) { settings_.transparency = on; }
     void setSpecular(bool on) { settings_.specular = on; }
+    void setAmbient(float ambient) { settings_.ambient = ambient; }
     void setLightModel(const LightModel& model) { settings_.lightModel = model; }
     void setBloom(const BloomSettings& bloom) { settings_.bloom = bloom; }
     const BloomPass& bloom() const { return bloom_; }

@@ -153,9 +153,9 @@ const std::vector<AxisDef>& axisDefs() {
          }},
         {{"drift_speed", "--drift-speed", "mean upward drift of the lights, units per second"}, ValueKind::Number,
          Applies::Always, [](BenchPoint& p, const json& v) { p.frame.driftSpeed = static_cast<float>(asNumber(v)); }},
-        {{"specular", "--specular", "Blinn-Phong specular term: on, off (Lambert only)"}, ValueKind::Boolean, Applies::Always,
+        {{"specular", "--specular", "the BRDF's specular term: on, off (Lambert only)"}, ValueKind::Boolean, Applies::Always,
          [](BenchPoint& p, const json& v) { p.frame.specular = asBoolean(v) ? "on" : "off"; }},
-        {{"brdf", "--brdf", "blinn-phong or ggx (glTF's metallic-roughness BRDF)"}, ValueKind::Text, Applies::Always,
+        {{"brdf", "--brdf", "ggx (glTF's metallic-roughness BRDF, the default) or blinn-phong (the seeds')"}, ValueKind::Text, Applies::Always,
          [](BenchPoint& p, const json& v) {
              (void)parseBrdf(asText(v));
              p.frame.brdf = v.get<std::string>();
@@ -401,7 +401,7 @@ std::string describePoint(const BenchPoint& p) {
     if (p.forwardPlus && o.prepass == "off") s += ", no pre-pass";
     if (o.msaa > 1) s += ", MSAA " + std::to_string(o.msaa);
     if (o.specular == "off") s += ", specular off";
-    if (o.brdf != "blinn-phong") s += ", " + o.brdf;
+    if (o.brdf != FrameOptions{}.brdf) s += ", " + o.brdf;
     if (o.lightCutoff) s += ", cut-off " + formatNumber(*o.lightCutoff) + (o.cutoff == "hard" ? "" : " " + o.cutoff);
     if (p.accumulate > 1) s += ", " + std::to_string(p.accumulate) + " draws accumulated";
     if (o.bloom) s += ", bloom";

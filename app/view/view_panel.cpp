@@ -83,11 +83,41 @@ void methodSection(ViewSettings& s, PanelEdits& edits) {
     if (s.method.kind == MethodKind::Naive) ImGui::TextColored(kDim, "naive: every pixel loops over every light");
 }
 
+// Where a light stops, on one row: the falloff (--cutoff) and beside it the radius (the seeds'
+// smooth falloff) or the cut-off E (--light-cutoff: glTF's falloff, every radius where
+// max(colour) / d^2 falls to E). A light set from --lights-file keeps its own falloff and radii.
+void reachControls(ViewSettings& s, const ViewStatistics& stats, PanelEdits& edits) {
+    static const std::vector<std::string> falloffs = {"radius", "cut-off", "stochastic", "none (naive)"};
+    static const Falloff kinds[] = {Falloff::Smooth, Falloff::Gltf, Falloff::Stochastic, Falloff::Untruncated};
+    int falloff = static_cast<int>(std::find(std::begin(kinds), std::end(kinds), s.falloff) - std::begin(kinds));
+    const float combo = 0.45f * kItemWidth;
+    ImGui::BeginDisabled(stats.lightsFromFile);
+    ImGui::SetNextItemWidth(combo);
+    if (comboOf("##falloff", falloff, falloffs)) {
+        s.falloff = kinds[falloff];
+        edits.lights = true;
+    }
+    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+        ImGui::SetTooltip("--cutoff: radius (the seeds' smooth falloff), cut-off (glTF's falloff, hard at each light's "
+                          "E radius), stochastic (ranges drawn per frame past it: unbiased, noisy), none (every light "
+                          "everywhere, naive only)");
+    ImGui::EndDisabled();
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(kItemWidth - combo - ImGui::GetStyle().ItemSpacing.x);
+    if (s.falloff == Falloff::Smooth) {
+        ImGui::SliderFloat("radius", &s.lightRadius, stats.sceneSize * 1e-3f, stats.sceneSize * 0.5f, "%.3f",
+                           ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
+    } else {
+        ImGui::BeginDisabled(s.falloff == Falloff::Untruncated || stats.lightsFromFile);
+        ImGui::SliderFloat("E", &s.lightCutoff, 1e-4f, 1.0f, "%.4g", ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
+        ImGui::EndDisabled();
+    }
+    if (ImGui::IsItemDeactivatedAfterEdit()) edits.lights = true;
+}
+
 void lightsSection(ViewSettings& s, const ViewStatistics& stats, PanelEdits& edits) {
     if (sliderOnRelease("lights", s.lightCount, 0, kMaxViewLights, ImGuiSliderFlags_Logarithmic)) edits.lights = true;
-    ImGui::SliderFloat("radius", &s.lightRadius, stats.sceneSize * 1e-3f, stats.sceneSize * 0.5f, "%.3f",
-                       ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
-    if (ImGui::IsItemDeactivatedAfterEdit()) edits.lights = true;
+    reachControls(s, stats, edits);
     // Spot share and angle on one row: the panel must stay short enough to leave the lower
     // window to the scene.
     const float half = 0.5f * (kItemWidth - ImGui::GetStyle().ItemSpacing.x) - 28.0f;
@@ -162,7 +192,12 @@ void shadingSection(ViewSettings& s, const ViewStatistics& stats, PanelEdits& ed
     if (ImGui::Checkbox("depth pre-pass (Forward+)", &s.method.prepass)) edits.method = true;
     ImGui::EndDisabled();
     msaaControl(s, edits);
-    ImGui::Checkbox("specular (Blinn-Phong)", &s.specular);
+    int brdf = s.brdf == Brdf::Ggx ? 0 : 1;
+    if (comboOf("BRDF", brdf, {brdfName(Brdf::Ggx), brdfName(Brdf::BlinnPhong)})) {
+        s.brdf = brdf == 0 ? Brdf::Ggx : Brdf::BlinnPhong;
+        edits.brdf = true;
+    }
+    ImGui::Checkbox("specular", &s.specular);
     ImGui::Checkbox("bloom", &s.bloom.enabled);
     ImGui::BeginDisabled(!s.bloom.enabled);
     ImGui::SliderFloat("bloom threshold", &s.bloom.threshold, 0.0f, 20.0f, "%.2f", ImGuiSliderFlags_AlwaysClamp);

@@ -10,6 +10,7 @@
 #include "renderer/passes/bloom_pass.h"
 #include "renderer/camera/camera_controller.h"
 #include "renderer/clustering/cluster_statistics.h"
+#include "renderer/lights/light_model.h"
 #include "renderer/methods/shading_method.h"
 #include "renderer/pass_timer.h"
 
@@ -24,6 +25,11 @@ struct ViewSettings {
     float spotShare = 0.0f;       // share of generated lights that are spots
     float spotAngle = 0.0f;       // their outer cone angle in degrees; 0: each in [20, 60]
     bool sceneLights = true;      // the scene file's own lights
+    // The light model (--brdf, --cutoff, --light-cutoff). Falloff::Smooth: radii from the radius
+    // slider; Gltf (hard) and Stochastic: every radius from the cut-off E; Untruncated: naive only.
+    Brdf brdf = Brdf::Ggx;
+    Falloff falloff = Falloff::Smooth;
+    float lightCutoff = 0.01f;    // E, kept while the falloff does not use it
     bool animate = true;
     float animationSpeed = 1.0f;  // times real time
     float exposureStops = 0.0f;   // EV: fixed, or on top of the automatic exposure
@@ -70,7 +76,8 @@ struct ViewStatistics {
 
 struct PanelEdits {
     bool method = false;      // method, grid, assignment, resolve or debug view
-    bool lights = false;      // count or radius (applied when the slider is let go)
+    bool lights = false;      // count, radius, falloff or cut-off E (sliders applied when let go)
+    bool brdf = false;
     bool vsync = false;
     bool renderScale = false;  // applied when the slider is let go
     bool cameraMode = false;

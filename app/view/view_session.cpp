@@ -112,6 +112,10 @@ void ViewSession::adoptSceneSettings() {
     settings_.spotAngle = o.spotAngle;
     settings_.sceneLights = o.sceneLights == "on";
     settings_.lightRadius = lightRadiusFor(o, frame_.scene);
+    const LightModel& model = frame_.settings.lightModel;
+    settings_.brdf = model.brdf;
+    settings_.falloff = model.falloff;
+    if (model.cutoff > 0.0f) settings_.lightCutoff = model.cutoff;
     settings_.exposureStops = std::log2(frame_.settings.exposure);
     settings_.autoExposure = frame_.settings.autoExposure;
     settings_.sceneCamera = -1;
@@ -144,6 +148,8 @@ void ViewSession::openScene(const std::string& path) {
         settings.camera = next.settings.camera;
         settings.exposure = next.settings.exposure;
         settings.autoExposure = next.settings.autoExposure;
+        settings.ambient = next.settings.ambient;
+        settings.lightModel = next.settings.lightModel;
         settings.animation = next.settings.animation;
         auto renderer = std::make_unique<FrameRenderer>(next.scene, next.lights, settings);
         renderer_ = std::move(renderer);  // the old scene's GL objects go only once the new one is built
@@ -254,6 +260,7 @@ void ViewSession::frameScene() {
 void ViewSession::setMethodOrExplain(const MethodSettings& method) {
     try {
         validateGridConfig(method.clustering.grid);
+        checkCutoffForMethod(renderer_->settings().lightModel, method.kind);
         renderer_->setMethod(effectiveMethod(method));
         workingMethod_ = method;
         stats_.error.clear();
@@ -266,25 +273,94 @@ void ViewSession::setMethodOrExplain(const MethodSettings& method) {
     }
 }
 
-void ViewSession::regenerateLights() {
-    LightGeneration gen;
-    gen.count = static_cast<std::uint32_t>(std::clamp(settings_.lightCount, 0, kMaxViewLights));
-    gen.radius = settings_.lightRadius;
-    gen.intensity = options_.frame.lightIntensity;
-    gen.seed = static_cast<std::uint32_t>(options_.frame.seed);
-    gen.spotShare = settings_.spotShare;
-    gen.spotAngleDeg = settings_.spotAngle;
-    frame_.lights = settings_.sceneLights ? lightsFromScene(frame_.scene) : std::vector<Light>{};
-    const std::vector<Light> generatedLights = generateLights(frame_.scene, gen, frame_.lightPlacement);
-    frame_.lights.insert(frame_.lights.end(), generatedLights.begin(), generatedLights.end());
-    renderer_->setLights(frame_.lights);
+void ViewSession::applyLights() {
+    FrameOptions o = options_.frame;
+    o.lightsFile.clear();
+    o.lights = std::clamp(settings_.lightCount, 0, kMaxViewLights);
+    o.spotShare = settings_.spotShare;
+    o.spotAngle = settings_.spotAngle;
+    o.sceneLights = settings_.sceneLights ? "on" : "off";
+    const bool cutoff = settings_.falloff == Falloff::Gltf || settings_.falloff == Falloff::Stochastic;
+    o.cutoff = settings_.falloff == Falloff::Stochastic ? "stochastic" : settings_.falloff == Falloff::Untruncated ? "none" : "hard";
+    o.lightCutoff = cutoff ? std::optional(settings_.lightCutoff) : std::nullopt;
+    o.lightRadius = cutoff ? RadiusSpec{} : RadiusSpec{RadiusSpec::Kind::Fixed, settings_.lightRadius};
+    try {
+        const LightModel model = parseLightModel(o);
+        checkCutoffForMethod(model, settings_.method.kind);
+        frame_.lights = frameLights(o, frame_.scene);
+        toGpuSunLights(frame_.lights);
+        LightModel working = renderer_->settings().lightModel;  // the BRDF is applyBrdf's
+        working.falloff = model.falloff;
+        working.cutoff = model.cutoff;
+        renderer_->setLightModel(working);
+        renderer_->setLights(frame_.lights);
+        // Opening another file keeps the panel's light model.
+        options_.frame.cutoff = o.cutoff;
+        options_.frame.lightCutoff = o.lightCutoff;
+        if (cutoff) options_.frame.lightRadius = RadiusSpec{};
+        stats_.error.clear();
+    } catch (const std::exception& e) {
+        stats_.error = e.what();
+        const LightModel& working = renderer_->settings().lightModel;
+        settings_.falloff = working.falloff;
+        if (working.cutoff > 0.0f) settings_.lightCutoff = working.cutoff;
+        return;
+    }
     stats_.lightsFromFile = false;
     lastStatistics_ = -1.0;
 }
 
+void ViewSession::applyBrdf() {
+    LightModel model = renderer_->settings().lightModel;
+    const Brdf previous = model.brdf;
+    model.brdf = settings_.brdf;
+    renderer_->setLightModel(model);
+    renderer_->setAmbient(defaultLook(options_.frame.scene, settings_.brdf).ambient);
+    // GGX's Lambert divides by pi: a fixed exposure moves with it, as a built-in scene's default does.
+    if (!settings_.autoExposure)
+        settings_.exposureStops += std::log2(unitlessLightExposure(settings_.brdf) / unitlessLightExposure(previous));
+    options_.frame.brdf = brdfName(settings_.brdf);
+}
+
+void ViewSession::applyPanelScript(const std::string& script) {
+    PanelEdits edits;
+    std::size_t start = 0;
+    while (start < script.size()) {
+        const std::size_t comma = std::min(script.find(',', start), script.size());
+        const std::string item = script.substr(start, comma - start);
+        start = comma + 1;
+        const std::size_t eq = item.find('=');
+        const std::string key = item.substr(0, eq), value = eq == std::string::npos ? "" : item.substr(eq + 1);
+        if (key == "brdf") {
+            settings_.brdf = parseBrdf(value);
+            edits.brdf = true;
+        } else if (key == "cutoff" && (value == "radius" || value == "hard" || value == "stochastic" || value == "none")) {
+            settings_.falloff = value == "radius" ? Falloff::Smooth : value == "hard" ? Falloff::Gltf
+                                : value == "stochastic" ? Falloff::Stochastic : Falloff::Untruncated;
+            edits.lights = true;
+        } else if (key == "light-cutoff") {
+            FrameOptions check;
+            check.lightCutoff = std::strtof(value.c_str(), nullptr);
+            try {
+                (void)parseLightModel(check);  // one rule for E: finite and > 0
+            } catch (const std::invalid_argument& e) {
+                throw std::invalid_argument("--panel '" + item + "': " + e.what());
+            }
+            settings_.lightCutoff = *check.lightCutoff;
+            edits.lights = true;
+        } else {
+            throw std::invalid_argument("--panel '" + item + "': expected brdf=ggx|blinn-phong, "
+                                        "cutoff=radius|hard|stochastic|none or light-cutoff=E");
+        }
+    }
+    applyEdits(edits);
+    if (!stats_.error.empty()) throw std::invalid_argument("--panel " + script + ": " + stats_.error);
+}
+
 void ViewSession::applyEdits(const PanelEdits& edits) {
     if (edits.method) setMethodOrExplain(settings_.method);
-    if (edits.lights) regenerateLights();
+    if (edits.brdf) applyBrdf();
+    if (edits.lights) applyLights();
     if (edits.vsync) window_.setVsync(settings_.vsync);
     if (edits.renderScale) stats_.renderScaleNote.clear();  // the user's choice now, not ours
     if (edits.cameraMode) controller_.setMode(settings_.cameraMode);
@@ -361,6 +437,7 @@ int ViewSession::run() {
         const char* paths[] = {options_.drop.c_str()};
         ViewInput::onDrop(window_.handle(), 1, paths);
     }
+    if (!options_.panel.empty()) applyPanelScript(options_.panel);
     startTime_ = glfwGetTime();
     double previous = startTime_;
     std::size_t framesShown = 0;

@@ -25,6 +25,7 @@ struct ViewOptions {
     std::string screenshotWindow;  // the window as shown, panel included
     std::string cameraPath;
     std::string drop;              // scripted: a file delivered through the window's drop callback before frame 1
+    std::string panel;             // scripted: panel controls set before frame 1 (applyPanelScript)
     double runFor = 0.0;           // > 0: the live loop, vsync off, for this many seconds; then the frame rate, and exit
     bool noVsync = false;
     bool hidePanel = false;
@@ -63,7 +64,16 @@ private:
     void refreshStatistics(bool now, bool rendered);
     void drawPanel();
     void applyEdits(const PanelEdits& edits);
-    void regenerateLights();
+    // The panel's lights and light model (count, radius, spots, the file's lights, falloff, cut-off
+    // E) through the frame's own rule (frameLights, parseLightModel), re-uploaded; a combination
+    // that is refused leaves the lights as they were and says why.
+    void applyLights();
+    // The panel's BRDF; a fixed exposure and a built-in scene's ambient follow it (defaultLook),
+    // so the picture keeps its brightness and only the BRDF's shape changes.
+    void applyBrdf();
+    // --panel brdf=ggx|blinn-phong,cutoff=radius|hard|stochastic|none,light-cutoff=E: as if set in
+    // the panel before frame 1 (scripted frames take no input). Throws std::invalid_argument.
+    void applyPanelScript(const std::string& script);
     void setMethodOrExplain(const MethodSettings& method);
     // Chooses the starting render scale and says why; needs info_.
     void chooseRenderScale();

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <stdexcept>
 
 #include "renderer/hash.h"
@@ -15,6 +16,8 @@ Brdf parseBrdf(const std::string& text) {
     if (text == "blinn-phong") return Brdf::BlinnPhong;
     throw std::invalid_argument("--brdf '" + text + "': expected ggx or blinn-phong");
 }
+
+float unitlessLightExposure(Brdf brdf) { return brdf == Brdf::Ggx ? std::numbers::pi_v<float> : 1.0f; }
 
 const char* falloffName(Falloff falloff) {
     switch (falloff) {

@@ -14,11 +14,21 @@
 
 namespace ml {
 
-// --brdf: glTF's metallic-roughness BRDF (GGX, height-correlated Smith, Schlick, Lambert), or the
-// normalized Blinn-Phong mapping of the seeds.
+// --brdf: glTF's metallic-roughness BRDF (GGX, height-correlated Smith, Schlick, Lambert; the
+// default, as in Khronos' Sample Viewer, Filament and Bevy), or the normalized Blinn-Phong
+// mapping of the seeds.
 enum class Brdf { BlinnPhong, Ggx };
 const char* brdfName(Brdf brdf);
 Brdf parseBrdf(const std::string& text);  // std::invalid_argument naming --brdf
+
+// The fixed exposure that shows the seeds' unitless lights (the built-in scenes' generated
+// lights, intensity 1) as bright under `brdf` as Blinn-Phong at exposure 1 did: glTF's Lambert
+// divides by pi and the Blinn-Phong mapping never did, so the same light on a white surface gives
+// I / (pi d^2) under GGX and I / d^2 under Blinn-Phong. pi for GGX (EV log2(pi) = 1.65), 1 for
+// Blinn-Phong. The built-in scenes' default exposure, and the divisor of their ambient fill, which
+// has no 1/pi under either BRDF and would otherwise come out pi times brighter against the lights
+// (app/frame_options.h, defaultLook; the tests' setLightModel).
+float unitlessLightExposure(Brdf brdf);
 
 // The falloff of point and spot lights (glsl/include/shading.glsl, lightFalloff).
 enum class Falloff : std::uint32_t {
@@ -30,7 +40,7 @@ enum class Falloff : std::uint32_t {
 const char* falloffName(Falloff falloff);
 
 struct LightModel {
-    Brdf brdf = Brdf::BlinnPhong;
+    Brdf brdf = Brdf::Ggx;
     Falloff falloff = Falloff::Smooth;
     // --light-cutoff E: a light's unwindowed contribution max(colour) / d^2 falls to E at its
     // cut-off radius; 0 when not given.

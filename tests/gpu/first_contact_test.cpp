@@ -146,6 +146,39 @@ TEST(FirstContact, AutoExposureKeepsEveryCorpusFileReadable) {
     }
 }
 
+// How far GGX at its default exposure (and ambient) may move the atrium's mean display luma from
+// Blinn-Phong's at EV 0 (default frame, 1,024 lights): GGX's Fresnel and longer tails, and the
+// emissive lanterns (no 1/pi in either BRDF) brightened by the exposure, move it a little.
+// Measured on llvmpipe at 160x90: 0.473 against 0.467 (+1 %); GGX at EV 0 (the pi not made up
+// for) 0.296 (-37 %); the ambient left at 0.03, 0.495 (+6 %; +55 % at 64 lights).
+constexpr double kLookBand = 0.05;
+
+// A built-in scene's default exposure keeps its look under either BRDF: EV log2(pi) under GGX
+// (whose Lambert divides by pi), EV 0 under Blinn-Phong; an --exposure given is used as given.
+TEST(FirstContact, BuiltinScenesKeepTheirLookUnderEitherBrdf) {
+    for (const auto& [flags, exposure] : {std::pair{"", "exposure: EV +1.65"}, std::pair{"--brdf blinn-phong", "exposure: EV +0.00"},
+                                          std::pair{"--exposure 0.5", "exposure: EV +0.50"},
+                                          std::pair{"--brdf blinn-phong --exposure 0.5", "exposure: EV +0.50"}}) {
+        std::string output;
+        ASSERT_EQ(runManylights(std::string("info atrium ") + flags, output), 0) << flags << ":\n" << output;
+        EXPECT_NE(output.find(exposure), std::string::npos) << "'" << flags << "': no '" << exposure << "' in:\n" << output;
+    }
+    const std::string dir = testOutputDir().string();
+    double luma[2] = {};
+    for (int i = 0; i < 2; ++i) {
+        const std::string name = dir + "/look_" + (i == 0 ? "ggx" : "blinn_phong");
+        std::string output;
+        ASSERT_EQ(runManylights(std::string("render --scene atrium --size 160x90 ") + (i == 0 ? "" : "--brdf blinn-phong ") +
+                                    "--out " + name + ".png --out-float " + name + ".pfm",
+                                output),
+                  0)
+            << output;
+        luma[i] = meanDisplayLuma(readPng(name + ".png"), readPfm(name + ".pfm"));
+    }
+    std::printf("atrium mean display luma: GGX at EV log2(pi) %.3f, Blinn-Phong at EV 0 %.3f\n", luma[0], luma[1]);
+    EXPECT_NEAR(luma[0] / luma[1], 1.0, kLookBand) << "GGX " << luma[0] << ", Blinn-Phong " << luma[1];
+}
+
 TEST(FirstContact, SurfacePlacementReachesSurfacesVolumeMisses) {
     REQUIRE_CORPUS();
     // ToyCar: a car on a cloth, much of its box air. At the bench's overlap:8 radius about a third

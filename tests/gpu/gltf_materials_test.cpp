@@ -152,7 +152,7 @@ TEST_F(GltfMaterials, EmissiveQuadGlowsWithoutLights) {
     const Scene scene = writeAndLoad(g, {square(g, 0.0f, 1.5f, material)}, "emissive");
     EXPECT_NE(materialFeatures(scene) & ML_FEATURE_EMISSIVE_MAP, 0u);
     const test::ReferenceFrame naive = expectEveryMethodMatchesNaive(scene, {}, "emissive");
-    const float ambient = FrameSettings{}.ambient * (0.2f + 0.04f);
+    const float ambient = test::smallFrame(scene, kFrontView, kWidth, kHeight).ambient * (0.2f + 0.04f);
     const float* left = naive.hdr.at(kWidth / 2 - 10, kHeight / 2);
     const float* right = naive.hdr.at(kWidth / 2 + 10, kHeight / 2);
     EXPECT_NEAR(left[0], 2.0f + ambient, 1e-3f);
@@ -181,7 +181,7 @@ TEST_F(GltfMaterials, MetallicRoughnessAndOcclusionMapsFollowTheMapping) {
     const FloatImage hdr = dark.readHdr();
     EXPECT_EQ(hdr.at(kWidth / 2 - 10, kHeight / 2)[0], 0.0f);
     const float open = hdr.at(kWidth / 2 + 10, kHeight / 2)[1];
-    EXPECT_NEAR(open, FrameSettings{}.ambient * (0.6f + 0.04f), 1e-4f);
+    EXPECT_NEAR(open, dark.settings().ambient * (0.6f + 0.04f), 1e-4f);
     // Lit: the metallic half reflects its base colour in the highlight, the dielectric half grey.
     const float* metal = naive.hdr.at(kWidth / 2 - 10, kHeight / 2);
     EXPECT_GT(metal[0], 1.5f * metal[2]);

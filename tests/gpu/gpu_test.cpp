@@ -134,7 +134,14 @@ FrameSettings smallFrame(const Scene& scene, const CameraPose& pose, int width, 
     s.camera = cameraFromPose(pose);
     fitClipPlanes(s.camera, scene.bounds);
     s.animation = verticalDrift(lightVolume(scene.bounds), 0.0f);
+    setLightModel(s, s.lightModel);
     return s;
+}
+
+void setLightModel(FrameSettings& s, const LightModel& model) {
+    s.lightModel = model;
+    s.exposure = unitlessLightExposure(model.brdf);
+    s.ambient = FrameSettings{}.ambient / unitlessLightExposure(model.brdf);
 }
 
 ReferenceFrame readReference(const FrameRenderer& renderer) { return {renderer.readHdr(), renderer.readLdr()}; }

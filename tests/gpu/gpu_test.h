@@ -67,6 +67,10 @@ inline constexpr ClusteredVariant kClusteredVariants[] = {{MethodKind::ForwardPl
 FrameSettings smallFrame(const Scene& scene, int width, int height);
 // The same from `pose`, the lights still (a scene built in a test has no suggested view).
 FrameSettings smallFrame(const Scene& scene, const CameraPose& pose, int width, int height);
+// `model`, with the exposure and ambient render gives a built-in scene under its BRDF
+// (app/frame_options.h, defaultLook): the seeds' unitless lights look as they did under
+// Blinn-Phong, so the 8-bit tolerances and the golden images keep their meaning.
+void setLightModel(FrameSettings& s, const LightModel& model);
 
 // The reference frame a renderer's output is held to.
 struct ReferenceFrame {

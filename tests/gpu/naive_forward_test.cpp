@@ -56,7 +56,7 @@ TEST_F(NaiveForwardTest, MatchesTheFormulaOnThePlane) {
                 continue;
             }
             SurfaceSample sample{p, {0, 1, 0}, glm::vec3(m.baseColorFactor), m.metallic, m.roughness};
-            const glm::vec3 expected = shadeReference(sample, s.camera.eye, lights, s.ambient);
+            const glm::vec3 expected = shadeReference(sample, s.camera.eye, lights, s.ambient, s.specular, s.lightModel);
             for (int c = 0; c < 3; ++c)
                 EXPECT_NEAR(gpu[c], expected[c], 2e-3f + 2e-3f * expected[c]) << "pixel " << x << "," << y << " channel " << c;
             ++checked;

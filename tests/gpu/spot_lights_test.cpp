@@ -89,7 +89,7 @@ TEST_P(MixedLights, SpotsPointsAndASunMatchNaiveForEveryAssignmentAndCullTest) {
     sun.color = {0.3f, 0.28f, 0.25f};
     t.lights.insert(t.lights.begin() + 17, sun);
     FrameSettings s = smallFrame(t.scene, 160, 90);
-    s.lightModel = model;
+    setLightModel(s, model);
     s.animation = verticalDrift(lightVolume(t.scene.bounds), 0.5f);  // spots turn as they drift
     struct Variant {
         AssignMode assign;
@@ -111,7 +111,7 @@ TEST_P(MixedLights, SpotsPointsAndASunMatchNaiveForEveryAssignmentAndCullTest) {
 }
 
 INSTANTIATE_TEST_SUITE_P(LightModels, MixedLights,
-                         ::testing::Values(LightModel{}, LightModel{Brdf::Ggx, Falloff::Gltf, 0.3f},
+                         ::testing::Values(LightModel{Brdf::BlinnPhong}, LightModel{Brdf::Ggx, Falloff::Gltf, 0.3f},
                                            LightModel{Brdf::Ggx, Falloff::Stochastic, 0.3f}),
                          [](const auto& info) {
                              return testNameOf(std::string(brdfName(info.param.brdf)) + "_" + falloffName(info.param.falloff));

@@ -69,6 +69,41 @@ TEST(ViewCommand, MsaaScreenshotMatchesRender) {
     EXPECT_LE(compareImages(view, render).maxAbs, kMaxAbs) << "images in " << writeFailureImages("msaa", view, render);
 }
 
+// The panel's BRDF and cut-off controls, set by --panel as if changed there before frame 1: the
+// lights are rebuilt by render's rule (radii from E) and the exposure and ambient follow the BRDF,
+// so the frame is the one `render` gives with the same flags.
+TEST(ViewCommand, PanelBrdfAndCutoffGiveTheFrameRenderGives) {
+    REQUIRE_XVFB();
+    const std::string dir = testOutputDir().string();
+    const std::string common = "--scene boxes --detail 0.5 --size 160x90 --lights 64 --seed 3 --method deferred --frames 12";
+    struct Case {
+        const char* name;
+        std::string start, panel, render;
+    };
+    for (const Case& c : {Case{"stochastic", "", "brdf=blinn-phong,cutoff=stochastic,light-cutoff=0.05",
+                               "--brdf blinn-phong --cutoff stochastic --light-cutoff 0.05"},
+                          Case{"back", "--brdf blinn-phong --light-cutoff 0.1", "brdf=ggx,cutoff=radius", ""}}) {
+        std::string output;
+        ASSERT_EQ(runViewUnderXvfb(common + " " + c.start + " --panel " + c.panel + " --screenshot " + dir + "/panel_" + c.name + ".png",
+                                   output),
+                  0)
+            << output;
+        ASSERT_EQ(runManylights("render " + common + " " + c.render + " --out " + dir + "/render_" + c.name + ".png", output), 0)
+            << output;
+        ASSERT_EQ(runManylights("render " + common + " " + c.start + " --out " + dir + "/start_" + c.name + ".png", output), 0)
+            << output;
+        const RgbaImage view = readPng(dir + "/panel_" + std::string(c.name) + ".png");
+        const RgbaImage render = readPng(dir + "/render_" + std::string(c.name) + ".png");
+        EXPECT_LE(compareImages(view, render).maxAbs, kMaxAbs) << c.name << ": images in " << writeFailureImages(c.name, view, render);
+        // The controls changed the frame: it is not the one the view started with.
+        EXPECT_GT(compareImages(view, readPng(dir + "/start_" + std::string(c.name) + ".png")).maxAbs, 8.0 / 255.0) << c.name;
+    }
+    // What the panel refuses, it refuses in one line: no cluster holds untruncated lights.
+    std::string refused;
+    EXPECT_NE(runViewUnderXvfb(common + " --panel cutoff=none", refused), 0);
+    EXPECT_NE(refused.find("--cutoff none: needs --method naive"), std::string::npos) << refused;
+}
+
 TEST(ViewCommand, MsaaForAOneSampleMethodIsRefusedBeforeAWindowOpens) {
     std::string output;
     EXPECT_NE(runManylights("view --scene boxes --detail 0.25 --method visibility --msaa 4", output, "",

@@ -41,10 +41,14 @@ TEST(ShadeReference, LightBehindTheSurfaceAddsNothing) {
     EXPECT_EQ(c, glm::vec3(0.0f));
 }
 
+// The seeds' Blinn-Phong mapping (--brdf blinn-phong); glTF's BRDF is held to appendix B in
+// light_model_test.cpp.
+constexpr LightModel kBlinnPhong{Brdf::BlinnPhong};
+
 TEST(ShadeReference, DiffuseDirectlyAbove) {
     SurfaceSample s{{0, 0, 0}, {0, 1, 0}, {0.5f, 0.5f, 0.5f}, 0.0f, 1.0f};
     const std::vector<Light> above{{{0.0f, 1.0f, 0.0f}, 10.0f, {2, 2, 2}}};
-    const glm::vec3 c = shadeReference(s, {0, 5, 0}, above, 0.0f);
+    const glm::vec3 c = shadeReference(s, {0, 5, 0}, above, 0.0f, true, kBlinnPhong);
     // W(1, 10) = (1 - 1e-4)^2 / 2; N.L = 1; roughness 1: shininess 1, N.H = 1, so the specular
     // term is f0 (0.04) times (1 + 8) / 8.
     const float expected = 2.0f * (1.0f - 1e-4f) * (1.0f - 1e-4f) / 2.0f * (0.5f + 0.04f * 9.0f / 8.0f);
@@ -55,8 +59,8 @@ TEST(ShadeReference, DiffuseDirectlyAbove) {
 TEST(ShadeReference, SpecularOffLeavesOnlyTheDiffuseTerm) {
     SurfaceSample shiny{{0, 0, 0}, {0, 1, 0}, {0.5f, 0.5f, 0.5f}, 0.0f, 0.3f};
     const std::vector<Light> above{{{0.0f, 1.0f, 0.0f}, 10.0f, {2, 2, 2}}};
-    const glm::vec3 on = shadeReference(shiny, {0, 5, 0}, above, 0.03f, true);
-    const glm::vec3 off = shadeReference(shiny, {0, 5, 0}, above, 0.03f, false);
+    const glm::vec3 on = shadeReference(shiny, {0, 5, 0}, above, 0.03f, true, kBlinnPhong);
+    const glm::vec3 off = shadeReference(shiny, {0, 5, 0}, above, 0.03f, false, kBlinnPhong);
     const ShadingTerms t = shadingTerms(shiny.baseColor, shiny.metallic, shiny.roughness);
     const float w = lightFalloff(1.0f, 10.0f);
     EXPECT_NEAR(off.r, 0.03f * (0.5f + 0.04f) + 2.0f * w * 0.5f, 1e-6f);
