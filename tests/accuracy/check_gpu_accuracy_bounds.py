@@ -18,6 +18,7 @@ FIELDS = ["file", "camera", "method", "gbuffer", "max_err_255", "share_over_1_25
           "holds_contract", "note"]
 CAUSE_LINK = "docs/accuracy-and-stability.md#g-buffer-precision-on-glossy-normal-mapped-surfaces"
 BOUNDS = {
+    "brdf": "blinn-phong",
     "causes": {"gbuffer-precision": CAUSE_LINK},
     "exceptions": [{"file": "Glossy", "methods": ["deferred"], "layouts": ["packed"], "cause": "gbuffer-precision",
                     "max_share_over_1_255": 0.01, "max_err_255": 20}],
