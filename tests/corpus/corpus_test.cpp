@@ -86,8 +86,8 @@ std::vector<NamedCamera> corpusCameras(const Scene& scene) {
 // from its own fixed-point set-up (vertices snapped to 1/256 pixel). The two differ in the last
 // bits, which moves a handful of pixels where a lookup sits on a step: MultiUVTest's TEXCOORD_1
 // texture, read at a mip level a hair apart (max 3/255), and ToyCar's glossy paint, whose
-// highlights (shininess up to 8192) flip single pixels (max 24/255). Measured at 160x90 on
-// llvmpipe: 16 and 6 pixels of 14,400.
+// sharp highlights flip single pixels (max 26/255). Measured at 160x90 on
+// llvmpipe under GGX: 16 and 5 pixels of 14,400.
 struct ContractException {
     const char* fileStem;
     MethodKind method;
