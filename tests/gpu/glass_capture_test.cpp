@@ -24,12 +24,8 @@ constexpr int kWidth = 160, kHeight = 90;
 const CameraPose kBackView{{0.0f, 0.0f, -4.0f}, {0.0f, 0.0f, 0.0f}, 60.0f};
 const std::vector<Light> kFrontAndBackLights{{{0.3f, 0.2f, 3.0f}, 12.0f, {3.0f, 3.0f, 3.0f}}, {{-0.3f, 0.1f, -3.0f}, 12.0f, {3.0f, 3.0f, 3.0f}}};
 
-int colourMaterial(Gltf& g, glm::vec4 colour, const char* alphaMode) {
-    return g.add("materials", {{"pbrMetallicRoughness",
-                                {{"baseColorFactor", {colour.r, colour.g, colour.b, colour.a}}, {"metallicFactor", 0.0}, {"roughnessFactor", 0.5}}},
-                               {"alphaMode", alphaMode},
-                               {"doubleSided", true}});
-}
+// Every surface here is seen from both sides: double-sided, roughness 0.5.
+int paneMaterial(Gltf& g, glm::vec4 colour, const char* alphaMode) { return colourMaterial(g, colour, alphaMode, true, 0.5f); }
 
 // A quad from four corners, its normal from the first three (counter-clockwise seen from the front).
 json quad(Gltf& g, const std::array<glm::vec3, 4>& c, int material, const json& extra = json::object()) {
@@ -78,8 +74,8 @@ class GlassCapture : public GpuTest {};
 TEST_F(GlassCapture, IntersectingPanesBlendInDepthOrderOnBothSidesOfTheCrossing) {
     const auto scene = [&](const char* alphaMode, bool red, bool blue) {
         Gltf g;
-        const int redPane = colourMaterial(g, {0.9f, 0.05f, 0.05f, 0.5f}, alphaMode);
-        const int bluePane = colourMaterial(g, {0.05f, 0.05f, 0.9f, 0.5f}, alphaMode);
+        const int redPane = paneMaterial(g, {0.9f, 0.05f, 0.05f, 0.5f}, alphaMode);
+        const int bluePane = paneMaterial(g, {0.05f, 0.05f, 0.9f, 0.5f}, alphaMode);
         std::vector<json> prims;
         if (red) prims.push_back(quad(g, {{{-2, -1, 0}, {2, -1, 0}, {2, 1, 0}, {-2, 1, 0}}}, redPane));
         if (blue) prims.push_back(quad(g, {{{-2, -1.2f, -1}, {2, -1.2f, 1}, {2, 1.2f, 1}, {-2, 1.2f, -1}}}, bluePane));
@@ -110,11 +106,11 @@ TEST_F(GlassCapture, IntersectingPanesBlendInDepthOrderOnBothSidesOfTheCrossing)
 // whose per-range order is right for parallel panes); every method holds to naive.
 TEST_F(GlassCapture, ManyLayersBlendAsTheForwardPassBlendsThem) {
     Gltf g;
-    std::vector<json> prims{square(g, -2.0f, 4.0f, colourMaterial(g, {0.6f, 0.6f, 0.6f, 1.0f}, "OPAQUE"))};
+    std::vector<json> prims{square(g, -2.0f, 4.0f, paneMaterial(g, {0.6f, 0.6f, 0.6f, 1.0f}, "OPAQUE"))};
     for (int i = 0; i < 12; ++i) {
         const float z = -1.5f + 0.25f * float((i * 5) % 12);
         const glm::vec4 colour(0.2f + 0.06f * float(i), 0.9f - 0.07f * float(i), 0.3f + 0.05f * float(i % 4), 0.2f + 0.05f * float(i % 5));
-        prims.push_back(square(g, z, 1.0f + 0.05f * float(i), colourMaterial(g, colour, "BLEND")));
+        prims.push_back(square(g, z, 1.0f + 0.05f * float(i), paneMaterial(g, colour, "BLEND")));
     }
     const Scene scene = writeAndLoad(g, prims, "twelve_layers");
     FrameRenderer renderer(scene, kFrontAndBackLights, frame(scene, kFrontView));
@@ -170,10 +166,10 @@ TEST_F(GlassCapture, TexturedNormalMappedPaneMatchesTheForwardPass) {
                         {"TANGENT", g.accessor(g.view(tangents.data(), tangents.size() * 4), kFloat, 4, "VEC4")},
                         {"TEXCOORD_1", g.vec2({{0, 1}, {1, 1}, {1, 0}, {0, 0}})}};
     const Scene scene = writeAndLoad(g,
-                                     {square(g, -2.0f, 4.0f, colourMaterial(g, {0.5f, 0.6f, 0.7f, 1.0f}, "OPAQUE")),
+                                     {square(g, -2.0f, 4.0f, paneMaterial(g, {0.5f, 0.6f, 0.7f, 1.0f}, "OPAQUE")),
                                       square(g, 0.5f, 1.3f, textured, extra),
                                       quad(g, {{{-0.5f, -1.5f, -0.5f}, {2.5f, -1.5f, -0.5f}, {2.5f, 1.5f, -0.5f}, {-0.5f, 1.5f, -0.5f}}},
-                                           colourMaterial(g, {0.2f, 0.8f, 0.4f, 0.4f}, "BLEND"))},
+                                           paneMaterial(g, {0.2f, 0.8f, 0.4f, 0.4f}, "BLEND"))},
                                      "textured_glass");
     const std::uint32_t needed = ML_FEATURE_NORMAL_MAP | ML_FEATURE_TEXTURE_TRANSFORM | ML_FEATURE_UV1 | ML_FEATURE_VERTEX_COLOR | ML_FEATURE_BLEND;
     ASSERT_EQ(materialFeatures(scene) & needed, needed);
@@ -202,7 +198,7 @@ TEST_F(GlassCapture, TexturedNormalMappedPaneMatchesTheForwardPass) {
 // GPU's storage-buffer limit, lowered here) is refused in one line that names the numbers.
 TEST_F(GlassCapture, AFrameWhoseFragmentsDoNotFitIsRefusedInOneLine) {
     Gltf g;
-    const Scene scene = writeAndLoad(g, {square(g, 0.0f, 1.5f, colourMaterial(g, {0.9f, 0.1f, 0.1f, 0.5f}, "BLEND"))}, "one_pane");
+    const Scene scene = writeAndLoad(g, {square(g, 0.0f, 1.5f, paneMaterial(g, {0.9f, 0.1f, 0.1f, 0.5f}, "BLEND"))}, "one_pane");
     for (MethodKind kind : {MethodKind::Naive, MethodKind::Visibility}) {
         FrameSettings s = frame(scene, kFrontView, kind);
         s.method.transparentCaptureBudget = 1024;
@@ -223,7 +219,7 @@ TEST_F(GlassCapture, AFrameWhoseFragmentsDoNotFitIsRefusedInOneLine) {
 // A scene with no BLEND material builds no capture and no shading program in any method.
 TEST_F(GlassCapture, ASceneWithoutBlendBuildsNoneOfIt) {
     Gltf g;
-    const Scene scene = writeAndLoad(g, {square(g, 0.0f, 1.5f, colourMaterial(g, {0.9f, 0.1f, 0.1f, 1.0f}, "OPAQUE"))}, "opaque_only");
+    const Scene scene = writeAndLoad(g, {square(g, 0.0f, 1.5f, paneMaterial(g, {0.9f, 0.1f, 0.1f, 1.0f}, "OPAQUE"))}, "opaque_only");
     ASSERT_EQ(materialFeatures(scene) & ML_FEATURE_BLEND, 0u);
     FrameRenderer renderer(scene, kFrontAndBackLights, frame(scene, kFrontView));
     for (MethodKind kind : {MethodKind::Naive, MethodKind::ForwardPlus, MethodKind::Deferred, MethodKind::Visibility}) {

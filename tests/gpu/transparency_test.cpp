@@ -24,14 +24,6 @@ constexpr int kWidth = 160, kHeight = 90;
 const CameraPose kBackView{{0.0f, 0.0f, -4.0f}, {0.0f, 0.0f, 0.0f}, 60.0f};
 const std::vector<Light> kOneLight{{{0.3f, 0.2f, 3.0f}, 12.0f, {3.0f, 3.0f, 3.0f}}};
 
-// A metallic-roughness material of one colour; BLEND where alpha < 1 is asked for.
-int colourMaterial(Gltf& g, glm::vec4 colour, const char* alphaMode, bool doubleSided = false) {
-    return g.add("materials", {{"pbrMetallicRoughness",
-                                {{"baseColorFactor", {colour.r, colour.g, colour.b, colour.a}}, {"metallicFactor", 0.0}, {"roughnessFactor", 0.4}}},
-                               {"alphaMode", alphaMode},
-                               {"doubleSided", doubleSided}});
-}
-
 // A rectangle facing +z at `center`, half extents (hx, hy).
 json rect(Gltf& g, glm::vec3 center, float hx, float hy, int material) {
     const glm::vec3 c = center;

@@ -257,6 +257,14 @@ inline glm::vec3 faceNormal(const Scene& s, std::size_t t) {
     return glm::normalize(glm::cross(b - a, c - a));
 }
 
+// A metallic-roughness material of one colour, non-metallic; BLEND where alpha < 1 is asked for.
+inline int colourMaterial(Gltf& g, glm::vec4 colour, const char* alphaMode, bool doubleSided = false, float roughness = 0.4f) {
+    return g.add("materials", {{"pbrMetallicRoughness",
+                                {{"baseColorFactor", {colour.r, colour.g, colour.b, colour.a}}, {"metallicFactor", 0.0}, {"roughnessFactor", roughness}}},
+                               {"alphaMode", alphaMode},
+                               {"doubleSided", doubleSided}});
+}
+
 // The camera the GPU tests of generated files look at their squares from (down -z at z = 4).
 inline const CameraPose kFrontView{{0.0f, 0.0f, 4.0f}, {0.0f, 0.0f, 0.0f}, 60.0f};
 
