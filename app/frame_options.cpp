@@ -95,8 +95,8 @@ void addFrameOptions(CLI::App& cmd, FrameOptions& o) {
     grid->add_option("--cull", o.cull, "light-vs-cluster test: aabb (sphere vs the cluster's AABB), sphere (vs its frustum planes), cone (seed 001's spherical-sliced cone)")->capture_default_str();
     grid->add_flag("--normal-cones", o.normalCones, "deferred and visibility: lists per (cluster, view-space normal bin), skipping lights behind every surface of a cluster (Olsson et al. 2012)");
     grid->add_option("--resolve", o.resolve, "deferred lighting pass: compute or fragment")->capture_default_str();
-    grid->add_option("--gbuffer", o.gbuffer, "G-buffer of deferred and visibility: standard (3 x RGBA16F, 24 B/px), packed "
-                     "(1 x RGBA32UI, 16 B/px), two-component (normal z rebuilt, loses its sign: the documented failure case); "
+    grid->add_option("--gbuffer", o.gbuffer, "G-buffer of deferred and visibility: exact (3 x RGBA32F with the position, 48 B/px: "
+                     "holds the accuracy contract), standard (3 x RGBA16F, 24 B/px), packed (1 x RGBA32UI, 16 B/px), two-component (normal z rebuilt, loses its sign: the documented failure case); "
                      "naive and forward-plus have none and ignore it")->capture_default_str();
     grid->add_option("--prepass", o.prepass, "forward-plus depth pre-pass: on, or off (one LESS pass shading overdraw; "
                      "fitted slicing falls back to log, --active-only is refused)")->capture_default_str();

@@ -34,7 +34,7 @@ struct FrameOptions {
     std::string cull = "aabb";
     bool normalCones = false;
     std::string resolve = "compute";
-    std::string gbuffer = "packed";
+    std::string gbuffer = "exact";
     std::string prepass = "on";
     long long msaa = 1;        // --msaa: naive and forward-plus
     long long supersample = 1; // --supersample (render only): drawn at K times the size, box-filtered down

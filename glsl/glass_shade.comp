@@ -18,7 +18,6 @@
 #include "include/lights.glsl"
 #include "include/shading.glsl"
 #include "include/sun_lights.glsl"
-#define ML_EXPLICIT_GRADIENTS 1
 #include "include/material.glsl"
 #include "include/triangle_surface.glsl"
 #if ML_GLASS_ALL_LIGHTS

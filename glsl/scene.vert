@@ -9,23 +9,17 @@
 
 layout(location = 0) in vec3 a_position;
 layout(location = 1) in vec3 a_normal;
-layout(location = 2) in vec2 a_uv;
 // Per draw range (instance divisor 1, baseInstance = range): material, first triangle. Direct and
 // multi-draw-indirect submission both feed it (renderer/scene/scene_gpu.h).
 layout(location = 3) in uvec2 a_drawParams;
 
 layout(location = 0) out vec3 v_worldPos;
 layout(location = 1) out vec3 v_worldNormal;
-layout(location = 2) out vec2 v_uv;
 layout(location = 3) flat out uint v_materialIndex;
 layout(location = 4) flat out uint v_firstTriangle;
 #if ML_HAS(ML_FEATURE_NORMAL_MAP)
 layout(location = 4) in vec4 a_tangent;
 layout(location = 5) out vec4 v_tangent;
-#endif
-#if ML_HAS(ML_FEATURE_UV1)
-layout(location = 5) in vec2 a_uv1;
-layout(location = 6) out vec2 v_uv1;
 #endif
 #if ML_HAS(ML_FEATURE_VERTEX_COLOR)
 layout(location = 6) in vec4 a_color;
@@ -37,14 +31,10 @@ invariant gl_Position;
 void main() {
     v_worldPos = a_position;
     v_worldNormal = a_normal;
-    v_uv = a_uv;
     v_materialIndex = a_drawParams.x;
     v_firstTriangle = a_drawParams.y;
 #if ML_HAS(ML_FEATURE_NORMAL_MAP)
     v_tangent = a_tangent;
-#endif
-#if ML_HAS(ML_FEATURE_UV1)
-    v_uv1 = a_uv1;
 #endif
 #if ML_HAS(ML_FEATURE_VERTEX_COLOR)
     v_color = a_color;

@@ -11,7 +11,6 @@
 #include "include/bindings.h"
 #include "include/frame_uniforms.glsl"
 #include "include/shading.glsl"
-#define ML_EXPLICIT_GRADIENTS 1
 #include "include/material.glsl"
 #include "include/gbuffer_layout.glsl"
 #include "include/triangle_surface.glsl"
@@ -20,6 +19,10 @@ layout(local_size_x = ML_SCREEN_TILE, local_size_y = ML_SCREEN_TILE) in;
 layout(binding = ML_TEX_VISIBILITY) uniform usampler2D u_visibility;
 #if ML_GBUFFER_FLOAT_TARGETS == 0
 layout(binding = ML_IMG_GBUFFER0, rgba32ui) uniform writeonly uimage2D u_gPackedOut;
+#elif ML_GBUFFER_FORMAT == ML_GBUFFER_EXACT
+layout(binding = ML_IMG_GBUFFER0, rgba32f) uniform writeonly image2D u_gTarget0Out;
+layout(binding = ML_IMG_GBUFFER1, rgba32f) uniform writeonly image2D u_gTarget1Out;
+layout(binding = ML_IMG_GBUFFER2, rgba32f) uniform writeonly image2D u_gTarget2Out;
 #else
 layout(binding = ML_IMG_GBUFFER0, rgba16f) uniform writeonly image2D u_gTarget0Out;
 layout(binding = ML_IMG_GBUFFER1, rgba16f) uniform writeonly image2D u_gTarget1Out;

@@ -13,6 +13,7 @@ int glslFormat(GBufferFormat format) {
     case GBufferFormat::Standard: return ML_GBUFFER_STANDARD;
     case GBufferFormat::Packed: return ML_GBUFFER_PACKED;
     case GBufferFormat::TwoComponent: return ML_GBUFFER_TWO_COMPONENT;
+    case GBufferFormat::Exact: return ML_GBUFFER_EXACT;
     }
     return ML_GBUFFER_STANDARD;
 }
@@ -45,6 +46,12 @@ const gl::Framebuffer& GBuffer::prepare(const FrameTargets& frame) {
             targets_.emplace_back("gbuffer.normal-xy-specular", GL_RGBA16F, width_, height_);
             targets_.emplace_back("gbuffer.albedo", GL_RGBA16F, width_, height_);
             fbo_ = gl::Framebuffer("gbuffer", {&targets_[0], &targets_[1]}, &frame.depth());
+            break;
+        case GBufferFormat::Exact:
+            targets_.emplace_back("gbuffer.distance-normal-occlusion", GL_RGBA32F, width_, height_);
+            targets_.emplace_back("gbuffer.albedo", GL_RGBA32F, width_, height_);
+            targets_.emplace_back("gbuffer.specular-emissive", GL_RGBA32F, width_, height_);
+            fbo_ = gl::Framebuffer("gbuffer", {&targets_[0], &targets_[1], &targets_[2]}, &frame.depth());
             break;
         }
     }

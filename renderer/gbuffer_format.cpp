@@ -14,6 +14,7 @@ constexpr FormatEntry kFormats[] = {
     {GBufferFormat::Standard, "standard", 24},          // 3 x RGBA16F
     {GBufferFormat::Packed, "packed", 16},              // 1 x RGBA32UI
     {GBufferFormat::TwoComponent, "two-component", 16}, // 2 x RGBA16F
+    {GBufferFormat::Exact, "exact", 48},                // 3 x RGBA32F
 };
 
 const FormatEntry& entry(GBufferFormat format) {
@@ -35,7 +36,7 @@ const std::vector<std::string>& gbufferFormatNames() {
 GBufferFormat parseGBufferFormat(const std::string& text) {
     for (const FormatEntry& e : kFormats)
         if (text == e.name) return e.format;
-    throw std::invalid_argument("--gbuffer '" + text + "': expected standard, packed or two-component");
+    throw std::invalid_argument("--gbuffer '" + text + "': expected exact, standard, packed or two-component");
 }
 
 const char* gbufferFormatName(GBufferFormat format) { return entry(format).name; }

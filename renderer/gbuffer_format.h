@@ -12,6 +12,7 @@ enum class GBufferFormat {
     Standard,      // three RGBA16F targets: normal, albedo, specular parameters
     Packed,        // one RGBA32UI target: octahedral normal, albedo RGBA8, specular 2 x half
     TwoComponent,  // two RGBA16F targets; the normal's z is rebuilt as +sqrt: the documented failure case
+    Exact,         // three RGBA32F targets: ray distance, normal, material as shaded; lossless
 };
 
 const std::vector<std::string>& gbufferFormatNames();

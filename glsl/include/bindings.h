@@ -215,6 +215,7 @@
 #define ML_GBUFFER_STANDARD 0       // normal, albedo, specular: three RGBA16F targets (24 B per pixel)
 #define ML_GBUFFER_PACKED 1         // one RGBA32UI: octahedral normal 2x16, albedo RGBA8, specular 2x16F (16 B)
 #define ML_GBUFFER_TWO_COMPONENT 2  // normal xy + specular, albedo: two RGBA16F (16 B); z = +sqrt(1-x^2-y^2)
+#define ML_GBUFFER_EXACT 3          // ray distance, octahedral normal, material: three RGBA32F (48 B), lossless
 
 // Bloom (--bloom): compute tile, and the separable Gaussian's taps each side at half resolution.
 #define ML_BLOOM_TILE 8

@@ -17,8 +17,14 @@ bool resolveSurface(ivec2 p, out ResolvedPixel px) {
     vec2 ndc = (vec2(p) + 0.5) * u_viewport.zw * 2.0 - 1.0;
     vec4 viewPos = u_invProj * vec4(ndc, depth * 2.0 - 1.0, 1.0);
     viewPos /= viewPos.w;
+    GBufferTexel texel = fetchGBuffer(p);
+#if ML_GBUFFER_STORES_POSITION
+    // Shaded at the stored point; the cluster still comes from depth, as the grid was built.
+    px.surface.position = u_cameraPos.xyz + mat3(u_invView) * gbufferViewPosition(texel, vec2(p) + 0.5);
+#else
     px.surface.position = u_cameraPos.xyz + mat3(u_invView) * viewPos.xyz;
-    decodeGBuffer(fetchGBuffer(p), px.surface);
+#endif
+    decodeGBuffer(texel, px.surface);
     px.viewDir = normalize(u_cameraPos.xyz - px.surface.position);
     px.viewDepth = -viewPos.z;
     px.cluster = clusterForFragment(vec2(p) + 0.5, px.viewDepth);

@@ -1,8 +1,8 @@
 // The --gbuffer layouts (gbuffer_format.h; numbered in bindings.h), chosen by the define
 // ML_GBUFFER_FORMAT. Encoded by the G-buffer pass and the visibility resolve, decoded by the
-// deferred lighting; position is never stored (it comes back from depth). What is stored is the
+// deferred lighting; position comes back from depth but in the exact layout. What is stored is the
 // material at the point (shading.glsl's SurfacePoint before deriveShadingTerms). Needs
-// shading.glsl.
+// shading.glsl and frame_uniforms.glsl.
 //
 //   standard       target 0 RGBA16F normal xyz, occlusion   target 1 RGBA16F base colour, metallic
 //                  target 2 RGBA16F roughness, emissive rgb                                             24 B
@@ -13,13 +13,20 @@
 //                  occlusion; no room for emissive (the renderer warns where a scene has some).        16 B
 //                  z is rebuilt as +sqrt(1 - x^2 - y^2): every normal with z < 0 (world space) is mirrored
 //                  to z > 0, so surfaces facing -z are lit as if they faced +z. The documented failure case.
+//   exact          target 0 RGBA32F distance along the pixel's ray, octahedral normal (2 x fp32),
+//                  occlusion   target 1 RGBA32F base colour, metallic   target 2 RGBA32F roughness,
+//                  emissive rgb. Every value as the shading computed it, and the position with
+//                  it (no depth-buffer rounding): the lighting sees what naive's fragment sees.     48 B
+// The lossy layouts lose what a bright many-light sum makes visible on glossy, normal-mapped
+// content (docs/accuracy-and-stability.md#g-buffer-precision-on-glossy-normal-mapped-surfaces).
 #include "include/material_features.glsl"
+#include "include/pixel_ray.glsl"
 
 #ifndef ML_GBUFFER_FORMAT
 #define ML_GBUFFER_FORMAT ML_GBUFFER_STANDARD
 #endif
 
-#if ML_GBUFFER_FORMAT == ML_GBUFFER_STANDARD
+#if ML_GBUFFER_FORMAT == ML_GBUFFER_STANDARD || ML_GBUFFER_FORMAT == ML_GBUFFER_EXACT
 #define ML_GBUFFER_FLOAT_TARGETS 3
 #elif ML_GBUFFER_FORMAT == ML_GBUFFER_TWO_COMPONENT
 #define ML_GBUFFER_FLOAT_TARGETS 2
@@ -76,11 +83,21 @@ vec3 unpackRgb9e5(uint v) {
     return m * exp2(float(v >> 27u) - 15.0 - 9.0);
 }
 
+// Does the layout hold the position (else it comes back from depth)?
+#define ML_GBUFFER_STORES_POSITION (ML_GBUFFER_FORMAT == ML_GBUFFER_EXACT)
+
+// The stored point in view space, on the ray through window position windowPos.
+vec3 gbufferViewPosition(GBufferTexel t, vec2 windowPos) { return pixelRayView(windowPos) * t.target[0].x; }
+
 GBufferTexel encodeGBuffer(SurfacePoint s) {
     GBufferTexel t;
     t.target[0] = t.target[1] = t.target[2] = vec4(0.0);
     t.bits = uvec4(0u);
-#if ML_GBUFFER_FORMAT == ML_GBUFFER_STANDARD
+#if ML_GBUFFER_FORMAT == ML_GBUFFER_EXACT
+    t.target[0] = vec4(length(s.position - u_cameraPos.xyz), octEncode(s.normal), s.occlusion);
+    t.target[1] = vec4(s.baseColor, s.metallic);
+    t.target[2] = vec4(s.roughness, s.emissive);
+#elif ML_GBUFFER_FORMAT == ML_GBUFFER_STANDARD
     t.target[0] = vec4(s.normal, s.occlusion);
     t.target[1] = vec4(s.baseColor, s.metallic);
     t.target[2] = vec4(s.roughness, s.emissive);
@@ -100,7 +117,14 @@ GBufferTexel encodeGBuffer(SurfacePoint s) {
 // Fills the surface's normal (unit length) and material, then its shading terms.
 void decodeGBuffer(GBufferTexel t, inout SurfacePoint s) {
     s.emissive = vec3(0.0);
-#if ML_GBUFFER_FORMAT == ML_GBUFFER_STANDARD
+#if ML_GBUFFER_FORMAT == ML_GBUFFER_EXACT
+    s.normal = octDecode(t.target[0].yz);
+    s.occlusion = t.target[0].w;
+    s.baseColor = t.target[1].rgb;
+    s.metallic = t.target[1].w;
+    s.roughness = t.target[2].x;
+    s.emissive = t.target[2].yzw;
+#elif ML_GBUFFER_FORMAT == ML_GBUFFER_STANDARD
     s.normal = normalize(t.target[0].xyz);  // 16-bit storage: restore unit length
     s.occlusion = t.target[0].w;
     s.baseColor = t.target[1].rgb;

@@ -21,21 +21,18 @@ layout(binding = ML_TEX_NORMAL) uniform sampler2D u_normalTexture;
 layout(binding = ML_TEX_OCCLUSION) uniform sampler2D u_occlusionTexture;
 layout(binding = ML_TEX_EMISSIVE) uniform sampler2D u_emissiveTexture;
 
-// Where a point samples its material: its UV sets and, with ML_EXPLICIT_GRADIENTS, their
-// screen-space gradients. The visibility resolve has no rasterizer's 2x2 quads and builds them
-// itself. Raster passes take them from the varyings too (coarse, as the resolve does) where a
-// texture's UV depends on the material (a second UV set, a transform): a helper invocation's
-// read of the material buffer is not dependable (llvmpipe returns zeros there), so implicit
-// derivatives of a UV computed from it are garbage on triangle edges.
-#if !defined(ML_EXPLICIT_GRADIENTS) && (ML_HAS(ML_FEATURE_UV1) || ML_HAS(ML_FEATURE_TEXTURE_TRANSFORM))
-#define ML_EXPLICIT_GRADIENTS 1
-#endif
+// Where a point samples its material: its UV sets and their screen-space gradients, which every
+// texture read takes explicitly (textureGrad). The visibility resolve has no rasterizer's 2x2
+// quads and builds them itself; raster passes take them from the varyings, coarse as the
+// resolve builds them, once, in uniform control flow before any discard (scene_fragment.glsl).
+// Implicit derivatives would differ three ways: a GPU may take them fine where the resolve takes
+// them coarse; after an alpha test's discard a quad's discarded lanes are undefined (on an H100
+// the normal map of Sponza's foliage then picks another mip level at leaf edges); and a helper
+// invocation's read of the material buffer is not dependable (llvmpipe returns zeros there).
 struct MaterialCoords {
     vec2 uv[2];
-#ifdef ML_EXPLICIT_GRADIENTS
     vec2 dx[2];
     vec2 dy[2];
-#endif
 };
 
 bool hasTexture(Material m, uint slot) { return (m.info.x & (1u << slot)) != 0u; }
@@ -51,16 +48,12 @@ vec4 sampleMaterialTexture(sampler2D tex, Material m, uint slot, MaterialCoords 
     mat2 linear = mat2(m.uvTransforms[2u * slot].xy, m.uvTransforms[2u * slot].zw);
     uv = linear * uv + m.uvTransforms[2u * slot + 1u].xy;
 #endif
-#ifdef ML_EXPLICIT_GRADIENTS
     vec2 dx = c.dx[set], dy = c.dy[set];
 #if ML_HAS(ML_FEATURE_TEXTURE_TRANSFORM)
     dx = linear * dx;
     dy = linear * dy;
 #endif
     return textureGrad(tex, uv, dx, dy);
-#else
-    return texture(tex, uv);
-#endif
 }
 
 // Base colour and coverage: factor x texture x COLOR_0.

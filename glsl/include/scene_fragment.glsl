@@ -3,6 +3,8 @@
 // renderer/scene/raster_program.h) fragments outside the material's coverage are discarded; opaque
 // ranges are drawn without it and keep early depth testing. With ML_TRANSPARENT (the transparent
 // pass, renderer/passes/transparent_pass.h) the shading passes write the surface's alpha for blending.
+#include "include/triangle_surface.glsl"
+
 #ifndef ML_ALPHA_TEST
 #define ML_ALPHA_TEST 0
 #endif
@@ -12,35 +14,24 @@
 
 layout(location = 0) in vec3 v_worldPos;
 layout(location = 1) in vec3 v_worldNormal;
-layout(location = 2) in vec2 v_uv;
 layout(location = 3) flat in uint v_materialIndex;
 layout(location = 4) flat in uint v_firstTriangle;  // the draw range's first triangle
 #if ML_HAS(ML_FEATURE_NORMAL_MAP)
 layout(location = 5) in vec4 v_tangent;
 #endif
-#if ML_HAS(ML_FEATURE_UV1)
-layout(location = 6) in vec2 v_uv1;
-#endif
 #if ML_HAS(ML_FEATURE_VERTEX_COLOR)
 layout(location = 7) in vec4 v_color;
 #endif
 
-MaterialCoords fragmentCoords() {
+// The fragment's texture coordinates, rebuilt from its triangle as the visibility resolve does
+// (triangle_surface.glsl says why); a material without textures reads none.
+MaterialCoords fragmentCoords(Material m) {
     MaterialCoords c;
-    c.uv[0] = v_uv;
-#if ML_HAS(ML_FEATURE_UV1)
-    c.uv[1] = v_uv1;
-#else
-    c.uv[1] = v_uv;
-#endif
-#ifdef ML_EXPLICIT_GRADIENTS
-    // Called in uniform control flow, before any discard.
-    c.dx[0] = dFdxCoarse(c.uv[0]);
-    c.dy[0] = dFdyCoarse(c.uv[0]);
-    c.dx[1] = dFdxCoarse(c.uv[1]);
-    c.dy[1] = dFdyCoarse(c.uv[1]);
-#endif
-    return c;
+    if (m.info.x == 0u) {
+        c.uv[0] = c.uv[1] = c.dx[0] = c.dx[1] = c.dy[0] = c.dy[1] = vec2(0.0);
+        return c;
+    }
+    return triangleCoords(triangleHit(v_firstTriangle + uint(gl_PrimitiveID), ivec2(gl_FragCoord.xy), true));
 }
 
 vec4 fragmentVertexColor() {
@@ -63,14 +54,14 @@ vec4 fragmentTangent() {
 void alphaTestFragment() {
 #if ML_ALPHA_TEST
     Material m = materials[v_materialIndex];
-    if (!alphaCovered(m, materialBaseColor(m, fragmentCoords(), fragmentVertexColor()).a)) discard;
+    if (!alphaCovered(m, materialBaseColor(m, fragmentCoords(m), fragmentVertexColor()).a)) discard;
 #endif
 }
 
 // The surface, and its coverage alpha (what a transparent pass blends with).
 SurfacePoint fragmentSurfaceAndAlpha(out float alpha) {
     Material m = materials[v_materialIndex];
-    MaterialCoords c = fragmentCoords();
+    MaterialCoords c = fragmentCoords(m);
     vec4 base = materialBaseColor(m, c, fragmentVertexColor());
 #if ML_ALPHA_TEST
     if (!alphaCovered(m, base.a)) discard;

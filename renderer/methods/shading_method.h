@@ -42,9 +42,9 @@ struct MethodSettings {
     MethodKind kind = MethodKind::Naive;
     ClusteringSettings clustering;
     Resolve resolve = Resolve::Compute;
-    // Deferred and visibility. Packed by default: on an H200 it makes deferred's G-buffer pass
-    // 3.7 ms instead of 5.3 at 2560x1440, within the accuracy contract (64 dB against naive).
-    GBufferFormat gbuffer = GBufferFormat::Packed;
+    // Deferred and visibility. Exact by default: the only layout that holds the accuracy contract
+    // on real content (docs/accuracy-and-stability.md#g-buffer-precision-on-glossy-normal-mapped-surfaces).
+    GBufferFormat gbuffer = GBufferFormat::Exact;
     bool prepass = true;  // forward-plus: depth pre-pass, then shading with EQUAL (off: one LESS pass)
     // --msaa: samples per pixel of the colour and depth the method draws into (1, 2, 4, 8).
     int msaa = 1;

@@ -73,7 +73,7 @@ void VisibilityBuffer::render(const FrameContext& ctx) {
     {
         auto pass = ctx.timer.pass("visibility.resolve");
         resolveProgram_.use();
-        ctx.scene.bindGeometryForCompute();
+        ctx.scene.bindGeometryStorage();
         gbuffer_.bindForWriting();
         glBindTextureUnit(ML_TEX_VISIBILITY, triangleIds_.id());
         const GLuint groupsX = gl::groupsFor(ctx.targets.width(), ML_SCREEN_TILE);

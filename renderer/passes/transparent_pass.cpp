@@ -76,7 +76,7 @@ void TransparentPass::renderCaptured(const FrameContext& ctx, const ClusteredLig
     const bool storesColors = sets.size() > 1;
     capture_->fill(ctx);
     auto pass = ctx.timer.pass(timerName_);
-    ctx.scene.bindGeometryForCompute();
+    ctx.scene.bindGeometryStorage();
     ctx.lights.bindForReading();
     if (lists) lists->bindForShading();
     capture_->bindForShading();

@@ -272,7 +272,7 @@ bool SceneGpu::hasAlphaTestedRanges() const {
 
 void SceneGpu::bindDrawState() const {
     glBindVertexArray(vao_.id());
-    materials_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_MATERIALS);
+    bindGeometryStorage();  // fragments rebuild their texture coordinates from their triangle
 }
 
 void SceneGpu::draw(const RasterProgram& program, Ranges which) const {
@@ -363,7 +363,7 @@ void SceneGpu::unbindSamplers() const {
     for (GLuint unit : kSlotUnits) glBindSampler(unit, 0);
 }
 
-void SceneGpu::bindGeometryForCompute() const {
+void SceneGpu::bindGeometryStorage() const {
     vertices_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_VERTICES);
     indices_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_INDICES);
     triangleMaterials_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_TRIANGLE_MATERIALS);

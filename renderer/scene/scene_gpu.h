@@ -87,10 +87,10 @@ public:
     std::size_t drawCallsPerPass() const;
     std::size_t drawRangeCount() const { return draws_.size(); }
 
-    // For compute passes that rebuild surfaces from triangle ids: vertices, indices, the
-    // material of every triangle, the materials, and the optional vertex streams, at their
-    // ML_SSBO_* points.
-    void bindGeometryForCompute() const;
+    // For passes that rebuild surfaces from triangle ids (the visibility resolve, the glass, and
+    // every raster pass's texture coordinates): vertices, indices, the material of every
+    // triangle, the materials, and the optional vertex streams, at their ML_SSBO_* points.
+    void bindGeometryStorage() const;
     // Texture sets: the distinct (texture, sampler) tuples over a material's slots. Materials name
     // theirs (GpuMaterial::info.z); -1 is "no texture". Binds a set's textures at ML_TEX_*.
     std::size_t textureSetCount() const { return textureSets_.size(); }

@@ -17,8 +17,6 @@
 #include <string>
 #include <vector>
 
-#include "renderer/camera/camera.h"
-#include "scenes/scene_library.h"
 #include "tests/corpus/corpus.h"
 #include "tests/gpu/gpu_test.h"
 
@@ -30,55 +28,6 @@ namespace fs = std::filesystem;
 // The share of pixels allowed over 1/255: design.md's 99.99 %.
 constexpr double kMaxBadShare = 1e-4;
 constexpr int kWidth = 160, kHeight = 90;
-
-std::vector<std::string> corpusFiles() {
-    std::vector<std::string> files;
-    std::error_code error;
-    if (!fs::is_directory(ML_CORPUS_DIR, error)) return files;
-    for (const auto& entry : fs::recursive_directory_iterator(ML_CORPUS_DIR, error)) {
-        const std::string ext = entry.path().extension().string();
-        if (entry.is_regular_file() && (ext == ".gltf" || ext == ".glb"))
-            files.push_back(fs::relative(entry.path(), ML_CORPUS_DIR).string());
-    }
-    std::sort(files.begin(), files.end());
-    return files;
-}
-
-Scene loadCorpusScene(const std::string& relative) {
-    std::vector<std::string> warnings;
-    return loadScene(SceneRequest{corpusPath(relative), 1.0f}, warnings);
-}
-
-// The scene file's own lights and 48 generated ones (seed 5, the default radius): enough that
-// the clustered methods' lists differ per cluster, few enough for naive on llvmpipe.
-std::vector<Light> ownAndGeneratedLights(const Scene& scene) {
-    std::vector<Light> lights = lightsFromScene(scene);
-    LightGeneration gen;
-    gen.count = 48;
-    gen.seed = 5;
-    gen.radius = defaultLightRadius(scene.bounds);
-    const std::vector<Light> generated = generateLights(lightVolume(scene.bounds), gen);
-    lights.insert(lights.end(), generated.begin(), generated.end());
-    return lights;
-}
-
-// The suggested view (as `--camera` left out gives), then each camera of the file (gltf:N).
-struct NamedCamera {
-    std::string name;
-    Camera camera;
-};
-std::vector<NamedCamera> corpusCameras(const Scene& scene) {
-    std::vector<NamedCamera> cameras;
-    Camera suggested = cameraFromPose(scene.suggestedView.value_or(framingView(scene.bounds)));
-    fitClipPlanes(suggested, scene.bounds);
-    cameras.push_back({"default", suggested});
-    for (std::size_t i = 0; i < scene.cameras.size(); ++i) {
-        Camera c = cameraFromSceneCamera(scene.cameras[i]);
-        fitClipPlanes(c, scene.bounds, scene.cameras[i]);
-        cameras.push_back({"gltf:" + std::to_string(i), c});
-    }
-    return cameras;
-}
 
 // Where a method cannot hold the contract on a file, for a known cause, the bound it is held to
 // instead (docs/accuracy-and-stability.md, "Exceptions"). The visibility resolve rebuilds each pixel's UVs, normal and
@@ -107,7 +56,7 @@ class CorpusFile : public GpuTest, public ::testing::WithParamInterface<std::str
 
 TEST_P(CorpusFile, EveryMethodHoldsTheContractAgainstNaive) {
     const Scene scene = loadCorpusScene(GetParam());
-    const std::vector<Light> lights = ownAndGeneratedLights(scene);
+    const std::vector<Light> lights = ownAndGeneratedLights(scene, 48);
     const std::uint32_t frame = 30;
     for (const NamedCamera& camera : corpusCameras(scene)) {
         FrameSettings s;
