@@ -91,8 +91,8 @@ constexpr const char* kOptions = R"json({
   "run": {"warmup": 1, "timed_frames": 3, "frame": 60, "naive_budget": 3e8},
   "defaults": {"scene": "atrium", "size": "640x360", "lights": 1024, "assign": "exact"},
   "experiments": [
-    {"name": "gbuffer", "description": "standard, packed and two-component G-buffers",
-     "method": ["deferred", "visibility"], "gbuffer": ["standard", "packed", "two-component"]},
+    {"name": "gbuffer", "description": "exact, standard, packed and two-component G-buffers",
+     "method": ["deferred", "visibility"], "gbuffer": ["exact", "standard", "packed", "two-component"]},
     {"name": "specular", "description": "the BRDF's specular term on and off, every method against naive in the same mode",
      "method": ["naive", "forward-plus", "deferred", "visibility"], "specular": ["on", "off"]},
     {"name": "prepass", "description": "Forward+ with and without the depth pre-pass (log slicing for both: fitted needs the pre-pass)",

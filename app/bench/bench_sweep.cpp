@@ -188,7 +188,7 @@ const std::vector<AxisDef>& axisDefs() {
              p.gbuffered = kind == MethodKind::Deferred || kind == MethodKind::Visibility;
              p.forwardPlus = kind == MethodKind::ForwardPlus;
          }},
-        {{"gbuffer", "--gbuffer", "G-buffer of deferred and visibility: standard, packed, two-component"}, ValueKind::Text,
+        {{"gbuffer", "--gbuffer", "G-buffer of deferred and visibility: exact, standard, packed, two-component"}, ValueKind::Text,
          Applies::GBuffered,
          [](BenchPoint& p, const json& v) {
              (void)parseGBufferFormat(asText(v));
