@@ -111,16 +111,29 @@ MaterialCoords triangleCoords(TriangleHit h) {
     return c;
 }
 
+// The vertex colour (COLOR_0) at the hit; white where the scene has none.
+vec4 triangleVertexColor(TriangleHit h) {
+#if ML_HAS(ML_FEATURE_VERTEX_COLOR)
+    return h.w.x * vertexColor[h.i0] + h.w.y * vertexColor[h.i1] + h.w.z * vertexColor[h.i2];
+#else
+    return vec4(1.0);
+#endif
+}
+
+// The base colour's alpha of `triangle` (material m) at pixel p, in [0, 1]: what an alpha test
+// compares with the cut-off (triangleSurface gives the same).
+float triangleAlpha(uint triangle, Material m, ivec2 p) {
+    TriangleHit h = triangleHit(triangle, p, m.info.z != 0u);
+    return clamp(materialBaseColor(m, triangleCoords(h), triangleVertexColor(h)).a, 0.0, 1.0);
+}
+
 // The surface of `triangle` (material m) seen through pixel p, and its base colour's alpha.
 // The position is the vertices' interpolation at the pixel centre, as a rasterizer's varying.
 SurfacePoint triangleSurface(uint triangle, Material m, ivec2 p, out float alpha) {
     TriangleHit h = triangleHit(triangle, p, m.info.z != 0u);
     vec3 w = h.w;
     MaterialCoords c = triangleCoords(h);
-    vec4 color = vec4(1.0);
-#if ML_HAS(ML_FEATURE_VERTEX_COLOR)
-    color = w.x * vertexColor[h.i0] + w.y * vertexColor[h.i1] + w.z * vertexColor[h.i2];
-#endif
+    vec4 color = triangleVertexColor(h);
     vec4 tangent = vec4(1.0, 0.0, 0.0, 1.0);
 #if ML_HAS(ML_FEATURE_NORMAL_MAP)
     tangent = w.x * vertexTangent[h.i0] + w.y * vertexTangent[h.i1] + w.z * vertexTangent[h.i2];
