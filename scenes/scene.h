@@ -86,7 +86,8 @@ struct Material {
     AlphaMode alphaMode = AlphaMode::Opaque;
     float alphaCutoff = 0.5f;             // MASK: drawn where alpha >= cutoff (BLEND ignores it, as glTF asks)
     // glTF's doubleSided: false (the default) lets raster passes cull back faces, true draws
-    // both sides (lit with the normal as given, as glTF asks for no flipping here).
+    // both sides, lit with the normal as given (glTF asks for it reversed on the back face; not
+    // modelled yet, alike in every method).
     bool doubleSided = false;
 
     bool alphaTested() const { return alphaMode == AlphaMode::Mask; }

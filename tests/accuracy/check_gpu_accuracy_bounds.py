@@ -104,6 +104,11 @@ def main():
         expect("an unexplained cause: refused", check(good_rows(), unexplained), 1,
                "cause 'UNEXPLAINED' is not one of the causes the file explains")
 
+        excusing_default = json.loads(json.dumps(BOUNDS))
+        excusing_default["exceptions"][0]["layouts"] = ["packed", "exact"]
+        expect("a bound on a method's default layout: refused", check(good_rows(), excusing_default), 1,
+               "excuses a method's default settings (layout 'exact' or none)")
+
         rows = with_row(0, share_over_1_255="0.02", max_err_255="30") + [row("Other", "visibility", "packed", "0.001", "4")]
         rc, out = check(rows, BOUNDS, "--propose-bounds")
         with open(os.path.join(work, "bounds.json")) as f:
