@@ -93,12 +93,12 @@ GBufferTexel encodeGBuffer(SurfacePoint s) {
     GBufferTexel t;
     t.target[0] = t.target[1] = t.target[2] = vec4(0.0);
     t.bits = uvec4(0u);
+#if ML_GBUFFER_FORMAT == ML_GBUFFER_EXACT || ML_GBUFFER_FORMAT == ML_GBUFFER_STANDARD
 #if ML_GBUFFER_FORMAT == ML_GBUFFER_EXACT
     t.target[0] = vec4(length(s.position - u_cameraPos.xyz), octEncode(s.normal), s.occlusion);
-    t.target[1] = vec4(s.baseColor, s.metallic);
-    t.target[2] = vec4(s.roughness, s.emissive);
-#elif ML_GBUFFER_FORMAT == ML_GBUFFER_STANDARD
+#else
     t.target[0] = vec4(s.normal, s.occlusion);
+#endif
     t.target[1] = vec4(s.baseColor, s.metallic);
     t.target[2] = vec4(s.roughness, s.emissive);
 #elif ML_GBUFFER_FORMAT == ML_GBUFFER_PACKED
@@ -117,15 +117,12 @@ GBufferTexel encodeGBuffer(SurfacePoint s) {
 // Fills the surface's normal (unit length) and material, then its shading terms.
 void decodeGBuffer(GBufferTexel t, inout SurfacePoint s) {
     s.emissive = vec3(0.0);
+#if ML_GBUFFER_FORMAT == ML_GBUFFER_EXACT || ML_GBUFFER_FORMAT == ML_GBUFFER_STANDARD
 #if ML_GBUFFER_FORMAT == ML_GBUFFER_EXACT
     s.normal = octDecode(t.target[0].yz);
-    s.occlusion = t.target[0].w;
-    s.baseColor = t.target[1].rgb;
-    s.metallic = t.target[1].w;
-    s.roughness = t.target[2].x;
-    s.emissive = t.target[2].yzw;
-#elif ML_GBUFFER_FORMAT == ML_GBUFFER_STANDARD
+#else
     s.normal = normalize(t.target[0].xyz);  // 16-bit storage: restore unit length
+#endif
     s.occlusion = t.target[0].w;
     s.baseColor = t.target[1].rgb;
     s.metallic = t.target[1].w;

@@ -1,6 +1,7 @@
-// --gbuffer standard|packed|two-component: packed holds the accuracy contract (against the
-// standard layout and against naive); two-component is the documented failure case, shown on
-// surfaces whose stored (world-space) normal has z < 0.
+// --gbuffer exact|standard|packed|two-component: exact (the default) loses nothing naive's
+// shading sees, so deferred and the visibility buffer shade naive's surface; packed holds the
+// accuracy contract at this size (against the standard layout and against naive); two-component
+// is the documented failure case, shown on surfaces whose stored (world-space) normal has z < 0.
 #include <gtest/gtest.h>
 
 #include "gpu_test.h"
@@ -45,6 +46,40 @@ TEST_P(PackedGBuffer, MatchesStandardAndNaive) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, PackedGBuffer, ::testing::Values("atrium", "boxes"),
+                         [](const auto& info) { return testNameOf(info.param); });
+
+class ExactGBuffer : public GpuTest, public ::testing::WithParamInterface<const char*> {};
+
+// The exact layout stores the surface as shaded and its position along the pixel's ray: its
+// float output is far closer to naive's than the lossy layouts' (their error is what breaks the
+// contract at full size, tests/fullsize), and deferred and the visibility buffer, which shade
+// the same rebuilt surface (glsl/include/triangle_surface.glsl), agree with each other as closely.
+TEST_P(ExactGBuffer, ShadesNaivesSurfaceWhereThePackedLayoutDoesNot) {
+    const TestScene t = testScene(GetParam(), 1024, 5, 0.5f);
+    FrameSettings s = smallFrame(t.scene, 160, 90);
+    FrameRenderer renderer(t.scene, t.lights, s);
+    const ReferenceFrame naive = renderReference(renderer, 45);
+    const std::string scene = GetParam();
+    for (MethodKind kind : {MethodKind::Deferred, MethodKind::Visibility}) {
+        renderer.setMethod(withGBuffer(kind, GBufferFormat::Packed));
+        renderer.render(45);
+        const double packed = compareImages(renderer.readHdr(), naive.hdr).psnrDb;
+        renderer.setMethod(withGBuffer(kind, GBufferFormat::Exact));
+        renderer.render(45);
+        const double exact = compareImages(renderer.readHdr(), naive.hdr).psnrDb;
+        std::printf("%s %s against naive: exact %.1f dB, packed %.1f dB\n", scene.c_str(), methodName(kind).c_str(), exact, packed);
+        EXPECT_GE(exact, packed + 10.0) << methodName(kind);
+        expectWithinContract(renderer, naive, scene + " exact " + methodName(kind) + " vs naive");
+    }
+    renderer.setMethod(withGBuffer(MethodKind::Deferred, GBufferFormat::Exact));
+    renderer.render(45);
+    const FloatImage deferred = renderer.readHdr();
+    renderer.setMethod(withGBuffer(MethodKind::Visibility, GBufferFormat::Exact));
+    renderer.render(45);
+    EXPECT_GE(compareImages(renderer.readHdr(), deferred).psnrDb, 80.0) << "deferred against visibility, both exact";
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, ExactGBuffer, ::testing::Values("atrium", "boxes"),
                          [](const auto& info) { return testNameOf(info.param); });
 
 class GBufferLayouts : public GpuTest {};
@@ -104,11 +139,12 @@ TEST_F(GBufferLayouts, BytesOfEveryLayoutFollowTheFormat) {
     const TestScene t = testScene("boxes", 4, 1);
     FrameSettings s = smallFrame(t.scene, 64, 48);
     FrameRenderer renderer(t.scene, t.lights, s);
-    for (GBufferFormat f : {GBufferFormat::Standard, GBufferFormat::Packed, GBufferFormat::TwoComponent}) {
+    for (GBufferFormat f : {GBufferFormat::Exact, GBufferFormat::Standard, GBufferFormat::Packed, GBufferFormat::TwoComponent}) {
         renderer.setMethod(withGBuffer(MethodKind::Deferred, f));
         renderer.render(0);
         EXPECT_EQ(renderer.method().extraTargetBytes(), 64u * 48u * gbufferBytesPerPixel(f)) << gbufferFormatName(f);
     }
+    EXPECT_EQ(gbufferBytesPerPixel(GBufferFormat::Exact), 48u);
     EXPECT_EQ(gbufferBytesPerPixel(GBufferFormat::Standard), 24u);
     EXPECT_EQ(gbufferBytesPerPixel(GBufferFormat::Packed), 16u);
     EXPECT_EQ(gbufferBytesPerPixel(GBufferFormat::TwoComponent), 16u);
