@@ -19,15 +19,11 @@ layout(local_size_x = ML_SCREEN_TILE, local_size_y = ML_SCREEN_TILE) in;
 layout(binding = ML_TEX_VISIBILITY) uniform usampler2D u_visibility;
 #if ML_GBUFFER_FLOAT_TARGETS == 0
 layout(binding = ML_IMG_GBUFFER0, rgba32ui) uniform writeonly uimage2D u_gPackedOut;
-#elif ML_GBUFFER_FORMAT == ML_GBUFFER_EXACT
-layout(binding = ML_IMG_GBUFFER0, rgba32f) uniform writeonly image2D u_gTarget0Out;
-layout(binding = ML_IMG_GBUFFER1, rgba32f) uniform writeonly image2D u_gTarget1Out;
-layout(binding = ML_IMG_GBUFFER2, rgba32f) uniform writeonly image2D u_gTarget2Out;
 #else
-layout(binding = ML_IMG_GBUFFER0, rgba16f) uniform writeonly image2D u_gTarget0Out;
-layout(binding = ML_IMG_GBUFFER1, rgba16f) uniform writeonly image2D u_gTarget1Out;
+layout(binding = ML_IMG_GBUFFER0, ML_GBUFFER_FLOAT_IMAGE) uniform writeonly image2D u_gTarget0Out;
+layout(binding = ML_IMG_GBUFFER1, ML_GBUFFER_FLOAT_IMAGE) uniform writeonly image2D u_gTarget1Out;
 #if ML_GBUFFER_FLOAT_TARGETS == 3
-layout(binding = ML_IMG_GBUFFER2, rgba16f) uniform writeonly image2D u_gTarget2Out;
+layout(binding = ML_IMG_GBUFFER2, ML_GBUFFER_FLOAT_IMAGE) uniform writeonly image2D u_gTarget2Out;
 #endif
 #endif
 uniform int u_textureSet;

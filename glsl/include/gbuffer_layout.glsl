@@ -33,6 +33,12 @@
 #else
 #define ML_GBUFFER_FLOAT_TARGETS 0
 #endif
+// The float targets' image format, for passes that write them from compute.
+#if ML_GBUFFER_FORMAT == ML_GBUFFER_EXACT
+#define ML_GBUFFER_FLOAT_IMAGE rgba32f
+#else
+#define ML_GBUFFER_FLOAT_IMAGE rgba16f
+#endif
 
 // One pixel of the G-buffer as its targets hold it: float targets, or the one packed target.
 struct GBufferTexel {

@@ -22,13 +22,11 @@ layout(binding = ML_TEX_OCCLUSION) uniform sampler2D u_occlusionTexture;
 layout(binding = ML_TEX_EMISSIVE) uniform sampler2D u_emissiveTexture;
 
 // Where a point samples its material: its UV sets and their screen-space gradients, which every
-// texture read takes explicitly (textureGrad). The visibility resolve has no rasterizer's 2x2
-// quads and builds them itself; raster passes take them from the varyings, coarse as the
-// resolve builds them, once, in uniform control flow before any discard (scene_fragment.glsl).
-// Implicit derivatives would differ three ways: a GPU may take them fine where the resolve takes
-// them coarse; after an alpha test's discard a quad's discarded lanes are undefined (on an H100
-// the normal map of Sponza's foliage then picks another mip level at leaf edges); and a helper
-// invocation's read of the material buffer is not dependable (llvmpipe returns zeros there).
+// texture read takes explicitly (textureGrad). Every pass, raster or compute, builds them from the
+// point's triangle as a rasterizer's coarse 2x2-quad derivatives would take them
+// (triangle_surface.glsl), so every method samples at the same coordinates and level to the last
+// bit; implicit derivatives would differ between a rasterizer's quads and the compute passes, and
+// after an alpha test's discard a quad's discarded lanes are undefined.
 struct MaterialCoords {
     vec2 uv[2];
     vec2 dx[2];

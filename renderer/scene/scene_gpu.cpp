@@ -48,17 +48,6 @@ gl::Handle<gl::SamplerDeleter> makeSampler(const std::string& name, const Sample
     return gl::Handle<gl::SamplerDeleter>(id);
 }
 
-// An optional per-vertex stream at attribute `location` from vertex buffer binding `binding`.
-template <typename T>
-gl::Buffer vertexStream(GLuint vao, const char* label, const std::vector<T>& data, GLuint binding, GLuint location, GLint size) {
-    gl::Buffer buffer = gl::Buffer::fromSpan<T>(label, data, 0);
-    glVertexArrayVertexBuffer(vao, binding, buffer.id(), 0, sizeof(T));
-    glEnableVertexArrayAttrib(vao, location);
-    glVertexArrayAttribFormat(vao, location, size, GL_FLOAT, GL_FALSE, 0);
-    glVertexArrayAttribBinding(vao, location, binding);
-    return buffer;
-}
-
 }  // namespace
 
 SceneGpu::SceneGpu(const Scene& scene, TriangleOrder order) : features_(ml::materialFeatures(scene)) {
@@ -68,24 +57,22 @@ SceneGpu::SceneGpu(const Scene& scene, TriangleOrder order) : features_(ml::mate
     glCreateVertexArrays(1, &vao);
     vao_ = gl::Handle<gl::VertexArrayDeleter>(vao);
     gl::label(GL_VERTEX_ARRAY, vao, "scene.vao");
+    // Rasterization reads the position alone (scene.vert, location 0); everything else a
+    // fragment shades with it rebuilds from storage buffers (glsl/include/triangle_surface.glsl).
     glVertexArrayVertexBuffer(vao, 0, vertices_.id(), 0, sizeof(Vertex));
-    const GLuint offsets[3] = {offsetof(Vertex, position), offsetof(Vertex, normal), offsetof(Vertex, uv)};
-    const GLint sizes[3] = {3, 3, 2};
-    for (GLuint a = 0; a < 3; ++a) {
-        glEnableVertexArrayAttrib(vao, a);
-        glVertexArrayAttribFormat(vao, a, sizes[a], GL_FLOAT, GL_FALSE, offsets[a]);
-        glVertexArrayAttribBinding(vao, a, 0);
-    }
-    // The optional streams, only where the scene's features read them (scene.vert's locations 4-6).
+    glEnableVertexArrayAttrib(vao, 0);
+    glVertexArrayAttribFormat(vao, 0, 3, GL_FLOAT, GL_FALSE, offsetof(Vertex, position));
+    glVertexArrayAttribBinding(vao, 0, 0);
+    // The optional streams, only where the scene's features read them.
     const auto sized = [&](std::size_t n) { return n == scene.vertices.size(); };
     if ((features_ & ML_FEATURE_NORMAL_MAP) && sized(scene.tangents.size()))
-        tangents_ = vertexStream(vao, "scene.tangents", scene.tangents, 2, 4, 4);
+        tangents_ = gl::Buffer::fromSpan<glm::vec4>("scene.tangents", scene.tangents, 0);
     else
         features_ &= ~std::uint32_t(ML_FEATURE_NORMAL_MAP);
-    if ((features_ & ML_FEATURE_UV1) && sized(scene.uv1.size())) uv1_ = vertexStream(vao, "scene.uv1", scene.uv1, 3, 5, 2);
+    if ((features_ & ML_FEATURE_UV1) && sized(scene.uv1.size())) uv1_ = gl::Buffer::fromSpan<glm::vec2>("scene.uv1", scene.uv1, 0);
     else features_ &= ~std::uint32_t(ML_FEATURE_UV1);
     if ((features_ & ML_FEATURE_VERTEX_COLOR) && sized(scene.colors.size()))
-        colors_ = vertexStream(vao, "scene.colors", scene.colors, 4, 6, 4);
+        colors_ = gl::Buffer::fromSpan<glm::vec4>("scene.colors", scene.colors, 0);
     else
         features_ &= ~std::uint32_t(ML_FEATURE_VERTEX_COLOR);
 

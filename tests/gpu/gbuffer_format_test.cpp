@@ -55,27 +55,26 @@ class ExactGBuffer : public GpuTest, public ::testing::WithParamInterface<const 
 // contract at full size, tests/fullsize), and deferred and the visibility buffer, which shade
 // the same rebuilt surface (glsl/include/triangle_surface.glsl), agree with each other as closely.
 TEST_P(ExactGBuffer, ShadesNaivesSurfaceWhereThePackedLayoutDoesNot) {
-    const TestScene t = testScene(GetParam(), 1024, 5, 0.5f);
-    FrameSettings s = smallFrame(t.scene, 160, 90);
-    FrameRenderer renderer(t.scene, t.lights, s);
-    const ReferenceFrame naive = renderReference(renderer, 45);
+    NaiveReferenceScene run(GetParam(), 1024);
+    FrameRenderer& renderer = run.renderer;
+    const ReferenceFrame& naive = run.reference;
     const std::string scene = GetParam();
     for (MethodKind kind : {MethodKind::Deferred, MethodKind::Visibility}) {
         renderer.setMethod(withGBuffer(kind, GBufferFormat::Packed));
-        renderer.render(45);
+        renderer.render(run.frame);
         const double packed = compareImages(renderer.readHdr(), naive.hdr).psnrDb;
         renderer.setMethod(withGBuffer(kind, GBufferFormat::Exact));
-        renderer.render(45);
+        renderer.render(run.frame);
         const double exact = compareImages(renderer.readHdr(), naive.hdr).psnrDb;
         std::printf("%s %s against naive: exact %.1f dB, packed %.1f dB\n", scene.c_str(), methodName(kind).c_str(), exact, packed);
         EXPECT_GE(exact, packed + 10.0) << methodName(kind);
         expectWithinContract(renderer, naive, scene + " exact " + methodName(kind) + " vs naive");
     }
     renderer.setMethod(withGBuffer(MethodKind::Deferred, GBufferFormat::Exact));
-    renderer.render(45);
+    renderer.render(run.frame);
     const FloatImage deferred = renderer.readHdr();
     renderer.setMethod(withGBuffer(MethodKind::Visibility, GBufferFormat::Exact));
-    renderer.render(45);
+    renderer.render(run.frame);
     EXPECT_GE(compareImages(renderer.readHdr(), deferred).psnrDb, 80.0) << "deferred against visibility, both exact";
 }
 
