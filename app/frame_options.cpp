@@ -85,7 +85,7 @@ void addFrameOptions(CLI::App& cmd, FrameOptions& o) {
         return s;
     }())->capture_default_str();
     auto* grid = cmd.add_option_group("clustering", "cluster grid and light assignment (forward-plus, deferred)");
-    grid->add_option("--tiles-x", o.tilesX, "tiles across the screen; tiles down follow so tiles stay square")->capture_default_str();
+    grid->add_option("--tiles-x", o.tilesX, "tiles across the screen (its longer side); tiles down follow so tiles stay square")->capture_default_str();
     grid->add_option("--slices", o.slices, "depth slices")->capture_default_str();
     grid->add_option("--slicing", o.slicing, "linear, log (near to far plane), or fitted (log over the visible depth range)")->capture_default_str();
     grid->add_option("--workgroup", o.workgroup, "compute workgroup size of the light assignment")->capture_default_str();

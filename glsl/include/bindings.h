@@ -37,6 +37,7 @@
 #define ML_SSBO_LIGHT_VIEW 17      // exact assignment: each light's view-space centre and radius
 #define ML_SSBO_CANDIDATE_OFFSETS 18   // exact assignment: prefix sum of candidates per light
 #define ML_SSBO_DISPATCH 19        // exact assignment: indirect dispatch arguments of the test passes
+#define ML_SSBO_SORT_WORK 16       // list sort: the lists of two or more entries and their dispatches (after assignment)
 // The visibility resolve's tile lists (renderer/methods/visibility_buffer.h); free in that pass.
 #define ML_SSBO_RESOLVE_TILES 16       // per texture set slot, the screen tiles holding its pixels
 #define ML_SSBO_RESOLVE_DISPATCH 17    // per slot, the indirect dispatch of its resolve: tiles, 1, 1

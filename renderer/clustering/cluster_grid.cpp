@@ -36,10 +36,18 @@ void validateGridConfig(const ClusterGridConfig& c) {
 }
 
 ClusterGrid ClusterGrid::forViewport(const ClusterGridConfig& config, int width, int height) {
+    // Square tiles, config.tilesX of them across the longer side (the width of a landscape frame).
+    // Sized from the width alone, a portrait frame got 1-pixel tiles: 16 x 4096 clusters per slice
+    // at 16x4096, a 144 MiB grid and a 15 s list sort on llvmpipe.
     ClusterGrid g;
-    g.tilesX = std::max<std::uint32_t>(1, std::min<std::uint32_t>(config.tilesX, static_cast<std::uint32_t>(width)));
-    g.tileSizePx = static_cast<float>(width) / static_cast<float>(g.tilesX);
-    g.tilesY = std::max<std::uint32_t>(1, static_cast<std::uint32_t>(std::ceil(static_cast<float>(height) / g.tileSizePx - 1e-4f)));
+    const int longSide = std::max({width, height, 1});
+    const std::uint32_t across = std::max<std::uint32_t>(1, std::min<std::uint32_t>(config.tilesX, static_cast<std::uint32_t>(longSide)));
+    g.tileSizePx = static_cast<float>(longSide) / static_cast<float>(across);
+    const auto tilesFor = [&](int side) {
+        return std::max<std::uint32_t>(1, static_cast<std::uint32_t>(std::ceil(static_cast<float>(side) / g.tileSizePx - 1e-4f)));
+    };
+    g.tilesX = tilesFor(width);
+    g.tilesY = tilesFor(height);
     g.slices = config.slices;
     return g;
 }

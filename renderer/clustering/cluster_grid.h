@@ -1,7 +1,8 @@
 // The cluster grid: screen tiles times depth slices over the view frustum.
 //
-//   tiles: tilesX across (--tiles-x), tilesY derived so tiles stay square, whatever the
-//          resolution (seed 000: a grid sized in pixels changed with the screen);
+//   tiles: square, --tiles-x across the longer side (the width of a landscape frame), the other
+//          count derived, whatever the resolution (seed 000: a grid sized in pixels changed
+//          with the screen);
 //   slices: --slices along view depth z (positive distance in front of the camera), spaced
 //          linearly or logarithmically over [zNear, zFar]. "fitted" is log spacing over the
 //          depth range actually visible this frame (a depth reduction on the GPU), not the far

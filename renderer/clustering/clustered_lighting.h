@@ -99,7 +99,7 @@ private:
     std::uint64_t listEntries_ = 0;
     std::uint32_t maxGroupsX_ = 65535;
 
-    gl::Program depthRange_, bounds_, active_, normalBins_, ranges_, dispatch_, count_, fill_, capped_, sortShort_, sortLong_;
+    gl::Program depthRange_, bounds_, active_, normalBins_, ranges_, dispatch_, count_, fill_, capped_, sortClassify_, sortArgs_, sortShort_, sortLong_;
     PrefixSum scan_;
     RasterProgram transparentSamples_;  // only with transparency and --active-only or --normal-cones
 
@@ -117,6 +117,10 @@ private:
     gl::GrowableBuffer normalBinMasks_{"clusters.normal-bin-masks"};  // 4 B per cluster
     gl::GrowableBuffer normalCones_{"clusters.normal-cones"};         // 16 B per (cluster, bin) list
     gl::GrowableBuffer indices_{"clusters.light-indices"};
+    // The sort's work lists (glsl/sort_cluster_lists.comp): two indirect dispatches, two lengths,
+    // then up to two lists' worth of list indices.
+    static constexpr std::size_t kSortWorkLengths = 6, kSortWorkLists = 8;
+    gl::GrowableBuffer sortWork_{"clusters.sort-work"};
     std::unique_ptr<ZBinAssignment> zbin_;  // --assign zbin only
 };
 

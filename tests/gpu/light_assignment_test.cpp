@@ -177,7 +177,7 @@ INSTANTIATE_TEST_SUITE_P(Grids, LightAssignment,
 
 // The list sort on each of its paths: short lists by rank sort (up to ML_SORT_RANK_MAX) and
 // bitonic (up to ML_SORT_SHORT_MAX), long ones bitonic in shared memory (up to
-// ML_SORT_SHARED_CAPACITY) and in the buffer beyond; the edges included; exact and capped. Two clusters (tile rows),
+// ML_SORT_SHARED_CAPACITY) and in the buffer beyond; the edges included; exact and capped. Two clusters (tile columns),
 // lights covering both.
 struct LongListCase {
     AssignMode assign;
@@ -189,9 +189,9 @@ class LongLists : public GpuTest, public ::testing::WithParamInterface<LongListC
 TEST_P(LongLists, AreCompleteAndSorted) {
     const LongListCase c = GetParam();
     const TestScene t = testScene("boxes", c.lights, 5, 3.0f);
-    FrameSettings s = smallFrame(t.scene, 64, 96);
+    FrameSettings s = smallFrame(t.scene, 128, 64);
     s.method.kind = MethodKind::Deferred;
-    s.method.clustering.grid = ClusterGridConfig{1, 1, Slicing::Linear, 64};
+    s.method.clustering.grid = ClusterGridConfig{2, 1, Slicing::Linear, 64};
     s.method.clustering.assign = c.assign;
     s.method.clustering.maxPerCluster = c.lights + 7;  // capped: room for every light, odd size
     FrameRenderer renderer(t.scene, t.lights, s);
