@@ -5,6 +5,8 @@
 #include <bit>
 #include <stdexcept>
 
+#include <nlohmann/json.hpp>
+
 #include "glsl/include/bindings.h"
 #include "renderer/lights/light_buffers.h"
 #include "renderer/gbuffer.h"

@@ -29,7 +29,7 @@
 
 #include <memory>
 
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>  // dump(); its callers include json.hpp
 
 #include "renderer/clustering/cluster_grid.h"
 #include "renderer/clustering/cluster_statistics.h"
