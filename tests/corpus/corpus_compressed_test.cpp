@@ -62,16 +62,10 @@ double shareOver(const RgbaImage& a, const RgbaImage& b, int levels) {
     return double(over) / (double(a.width) * a.height);
 }
 
-// Naive's frame of `scene` from the twin's front view under the twin's lights (its own and 48
-// generated in its bounds: the compressed file's bounds may differ by a quantization step).
+// Naive's frame of `scene` from the twin's front view under the twin's lights (in the twin's
+// bounds: the compressed file's may differ by a quantization step).
 RgbaImage naiveFrame(const Scene& scene, const Scene& twin) {
-    std::vector<Light> lights = lightsFromScene(twin);
-    LightGeneration gen;
-    gen.count = 48;
-    gen.seed = 5;
-    gen.radius = defaultLightRadius(twin.bounds);
-    const std::vector<Light> generated = generateLights(lightVolume(twin.bounds), gen);
-    lights.insert(lights.end(), generated.begin(), generated.end());
+    const std::vector<Light> lights = ownAndGeneratedLights(twin);
     FrameSettings s = smallFrame(twin, framingView(twin.bounds), kWidth, kHeight);
     FrameRenderer renderer(scene, lights, s);
     renderer.render(0);

@@ -57,19 +57,6 @@ Scene loadCorpusScene(const std::string& relative) {
     return loadScene(SceneRequest{corpusPath(relative), 1.0f}, warnings);
 }
 
-// The scene file's own lights and 48 generated ones (seed 5, the default radius): enough that
-// the clustered methods' lists differ per cluster, few enough for naive on llvmpipe.
-std::vector<Light> ownAndGeneratedLights(const Scene& scene) {
-    std::vector<Light> lights = lightsFromScene(scene);
-    LightGeneration gen;
-    gen.count = 48;
-    gen.seed = 5;
-    gen.radius = defaultLightRadius(scene.bounds);
-    const std::vector<Light> generated = generateLights(lightVolume(scene.bounds), gen);
-    lights.insert(lights.end(), generated.begin(), generated.end());
-    return lights;
-}
-
 // The suggested view (as `--camera` left out gives), then each camera of the file (gltf:N).
 struct NamedCamera {
     std::string name;

@@ -249,6 +249,17 @@ inline void expectOneLineWarnings(const std::vector<std::string>& warnings, cons
     }
 }
 
+// Loads the file, which must warn exactly once: one line naming the file and holding each keyword.
+inline Scene loadWithOneWarning(const fs::path& file, std::initializer_list<const char*> keywords) {
+    std::vector<std::string> warnings;
+    Scene scene = load(file, warnings);
+    EXPECT_EQ(warnings.size(), 1u);
+    expectOneLineWarnings(warnings, file);
+    for (const char* keyword : keywords)
+        EXPECT_EQ(countContaining(warnings, keyword), 1u) << "no '" << keyword << "' in: " << (warnings.empty() ? "" : warnings[0]);
+    return scene;
+}
+
 inline void expectNear(const glm::vec3& actual, const glm::vec3& expected, float tolerance = 1e-5f) {
     EXPECT_NEAR(actual.x, expected.x, tolerance) << "y " << actual.y << " z " << actual.z;
     EXPECT_NEAR(actual.y, expected.y, tolerance) << "x " << actual.x << " z " << actual.z;
