@@ -1,14 +1,18 @@
 // KHR_draco_mesh_compression (https://github.com/KhronosGroup/glTF/tree/main/extensions/2.0/Khronos/KHR_draco_mesh_compression)
 // through Debian's libdraco 1.5.5. Draco returns its faults as a Status, never by throwing; what
-// it hands back is still checked (counts against the loader's limits, every attribute value
-// index against its attribute) before a byte of it is copied.
+// it hands back is still checked (counts against the loader's limits, every value's bytes
+// against its attribute's buffer) before a byte of it is copied. Values are read here rather
+// than through Draco's ConvertValue, which loads a stream's bool or misaligned data as typed
+// values (undefined behaviour a fuzzed stream reaches).
 #include "scenes/gltf_draco.h"
 
 #include <algorithm>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 #include <map>
 #include <memory>
+#include <type_traits>
 
 #include <draco/compression/decode.h>
 
@@ -40,18 +44,73 @@ Fault parseExtension(const tinygltf::Value& ext, DracoPrimitive& out) {
     return {};
 }
 
-// Every value of a Draco attribute, per point, as the accessor's component type.
+// A Draco component type the glTF accessors can hold: its size, whether it is an integer, and
+// its largest value (for normalized integers).
+struct DracoComponent {
+    std::size_t size = 0;
+    bool integer = false;
+    double max = 1.0;
+};
+DracoComponent dracoComponent(draco::DataType type) {
+    switch (type) {
+        case draco::DT_INT8: return {1, true, 127.0};
+        case draco::DT_UINT8: return {1, true, 255.0};
+        case draco::DT_INT16: return {2, true, 32767.0};
+        case draco::DT_UINT16: return {2, true, 65535.0};
+        case draco::DT_INT32: return {4, true, 2147483647.0};
+        case draco::DT_UINT32: return {4, true, 4294967295.0};
+        case draco::DT_FLOAT32: return {4, false, 1.0};
+        default: return {};  // 64-bit, bool: no glTF attribute holds them
+    }
+}
+
+double readComponent(const std::uint8_t* p, draco::DataType type) {
+    const auto as = [p](auto value) {
+        std::memcpy(&value, p, sizeof value);
+        return static_cast<double>(value);
+    };
+    switch (type) {
+        case draco::DT_INT8: return as(std::int8_t{});
+        case draco::DT_UINT8: return as(std::uint8_t{});
+        case draco::DT_INT16: return as(std::int16_t{});
+        case draco::DT_UINT16: return as(std::uint16_t{});
+        case draco::DT_INT32: return as(std::int32_t{});
+        case draco::DT_UINT32: return as(std::uint32_t{});
+        default: return as(float{});
+    }
+}
+
+// Every value of a Draco attribute, per point, as the accessor's component type: the same type
+// as a rule (copied as is), else integers widened or read as floats (divided by their largest
+// value where Draco marks them normalized). Each read is checked against Draco's buffer and
+// copied byte-wise, whatever the stream claimed about its layout.
 template <class T>
 Fault convertAttribute(const draco::PointAttribute& attribute, std::size_t points, std::size_t components,
                        std::vector<unsigned char>& out) {
-    out.resize(points * components * sizeof(T));
-    std::vector<T> value(components);
+    const DracoComponent from = dracoComponent(attribute.data_type());
+    if (from.size == 0) return "Draco data type " + std::to_string(attribute.data_type()) + " is not a glTF component type";
+    if (std::is_integral_v<T> && !from.integer) return "float values for an integer accessor";
+    const std::size_t stored = std::min<std::size_t>(attribute.num_components(), components);
+    const std::size_t bufferSize = attribute.buffer() ? attribute.buffer()->data_size() : 0;
+    const auto* data = attribute.buffer() ? attribute.buffer()->data() : nullptr;
+    out.assign(points * components * sizeof(T), 0);
     for (std::size_t p = 0; p < points; ++p) {
         const draco::AttributeValueIndex index = attribute.mapped_index(draco::PointIndex(static_cast<std::uint32_t>(p)));
-        if (index.value() >= attribute.size()) return "point " + std::to_string(p) + " maps past the attribute's values";
-        if (!attribute.ConvertValue<T>(index, static_cast<std::int8_t>(components), value.data()))
-            return "a value does not fit the accessor's component type";
-        std::memcpy(out.data() + p * components * sizeof(T), value.data(), components * sizeof(T));
+        const auto offset = static_cast<std::uint64_t>(attribute.byte_offset()) +
+                            static_cast<std::uint64_t>(attribute.byte_stride()) * index.value();
+        if (attribute.byte_offset() < 0 || attribute.byte_stride() < 0 || offset + stored * from.size > bufferSize)
+            return "point " + std::to_string(p) + " reads past the attribute's values";
+        for (std::size_t c = 0; c < stored; ++c) {
+            double value = readComponent(data + offset + c * from.size, attribute.data_type());
+            if constexpr (std::is_integral_v<T>) {
+                if (value < double(std::numeric_limits<T>::min()) || value > double(std::numeric_limits<T>::max()))
+                    return "a value does not fit the accessor's component type";
+            } else if (from.integer && attribute.normalized()) {
+                value /= from.max;
+            }
+            const T converted = static_cast<T>(value);
+            std::memcpy(out.data() + (p * components + c) * sizeof(T), &converted, sizeof(T));
+        }
     }
     return {};
 }

@@ -212,6 +212,38 @@ TEST(GltfDraco, UnknownAttributeIdIsOneLine) {
     expectFault(dracoGrid(draco, true).writeGltf(testDir(), "unknown_id"), {"meshes[0] primitive 0", "NORMAL", "no attribute with id 42"});
 }
 
+TEST(GltfDraco, AttributeOfATypeGltfDoesNotHaveIsOneLine) {
+    // Found by the fuzzer: a stream whose attribute holds bools (here mapped to TEXCOORD_0); Draco's
+    // own conversion would load bytes that are not 0 or 1 as bools.
+    draco::TriangleSoupMeshBuilder builder;
+    builder.Start(1);
+    const int position = builder.AddAttribute(draco::GeometryAttribute::POSITION, 3, draco::DT_FLOAT32);
+    const int flags = builder.AddAttribute(draco::GeometryAttribute::GENERIC, 2, draco::DT_BOOL);
+    const float corners[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+    const bool flag[2] = {true, false};
+    builder.SetAttributeValuesForFace(position, draco::FaceIndex(0), corners, corners + 3, corners + 6);
+    builder.SetAttributeValuesForFace(flags, draco::FaceIndex(0), flag, flag, flag);
+    const std::unique_ptr<draco::Mesh> mesh = builder.Finalize();
+    ASSERT_TRUE(mesh);
+    draco::Encoder encoder;
+    draco::EncoderBuffer buffer;
+    ASSERT_TRUE(encoder.EncodeMeshToBuffer(*mesh, &buffer).ok());
+    DracoStream draco;
+    draco.bytes.assign(buffer.data(), buffer.data() + buffer.size());
+    draco.points = mesh->num_points();
+    draco.faces = 1;
+    draco.attributes = {{"POSITION", mesh->attribute(position)->unique_id()}, {"TEXCOORD_0", mesh->attribute(flags)->unique_id()}};
+    Gltf g;
+    const int view = g.view(draco.bytes.data(), draco.bytes.size());
+    json prim = primitive({{"POSITION", g.accessor(-1, kFloat, draco.points, "VEC3")},
+                           {"TEXCOORD_0", g.accessor(-1, kFloat, draco.points, "VEC2")}},
+                          g.accessor(-1, kUShort, 3, "SCALAR"));
+    prim["extensions"] = {{"KHR_draco_mesh_compression", {{"bufferView", view}, {"attributes", draco.attributes}}}};
+    g.scene({g.node({{"mesh", g.mesh({prim})}})});
+    g.doc["extensionsUsed"] = g.doc["extensionsRequired"] = {"KHR_draco_mesh_compression"};
+    expectFault(g.writeGlb(testDir(), "bool_attribute"), {"meshes[0] primitive 0", "TEXCOORD_0", "not a glTF component type"});
+}
+
 TEST(GltfDraco, BufferViewOutOfRangeIsOneLine) {
     Gltf g = dracoGrid(encodeDraco(bentGrid(), 0), true);
     g.doc["meshes"][0]["primitives"][0]["extensions"]["KHR_draco_mesh_compression"]["bufferView"] = 9;
