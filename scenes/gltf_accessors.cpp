@@ -7,7 +7,6 @@
 #include "scenes/gltf_common.h"
 
 namespace ml::gltf {
-namespace {
 
 std::size_t componentBytes(int componentType) {
     switch (componentType) {
@@ -34,6 +33,8 @@ std::size_t componentCount(int type) {
         default: return 0;
     }
 }
+
+namespace {
 
 std::string typeName(int type) {
     switch (type) {
@@ -66,6 +67,10 @@ std::string componentTypeName(int componentType) {
 
 std::string describe(const tinygltf::Model& model, int accessor, const Use& use) {
     std::string s = "accessors[" + std::to_string(accessor) + "]";
+    if (use.instancedNode >= 0) {
+        const auto node = static_cast<std::size_t>(use.instancedNode);
+        return s + " (" + use.attribute + " of " + named("nodes", node, model.nodes[node].name) + " EXT_mesh_gpu_instancing)";
+    }
     const auto& mesh = model.meshes[static_cast<std::size_t>(use.mesh)];
     return s + " (" + use.attribute + " of " + named("meshes", static_cast<std::size_t>(use.mesh), mesh.name) +
            " primitive " + std::to_string(use.primitive) + ")";

@@ -12,15 +12,22 @@
 
 namespace ml::gltf {
 
-// What an accessor is read for, so that a message can say which mesh it belongs to.
+// What an accessor is read for, so that a message can say which mesh (or instanced node) it
+// belongs to.
 struct Use {
-    const char* attribute;  // "POSITION", "NORMAL", "TEXCOORD_0", "indices"
+    const char* attribute;  // "POSITION", "NORMAL", "TEXCOORD_0", "indices", "TRANSLATION"
     int mesh;
     int primitive;
+    int instancedNode = -1;  // EXT_mesh_gpu_instancing's attributes belong to a node, not a primitive
 };
 
 
-// "accessors[4] (NORMAL of meshes[0] 'Body' primitive 2)".
+// Bytes of one component (0 for what glTF 2.0 does not define) and components of one element.
+std::size_t componentBytes(int componentType);
+std::size_t componentCount(int type);
+
+// "accessors[4] (NORMAL of meshes[0] 'Body' primitive 2)",
+// "accessors[7] (ROTATION of nodes[3] 'Trees' EXT_mesh_gpu_instancing)".
 std::string describe(const tinygltf::Model& model, int accessor, const Use& use);
 
 // The formats glTF 2.0 allows for each use; KHR_mesh_quantization widens those of vertex data.

@@ -9,6 +9,7 @@
 #include <initializer_list>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace ml::gltf {
 
@@ -22,6 +23,9 @@ inline constexpr int kMaxJsonDepth = 256;
 // accessor without a buffer view costs nothing in the file, so its count needs a cap of its own.
 inline constexpr std::size_t kMaxVertices = std::size_t{1} << 26;
 inline constexpr std::size_t kMaxIndices = std::size_t{1} << 28;
+// EXT_mesh_gpu_instancing's instances, all nodes together: each becomes a copy of its mesh in
+// world space, and an accessor without a buffer view can ask for any number at no cost.
+inline constexpr std::size_t kMaxInstances = std::size_t{1} << 20;
 // Decoded base-colour textures, all together: 256 Mi texels (1 GiB of RGBA8).
 inline constexpr int kMaxImageSide = 16384;
 inline constexpr std::uint64_t kMaxImageTexels = std::uint64_t{1} << 28;
@@ -49,6 +53,11 @@ std::string counted(std::size_t n, const char* singular, const char* plural);
 
 inline bool isOneOf(int value, std::initializer_list<int> options) {
     return std::find(options.begin(), options.end(), value) != options.end();
+}
+
+// Whether `names` (extensionsUsed or extensionsRequired) lists `name`.
+inline bool lists(const std::vector<std::string>& names, std::string_view name) {
+    return std::find(names.begin(), names.end(), name) != names.end();
 }
 
 inline bool startsWith(std::string_view s, std::string_view prefix) { return s.substr(0, prefix.size()) == prefix; }

@@ -18,6 +18,8 @@
 #include <vector>
 
 #include "scenes/gltf_common.h"
+#include "scenes/gltf_compressed_json.h"
+#include "scenes/gltf_meshopt.h"
 
 namespace ml::gltf {
 namespace {
@@ -123,6 +125,24 @@ GlbLayout checkGlbContainer(const std::string& path, const std::vector<unsigned 
         if (binSize % 4 != 0) fail(path, "GLB BIN chunk length " + std::to_string(binSize) + " is not a multiple of 4");
     }
     return {20, jsonSize, length};
+}
+
+// The same container with another JSON chunk (padded with spaces, as GLB asks) and the same BIN chunk.
+std::vector<unsigned char> withJsonChunk(const std::vector<unsigned char>& bytes, const GlbLayout& glb, std::string json) {
+    while (json.size() % 4 != 0) json += ' ';
+    const std::size_t binStart = glb.jsonOffset + glb.jsonSize;
+    std::vector<unsigned char> out;
+    const auto putU32 = [&](std::size_t v) {
+        for (int i = 0; i < 4; ++i) out.push_back(static_cast<unsigned char>(v >> (8 * i)));
+    };
+    putU32(kGlbMagic);
+    putU32(2);
+    putU32(20 + json.size() + (glb.length - binStart));
+    putU32(json.size());
+    putU32(kGlbChunkJson);
+    out.insert(out.end(), json.begin(), json.end());
+    out.insert(out.end(), bytes.begin() + static_cast<std::ptrdiff_t>(binStart), bytes.begin() + static_cast<std::ptrdiff_t>(glb.length));
+    return out;
 }
 
 // --- JSON text -----------------------------------------------------------------------------------
@@ -275,13 +295,6 @@ void checkAssetVersion(const std::string& path, const tinygltf::Model& model) {
     if (!startsWith(v, "2.")) fail(path, "glTF version '" + clip(v, 20) + "' is not supported (only 2.x)");
 }
 
-// Compressed geometry cannot be read without its extension: the accessors it replaces are empty.
-void checkRequiredExtensions(const std::string& path, const tinygltf::Model& model) {
-    for (const std::string& ext : model.extensionsRequired)
-        if (ext == "KHR_draco_mesh_compression" || ext == "EXT_meshopt_compression")
-            fail(path, "requires extension " + ext + " (compressed geometry), which is not supported");
-}
-
 // tinygltf's base64 decoder stops quietly at the first character outside the alphabet, so a
 // corrupted data URI can load as truncated or shifted data: insist on clean base64.
 bool isCleanBase64(std::string_view s) {
@@ -334,20 +347,28 @@ ParsedGltf readGltfContainer(const std::string& path) {
     std::vector<unsigned char> bytes;
     std::string why;
     if (!readRegularFile(path, bytes, why)) fail(path, "cannot open glTF file: " + why);
+    SetAside aside;
     if (binary) {
         const GlbLayout glb = checkGlbContainer(path, bytes);
-        checkJsonText(path, reinterpret_cast<const char*>(bytes.data() + glb.jsonOffset), glb.jsonSize);
+        const char* json = reinterpret_cast<const char*>(bytes.data() + glb.jsonOffset);
+        checkJsonText(path, json, glb.jsonSize);
         bytes.resize(glb.length);  // bytes past the stated length are not part of the container
+        if (auto rewritten = setAsideForTinyGltf({json, glb.jsonSize}, binary, aside))
+            bytes = withJsonChunk(bytes, glb, std::move(*rewritten));
     } else {
-        checkJsonText(path, reinterpret_cast<const char*>(bytes.data()), bytes.size());
+        const char* json = reinterpret_cast<const char*>(bytes.data());
+        checkJsonText(path, json, bytes.size());
+        if (auto rewritten = setAsideForTinyGltf({json, bytes.size()}, binary, aside))
+            bytes.assign(rewritten->begin(), rewritten->end());
     }
 
     ParsedGltf parsed = parseWithTinyGltf(path, bytes, binary);
     bytes = {};  // tinygltf has copied what it needs
-    const tinygltf::Model& model = parsed.model;
+    tinygltf::Model& model = parsed.model;
+    putBack(aside, model);
     checkAssetVersion(path, model);
-    checkRequiredExtensions(path, model);
     checkBufferDataUris(path, model);
+    parsed.warnings = decodeMeshoptViews(path, model);
     checkBufferViews(path, model);
     return parsed;
 }

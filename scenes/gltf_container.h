@@ -4,6 +4,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include <tiny_gltf.h>
 
@@ -12,10 +13,12 @@ namespace ml::gltf {
 struct ParsedGltf {
     tinygltf::Model model;
     std::string tinygltfWarnings;  // non-fatal messages, on one line
+    std::vector<std::string> warnings;  // compressed views read from their fallback, one line each
 };
 
-// Reads and parses a .gltf or .glb file. After it returns, every buffer view lies inside its
-// buffer; accessors, nodes and the rest are checked where they are read.
+// Reads and parses a .gltf or .glb file and decodes its EXT_meshopt_compression views. After it
+// returns, every buffer view lies inside its buffer; accessors, nodes and the rest are checked
+// where they are read.
 ParsedGltf readGltfContainer(const std::string& path);
 
 }  // namespace ml::gltf

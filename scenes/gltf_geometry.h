@@ -15,6 +15,7 @@
 #include <tiny_gltf.h>
 
 #include "scenes/gltf_accessors.h"
+#include "scenes/gltf_common.h"
 #include "scenes/gltf_materials.h"
 #include "scenes/gltf_nodes.h"
 #include "scenes/scene.h"
@@ -74,8 +75,7 @@ public:
           scene_(scene),
           skipped_(skipped),
           materials_(materials),
-          reader_(path, model, std::find(model.extensionsUsed.begin(), model.extensionsUsed.end(),
-                                         "KHR_mesh_quantization") != model.extensionsUsed.end()) {}
+          reader_(path, model, lists(model.extensionsUsed, "KHR_mesh_quantization")) {}
 
     void addInstance(const MeshInstance& instance, const MeshPlan& plan);
 

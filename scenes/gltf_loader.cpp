@@ -2,8 +2,12 @@
 //
 // The work, in order, each step in a file of its own:
 //   gltf_container   read the file (and check a GLB container by hand), pre-check the JSON text,
-//                    let tinygltf parse it, check the buffers and views tinygltf does not;
+//                    set aside what tinygltf 2.7 refuses in compressed files (gltf_compressed_json),
+//                    let tinygltf parse it, decode EXT_meshopt_compression views (gltf_meshopt),
+//                    check the buffers and views tinygltf does not;
+//   gltf_draco       decode KHR_draco_mesh_compression primitives into plain accessors;
 //   gltf_nodes       flatten the default scene's node trees with an explicit stack;
+//   gltf_instancing  expand each EXT_mesh_gpu_instancing node into one mesh instance per TRS;
 //   gltf_geometry    plan each mesh's primitives once and append each instance's triangles in
 //                    world space, reading through gltf_accessors (which checks every byte range);
 //   gltf_materials   convert materials and their images on first use;
@@ -21,7 +25,9 @@
 #include "scenes/gltf_lights.h"
 #include "scenes/gltf_common.h"
 #include "scenes/gltf_container.h"
+#include "scenes/gltf_draco.h"
 #include "scenes/gltf_geometry.h"
+#include "scenes/gltf_instancing.h"
 #include "scenes/gltf_materials.h"
 #include "scenes/gltf_nodes.h"
 
@@ -85,6 +91,8 @@ std::vector<std::string> unmodelledFeatures(const tinygltf::Model& model, const 
 
 Scene loadChecked(const std::string& path, std::vector<std::string>& warnings) {
     ParsedGltf parsed = readGltfContainer(path);
+    std::vector<std::string> decodeWarnings = std::move(parsed.warnings);
+    for (std::string& line : decodeDracoPrimitives(path, parsed.model)) decodeWarnings.push_back(std::move(line));
     const tinygltf::Model& model = parsed.model;
 
     Scene scene;
@@ -92,12 +100,15 @@ Scene loadChecked(const std::string& path, std::vector<std::string>& warnings) {
     Skipped skipped;
     MaterialConverter materials(path, model, scene);
     SceneBuilder builder(path, model, scene, skipped, materials);
+    const AccessorReader instanceReader(path, model, lists(model.extensionsUsed, "KHR_mesh_quantization"));
+    std::size_t instanceBudget = kMaxInstances;
     std::vector<std::optional<MeshPlan>> plans(model.meshes.size());
     const FlatScene flat = flattenNodes(path, model);
     for (const MeshInstance& instance : flat.meshes) {
         std::optional<MeshPlan>& plan = plans[instance.mesh];
         if (!plan) plan = planMesh(path, model, instance.mesh, skipped);
-        builder.addInstance(instance, *plan);
+        for (const MeshInstance& placed : gpuInstances(path, model, instanceReader, instance, instanceBudget))
+            builder.addInstance(placed, *plan);
     }
     if (scene.indices.empty())
         fail(path, "the scene has no triangles to draw " +
@@ -109,6 +120,7 @@ Scene loadChecked(const std::string& path, std::vector<std::string>& warnings) {
 
     for (const std::string& line : unmodelledFeatures(model, skipped)) warnings.push_back(path + ": " + line);
     for (const std::string& line : materials.warnings()) warnings.push_back(path + ": " + line);
+    for (const std::string& line : decodeWarnings) warnings.push_back(path + ": " + line);
     if (!parsed.tinygltfWarnings.empty()) warnings.push_back(path + ": glTF parser: " + parsed.tinygltfWarnings);
     scene.extensionsUsed = model.extensionsUsed;
     return scene;
@@ -118,9 +130,11 @@ Scene loadChecked(const std::string& path, std::vector<std::string>& warnings) {
 
 bool isModelledGltfExtension(const std::string& name) {
     // Lights (gltf_lights) and what the materials read (gltf_materials); quantized attributes
-    // are read by the accessors.
+    // are read by the accessors; compressed geometry is decoded (gltf_draco, gltf_meshopt) and
+    // GPU instances flattened (gltf_instancing).
     return name == "KHR_lights_punctual" || name == "KHR_mesh_quantization" || name == "KHR_texture_transform" ||
-           name == "KHR_materials_emissive_strength";
+           name == "KHR_materials_emissive_strength" || name == "KHR_draco_mesh_compression" ||
+           name == "EXT_meshopt_compression" || name == "EXT_mesh_gpu_instancing";
 }
 
 Scene loadGltf(const std::string& path, std::vector<std::string>& warnings) {

@@ -250,11 +250,11 @@ void ViewSession::handleKeys(const std::vector<int>& keys) {
 }
 
 void ViewSession::frameScene() {
-    // The front framing of a file without cameras, whatever the scene: the whole of it in view.
+    // The front framing of a file without cameras (defaultCamera), whatever the scene.
     followPath_ = false;
     settings_.sceneCamera = -1;
     const float aspect = static_cast<float>(renderer_->settings().width) / static_cast<float>(renderer_->settings().height);
-    controller_.jumpTo(frontFramingCamera(boundingSphere(frame_.scene), aspect));
+    controller_.jumpTo(frontFramingCamera(framedSurface(frame_.scene).sphere, aspect));
 }
 
 void ViewSession::setMethodOrExplain(const MethodSettings& method) {

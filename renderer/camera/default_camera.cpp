@@ -2,6 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <vector>
+
+#include "renderer/hash.h"
+#include "renderer/scene/surface_samples.h"
 
 namespace ml {
 
@@ -16,6 +21,52 @@ BoundingSphere boundingSphere(const Scene& scene) {
     }
     sphere.radius = std::max(std::sqrt(farthestSquared), 1e-3f);
     return sphere;
+}
+
+FramedSurface framedSurface(const Scene& scene) {
+    FramedSurface framed{boundingSphere(scene), scene.bounds, scene.bounds};
+    const SurfaceSamples surface(scene);
+    if (!(surface.totalArea() > 0.0)) return framed;
+    std::vector<glm::vec3> points(kFramingSamples);
+    for (std::uint32_t i = 0; i < kFramingSamples; ++i) {
+        const std::uint32_t key = pcgHash(i ^ 0xF4A3E5u);
+        const SurfaceSamples::Point p = surface.at(hashToUnitFloat(key), hashToUnitFloat(key + 1u), hashToUnitFloat(key + 2u));
+        const std::uint32_t* corner = &scene.indices[3 * p.triangle];
+        points[i] = p.u * scene.vertices[corner[0]].position + p.v * scene.vertices[corner[1]].position +
+                    p.w * scene.vertices[corner[2]].position;
+    }
+    // The middle of the area along each axis...
+    const std::size_t low = static_cast<std::size_t>(kFramedAreaTail * (kFramingSamples - 1));
+    const std::size_t high = kFramingSamples - 1 - low;
+    std::vector<float> axis(kFramingSamples);
+    for (int a = 0; a < 3; ++a) {
+        for (std::uint32_t i = 0; i < kFramingSamples; ++i) axis[i] = points[i][a];
+        std::nth_element(axis.begin(), axis.begin() + low, axis.end());
+        framed.core.min[a] = axis[low];
+        std::nth_element(axis.begin(), axis.begin() + high, axis.end());
+        framed.core.max[a] = axis[high];
+    }
+    // ...widened by kFramedFence of itself: a model's own thin ends stay in, strays fall out.
+    const glm::vec3 margin = kFramedFence * glm::max(framed.core.size(), glm::vec3(1e-6f * glm::length(scene.bounds.size())));
+    const glm::vec3 fenceMin = framed.core.min - margin, fenceMax = framed.core.max + margin;
+    const auto inside = [&](const glm::vec3& p) {
+        return glm::all(glm::greaterThanEqual(p, fenceMin)) && glm::all(glm::lessThanEqual(p, fenceMax));
+    };
+    Bounds kept;
+    for (const glm::vec3& p : points)
+        if (inside(p)) kept.extend(p);
+    for (const Vertex& v : scene.vertices)
+        if (inside(v.position)) kept.extend(v.position);
+    framed.framed = kept;
+    framed.sphere.centre = kept.center();
+    float farthestSquared = 0.0f;
+    const auto reach = [&](const glm::vec3& p) {
+        if (inside(p)) farthestSquared = std::max(farthestSquared, glm::dot(p - framed.sphere.centre, p - framed.sphere.centre));
+    };
+    for (const glm::vec3& p : points) reach(p);
+    for (const Vertex& v : scene.vertices) reach(v.position);
+    framed.sphere.radius = std::max(std::sqrt(farthestSquared), 1e-3f);
+    return framed;
 }
 
 Camera framingCamera(const BoundingSphere& sphere, float aspect, glm::vec3 direction) {
@@ -56,9 +107,18 @@ DefaultCamera defaultCamera(const Scene& scene, float aspect) {
         d.fromFile = true;
         return d;
     }
-    d.camera = frontFramingCamera(boundingSphere(scene), aspect);
+    const FramedSurface framed = framedSurface(scene);
+    d.camera = frontFramingCamera(framed.sphere, aspect);
     fitClipPlanes(d.camera, scene.bounds);
-    d.choice = "framed from the front (the file has no camera; --camera to choose)";
+    const auto point = [](const glm::vec3& p) {
+        char text[96];
+        std::snprintf(text, sizeof text, "(%.4g, %.4g, %.4g)", p.x, p.y, p.z);
+        return std::string(text);
+    };
+    const int middle = static_cast<int>(std::lround(100.0 * (1.0 - 2.0 * kFramedAreaTail)));
+    d.choice = "framed from the front (the file has no camera; --camera to choose): " + point(framed.framed.min) + " .. " +
+               point(framed.framed.max) + ", the surface around the middle " + std::to_string(middle) +
+               " % of its area (the bounds: " + point(scene.bounds.min) + " .. " + point(scene.bounds.max) + ")";
     return d;
 }
 

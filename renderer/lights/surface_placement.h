@@ -2,9 +2,8 @@
 // that each one lights something, instead of uniformly through the bounding box, where in an
 // interior most land inside walls or outside the building.
 //
-//   triangle  chosen with probability proportional to its area (a cumulative table over the
-//             scene's triangles, searched by bisection);
-//   point     uniform on the triangle (square-root-warped barycentrics);
+//   triangle  chosen with probability proportional to its area, and
+//   point     uniform on the triangle (both renderer/scene/surface_samples.h);
 //   offset    kSurfaceOffsetShare x the light's radius along the interpolated vertex normal (the
 //             side the surface is lit from), so its sphere always reaches that surface.
 //

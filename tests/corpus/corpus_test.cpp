@@ -8,8 +8,9 @@
 // No file and no method has an exception: every method shades the surface rebuilt from its
 // triangle alike (glsl/include/triangle_surface.glsl), and the exact G-buffer loses nothing.
 //
-// The corpus lives beside the checkout (ML_CORPUS_DIR); where it is absent (a user's clone) the
-// target says so in one line and skips.
+// The corpus lives beside the checkout (ML_CORPUS_DIR), and the Draco files beside it
+// (ML_COMPRESSED_DIR, instantiated as Compressed/...); where they are absent (a user's clone)
+// the target says so in one line and skips.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -33,11 +34,12 @@ namespace fs = std::filesystem;
 constexpr double kMaxBadShare = 1e-4;
 constexpr int kWidth = 160, kHeight = 90;
 
-std::vector<std::string> corpusFiles() {
+// The glTF files under `dir`, relative to the corpus ("../compressed/..." for ML_COMPRESSED_DIR).
+std::vector<std::string> gltfFilesIn(const char* dir) {
     std::vector<std::string> files;
     std::error_code error;
-    if (!fs::is_directory(ML_CORPUS_DIR, error)) return files;
-    for (const auto& entry : fs::recursive_directory_iterator(ML_CORPUS_DIR, error)) {
+    if (!fs::is_directory(dir, error) || !fs::is_directory(ML_CORPUS_DIR, error)) return files;
+    for (const auto& entry : fs::recursive_directory_iterator(dir, error)) {
         const std::string ext = entry.path().extension().string();
         if (entry.is_regular_file() && (ext == ".gltf" || ext == ".glb"))
             files.push_back(fs::relative(entry.path(), ML_CORPUS_DIR).string());
@@ -46,22 +48,13 @@ std::vector<std::string> corpusFiles() {
     return files;
 }
 
+std::vector<std::string> corpusFiles() { return gltfFilesIn(ML_CORPUS_DIR); }
+// Draco files (../shared/compressed), held to the same contract.
+std::vector<std::string> compressedFiles() { return gltfFilesIn(ML_COMPRESSED_DIR); }
+
 Scene loadCorpusScene(const std::string& relative) {
     std::vector<std::string> warnings;
     return loadScene(SceneRequest{corpusPath(relative), 1.0f}, warnings);
-}
-
-// The scene file's own lights and 48 generated ones (seed 5, the default radius): enough that
-// the clustered methods' lists differ per cluster, few enough for naive on llvmpipe.
-std::vector<Light> ownAndGeneratedLights(const Scene& scene) {
-    std::vector<Light> lights = lightsFromScene(scene);
-    LightGeneration gen;
-    gen.count = 48;
-    gen.seed = 5;
-    gen.radius = defaultLightRadius(scene.bounds);
-    const std::vector<Light> generated = generateLights(lightVolume(scene.bounds), gen);
-    lights.insert(lights.end(), generated.begin(), generated.end());
-    return lights;
 }
 
 // The suggested view (as `--camera` left out gives), then each camera of the file (gltf:N).
@@ -117,6 +110,8 @@ TEST_P(CorpusFile, EveryMethodHoldsTheContractAgainstNaive) {
 std::string fileTestName(const std::string& relative) { return testNameOf(fs::path(relative).filename().string()); }
 
 INSTANTIATE_TEST_SUITE_P(Corpus, CorpusFile, ::testing::ValuesIn(corpusFiles()),
+                         [](const auto& info) { return fileTestName(info.param); });
+INSTANTIATE_TEST_SUITE_P(Compressed, CorpusFile, ::testing::ValuesIn(compressedFiles()),
                          [](const auto& info) { return fileTestName(info.param); });
 GTEST_ALLOW_UNINSTANTIATED_PARAMETERIZED_TEST(CorpusFile);
 

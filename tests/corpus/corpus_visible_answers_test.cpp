@@ -173,5 +173,39 @@ TEST_F(CorpusVisibleAnswer, AlphaBlendModeCutsOutAndBlends) {
     });
 }
 
+TEST_F(CorpusVisibleAnswer, SimpleInstancingDrawsItsHundredAndTwentyFiveCubes) {
+    // One cube mesh drawn by EXT_mesh_gpu_instancing 125 times (a 5 x 5 x 5 grid, each turned and
+    // scaled): 125 cubes' worth of triangles, and in every method each cube's centre lands on a
+    // drawn pixel (its own, or a cube's in front of it). One cube drawn would leave most dark.
+    const FrontView v = frontView("khronos/SimpleInstancing/glTF/SimpleInstancing.gltf");
+    constexpr std::size_t kCubes = 125, kCubeVertices = 24;
+    ASSERT_EQ(v.scene.triangleCount(), kCubes * 12);
+    ASSERT_EQ(v.scene.vertices.size(), kCubes * kCubeVertices);
+    std::vector<glm::vec3> centres;
+    for (std::size_t c = 0; c < kCubes; ++c) {
+        glm::vec3 sum(0.0f);
+        for (std::size_t i = 0; i < kCubeVertices; ++i) sum += v.scene.vertices[c * kCubeVertices + i].position;
+        centres.push_back(sum / float(kCubeVertices));
+    }
+    for (std::size_t a = 0; a < kCubes; ++a)
+        for (std::size_t b = a + 1; b < kCubes; ++b)
+            ASSERT_GT(glm::length(centres[a] - centres[b]), 0.5f) << "cubes " << a << " and " << b << " share a place";
+    const glm::mat4 clip = v.settings.camera.projection(float(kWidth) / kHeight) * v.settings.camera.view();
+    forEveryMethod(v, [&](const RgbaImage& image, const std::string&) {
+        int dark = 0;
+        for (const glm::vec3& centre : centres) {
+            const glm::vec4 p = clip * glm::vec4(centre, 1.0f);
+            const int x = int((p.x / p.w * 0.5f + 0.5f) * image.width);
+            const int y = int((0.5f - p.y / p.w * 0.5f) * image.height);
+            ASSERT_TRUE(x >= 0 && x < image.width && y >= 0 && y < image.height) << "a cube is outside the frame";
+            const std::uint8_t* px = image.at(x, y);
+            dark += !lit(px[0], px[1], px[2]);
+        }
+        const PixelCounts any = countPixels(image, {0, 0, 1, 1}, lit);
+        std::printf("cube centres on dark pixels: %d of %zu; lit %.3f of the frame\n", dark, kCubes, any.share());
+        EXPECT_EQ(dark, 0);
+    });
+}
+
 }  // namespace
 }  // namespace ml::test

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cstdint>
 #include <cstdlib>
 #include <filesystem>
@@ -104,6 +106,7 @@ class Gltf {
 public:
     json doc = {{"asset", {{"version", "2.0"}}}};
     std::vector<std::uint8_t> bin;
+    std::vector<json> moreBuffers;  // buffers 1.., written as they are after buffer 0
 
     int add(const char* array, json value) {
         json& list = doc[array];
@@ -155,6 +158,7 @@ public:
             writeBytes(dir / (name + ".bin"), bin.data(), bin.size());
             d["buffers"] = json::array({{{"byteLength", bin.size()}, {"uri", name + ".bin"}}});
         }
+        for (const json& b : moreBuffers) d["buffers"].push_back(b);
         writeText(dir / (name + ".gltf"), d.dump());
         return dir / (name + ".gltf");
     }
@@ -164,6 +168,7 @@ public:
         json d = doc;
         d["buffers"] = json::array(
             {{{"byteLength", bin.size()}, {"uri", "data:application/octet-stream;base64," + base64(bin)}}});
+        for (const json& b : moreBuffers) d["buffers"].push_back(b);
         writeText(dir / (name + ".gltf"), d.dump());
         return dir / (name + ".gltf");
     }
@@ -171,6 +176,7 @@ public:
     std::vector<std::uint8_t> glb() const {
         json d = doc;
         if (!bin.empty()) d["buffers"] = json::array({{{"byteLength", bin.size()}}});
+        for (const json& b : moreBuffers) d["buffers"].push_back(b);
         return glbBytes(d, bin);
     }
 
@@ -243,6 +249,17 @@ inline void expectOneLineWarnings(const std::vector<std::string>& warnings, cons
     }
 }
 
+// Loads the file, which must warn exactly once: one line naming the file and holding each keyword.
+inline Scene loadWithOneWarning(const fs::path& file, std::initializer_list<const char*> keywords) {
+    std::vector<std::string> warnings;
+    Scene scene = load(file, warnings);
+    EXPECT_EQ(warnings.size(), 1u);
+    expectOneLineWarnings(warnings, file);
+    for (const char* keyword : keywords)
+        EXPECT_EQ(countContaining(warnings, keyword), 1u) << "no '" << keyword << "' in: " << (warnings.empty() ? "" : warnings[0]);
+    return scene;
+}
+
 inline void expectNear(const glm::vec3& actual, const glm::vec3& expected, float tolerance = 1e-5f) {
     EXPECT_NEAR(actual.x, expected.x, tolerance) << "y " << actual.y << " z " << actual.z;
     EXPECT_NEAR(actual.y, expected.y, tolerance) << "x " << actual.x << " z " << actual.z;
@@ -255,6 +272,70 @@ inline glm::vec3 faceNormal(const Scene& s, std::size_t t) {
     const glm::vec3 b = s.vertices[s.indices[3 * t + 1]].position;
     const glm::vec3 c = s.vertices[s.indices[3 * t + 2]].position;
     return glm::normalize(glm::cross(b - a, c - a));
+}
+
+// A scene's triangles as a reader sees them, whatever order the file stored them in: each
+// triangle's corners rotated (winding kept) to start at the smallest position, the triangles
+// sorted. Compressed files reorder both.
+struct Corner {
+    glm::vec3 position, normal;
+    glm::vec2 uv;
+    glm::vec4 tangent{0.0f}, colour{1.0f};
+};
+using CornerTriangle = std::array<Corner, 3>;
+
+inline bool positionLess(const glm::vec3& a, const glm::vec3& b) {
+    return a.x != b.x ? a.x < b.x : a.y != b.y ? a.y < b.y : a.z < b.z;
+}
+
+inline std::vector<CornerTriangle> canonicalTriangles(const Scene& s) {
+    std::vector<CornerTriangle> triangles;
+    for (std::size_t t = 0; t < s.indices.size() / 3; ++t) {
+        CornerTriangle tri;
+        for (int k = 0; k < 3; ++k) {
+            const std::uint32_t i = s.indices[3 * t + k];
+            tri[k] = {s.vertices[i].position, s.vertices[i].normal, s.vertices[i].uv,
+                      s.tangents.empty() ? glm::vec4(0.0f) : s.tangents[i], s.colors.empty() ? glm::vec4(1.0f) : s.colors[i]};
+        }
+        int first = 0;
+        for (int k = 1; k < 3; ++k)
+            if (positionLess(tri[k].position, tri[first].position)) first = k;
+        std::rotate(tri.begin(), tri.begin() + first, tri.end());
+        triangles.push_back(tri);
+    }
+    std::sort(triangles.begin(), triangles.end(), [](const CornerTriangle& a, const CornerTriangle& b) {
+        for (int k = 0; k < 3; ++k)
+            if (a[k].position != b[k].position) return positionLess(a[k].position, b[k].position);
+        return false;
+    });
+    return triangles;
+}
+
+struct CornerTolerance {
+    float position = 0.0f, normal = 1e-6f, uv = 1e-6f, tangent = 1e-6f, colour = 1e-6f;
+};
+
+// Both scenes hold the same triangles, corner by corner, within the tolerances.
+inline void expectSameTriangles(const Scene& actual, const Scene& expected, const CornerTolerance& tol) {
+    const std::vector<CornerTriangle> a = canonicalTriangles(actual), e = canonicalTriangles(expected);
+    ASSERT_EQ(a.size(), e.size());
+    const auto near = [](auto x, auto y, float t) { return glm::all(glm::lessThanEqual(glm::abs(x - y), decltype(x)(t))); };
+    std::size_t mismatches = 0;
+    for (std::size_t t = 0; t < a.size(); ++t) {
+        for (int k = 0; k < 3; ++k) {
+            const Corner &x = a[t][k], &y = e[t][k];
+            const bool same = near(x.position, y.position, tol.position) && near(x.normal, y.normal, tol.normal) &&
+                              near(x.uv, y.uv, tol.uv) && near(x.tangent, y.tangent, tol.tangent) &&
+                              near(x.colour, y.colour, tol.colour);
+            if (!same && ++mismatches <= 3)
+                ADD_FAILURE() << "triangle " << t << " corner " << k << ": position (" << x.position.x << ", " << x.position.y
+                              << ", " << x.position.z << ") vs (" << y.position.x << ", " << y.position.y << ", "
+                              << y.position.z << "), normal (" << x.normal.x << ", " << x.normal.y << ", " << x.normal.z
+                              << ") vs (" << y.normal.x << ", " << y.normal.y << ", " << y.normal.z << "), uv (" << x.uv.x
+                              << ", " << x.uv.y << ") vs (" << y.uv.x << ", " << y.uv.y << ")";
+        }
+    }
+    EXPECT_EQ(mismatches, 0u);
 }
 
 // A metallic-roughness material of one colour, non-metallic; BLEND where alpha < 1 is asked for.

@@ -102,6 +102,55 @@ TEST(DefaultCamera, FramingHoldsTheBoundingSphereInTheNarrowerFieldOfView) {
     }
 }
 
+// A room of 10 x 3 x 10 (floor and back wall), with one small triangle 1000 units away as an
+// exporter leaves a stray helper object behind.
+Scene room(bool withStray) {
+    Scene s;
+    const auto quad = [&](glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec3 d) {
+        const auto base = static_cast<std::uint32_t>(s.vertices.size());
+        const glm::vec3 n = glm::normalize(glm::cross(b - a, c - a));
+        for (const glm::vec3& p : {a, b, c, d}) s.vertices.push_back(Vertex{p, n, glm::vec2(0)});
+        s.indices.insert(s.indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
+    };
+    quad({0, 0, 0}, {0, 0, 10}, {10, 0, 10}, {10, 0, 0});
+    quad({0, 0, 0}, {10, 0, 0}, {10, 3, 0}, {0, 3, 0});
+    if (withStray) {
+        const auto base = static_cast<std::uint32_t>(s.vertices.size());
+        for (const glm::vec3& p : {glm::vec3(1000, 0, 0), glm::vec3(1000.1f, 0, 0), glm::vec3(1000, 0.1f, 0)})
+            s.vertices.push_back(Vertex{p, glm::vec3(0, 0, 1), glm::vec2(0)});
+        s.indices.insert(s.indices.end(), {base, base + 1, base + 2});
+    }
+    s.draws = {DrawRange{0, static_cast<std::uint32_t>(s.indices.size()), 0}};
+    s.materials.resize(1);
+    computeBounds(s);
+    return s;
+}
+
+TEST(DefaultCamera, FramesTheSurfaceAroundTheMiddleOfItsAreaNotAStray) {
+    const Scene strayed = room(true);
+    EXPECT_GT(boundingSphere(strayed).radius, 400.0f) << "the raw bounds reach the stray";
+    const FramedSurface framed = framedSurface(strayed);
+    // The whole room, floor and wall to their edges, and nothing of the stray.
+    for (int a = 0; a < 3; ++a) {
+        EXPECT_NEAR(framed.framed.min[a], 0.0f, 1e-4f) << "axis " << a;
+        EXPECT_NEAR(framed.framed.max[a], a == 1 ? 3.0f : 10.0f, 1e-4f) << "axis " << a;
+    }
+    EXPECT_NEAR(framed.sphere.radius, 0.5f * glm::length(glm::vec3(10, 3, 10)), 1e-3f);
+    const DefaultCamera d = defaultCamera(strayed, 16.0f / 9.0f);
+    EXPECT_LT(glm::length(d.camera.eye - glm::vec3(5, 1.5f, 5)), 30.0f);
+    EXPECT_GT(d.camera.farPlane, 1000.0f) << "the clip planes still hold everything";
+    EXPECT_NE(d.choice.find("the surface around the middle 96 % of its area"), std::string::npos) << d.choice;
+}
+
+TEST(DefaultCamera, AModelWithoutStraysFramesAsItsBoundingSphere) {
+    for (const Scene& scene : {floorTile(), room(false)}) {
+        const BoundingSphere whole = boundingSphere(scene);
+        const FramedSurface framed = framedSurface(scene);
+        EXPECT_NEAR(framed.sphere.radius, whole.radius, 1e-4f * whole.radius);
+        EXPECT_LT(glm::length(framed.sphere.centre - whole.centre), 1e-4f * whole.radius);
+    }
+}
+
 TEST(DefaultCamera, BuiltInScenesKeepTheirViewFilesTheirFirstCamera) {
     Scene scene = boxes();
     const DefaultCamera builtIn = defaultCamera(scene, 16.0f / 9.0f);
