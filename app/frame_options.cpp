@@ -94,6 +94,10 @@ void addFrameOptions(CLI::App& cmd, FrameOptions& o) {
     grid->add_flag("--active-only", o.activeOnly, "assign lights only to clusters that hold a visible sample");
     grid->add_option("--cull", o.cull, "light-vs-cluster test: aabb (sphere vs the cluster's AABB), sphere (vs its frustum planes), cone (seed 001's spherical-sliced cone)")->capture_default_str();
     grid->add_flag("--normal-cones", o.normalCones, "deferred and visibility: lists per (cluster, view-space normal bin), skipping lights behind every surface of a cluster (Olsson et al. 2012)");
+    grid->add_option("--vis-raster", o.visRaster,
+                     "visibility's raster: auto (compute where the GPU has 64-bit atomics, else hardware), hardware, compute, "
+                     "compute-two-pass (32-bit atomics, as without them)")
+        ->capture_default_str();
     grid->add_option("--resolve", o.resolve, "deferred lighting pass: compute or fragment")->capture_default_str();
     grid->add_option("--gbuffer", o.gbuffer, "G-buffer of deferred and visibility: exact (3 x RGBA32F with the position, 48 B/px: "
                      "holds the accuracy contract), standard (3 x RGBA16F, 24 B/px), packed (1 x RGBA32UI, 16 B/px), two-component (normal z rebuilt, loses its sign: the documented failure case); "
@@ -249,6 +253,7 @@ PreparedFrame prepareFrame(const FrameOptions& o, const Scene* loaded) {
     if (f.settings.method.kind == MethodKind::Naive && clustering.view != DebugView::Shaded && clustering.view != DebugView::Overdraw)
         throw std::invalid_argument("--view " + o.view + ": needs a clustered method (--method forward-plus or deferred)");
     f.settings.method.resolve = parseResolve(o.resolve);
+    f.settings.method.visibilityRaster = parseVisibilityRaster(o.visRaster);
     f.settings.specular = parseOnOff("--specular", o.specular);
     f.settings.lightModel = parseLightModel(o);
     checkCutoffForMethod(f.settings.lightModel, f.settings.method.kind);

@@ -34,6 +34,7 @@ struct FrameOptions {
     std::string cull = "aabb";
     bool normalCones = false;
     std::string resolve = "compute";
+    std::string visRaster = "auto";
     std::string gbuffer = "exact";
     std::string prepass = "on";
     long long msaa = 1;        // --msaa: naive and forward-plus

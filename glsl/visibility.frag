@@ -2,21 +2,37 @@
 // Visibility buffer: the raster pass writes only depth and which triangle is nearest (index + 1;
 // 0 is background). Everything else is rebuilt in compute (visibility_resolve.comp).
 //
-// Opaque ranges write the id by an image atomic behind an early depth test, not through the
-// ROPs: on an H100, whose few graphics units write 4 bytes a pixel in 0.26 ms at 2560x1440, that
-// takes the colour writes out of the pass (1.10 -> 0.85 ms on the atrium). A fragment passes
-// GL_LESS at its turn only if it is nearer than every fragment before it at the pixel, so the
-// last to pass is the one a colour write would have left; ids grow with the draw order
-// (SceneGpu lays its index buffer out so), so it is the largest, kept by imageAtomicMax.
-// The alpha-tested variant (ML_ALPHA_TEST) discards uncovered fragments, which needs the late
-// depth test, so it writes its id as a colour output; those ranges are drawn last.
+// Hardware raster (--vis-raster hardware): opaque ranges write the id by an image atomic behind
+// an early depth test, not through the ROPs: on an H100, whose few graphics units write 4 bytes a
+// pixel in 0.26 ms at 2560x1440, that takes the colour writes out of the pass (1.10 -> 0.85 ms on
+// the atrium). A fragment passes GL_LESS at its turn only if it is nearer than every fragment
+// before it at the pixel, so the last to pass is the one a colour write would have left; ids grow
+// with the draw order (SceneGpu lays its index buffer out so), so it is the largest, kept by
+// imageAtomicMax. The alpha-tested variant (ML_ALPHA_TEST) discards uncovered fragments, which
+// needs the late depth test, so it writes its id as a colour output; those ranges are drawn last.
+//
+// Compute raster (ML_COMPUTE_RASTER, renderer/passes/compute_raster.h): the triangles the
+// hardware still rasters there (alpha-tested ranges, and ML_RASTER_HARDWARE_LIST: those clipped
+// at the eye plane) store depth and id into the compute raster's per-pixel store, with no depth
+// buffer: nearest depth, then smallest id, wins (include/compute_raster.glsl).
+#if ML_COMPUTE_RASTER
+#extension GL_ARB_gpu_shader_int64 : require
+#if ML_RASTER_ATOMIC64
+#extension GL_NV_shader_atomic_int64 : require
+#endif
+#endif
 #include "include/bindings.h"
 #include "include/frame_uniforms.glsl"
 #include "include/shading.glsl"
 #include "include/material.glsl"
 #include "include/scene_fragment.glsl"
 
-#if ML_ALPHA_TEST
+#if ML_COMPUTE_RASTER
+#include "include/compute_raster.glsl"
+#if ML_RASTER_HARDWARE_LIST
+uniform uint u_cullBackFaces;
+#endif
+#elif ML_ALPHA_TEST
 layout(location = 0) out uint o_triangle;
 #else
 layout(early_fragment_tests) in;
@@ -24,11 +40,20 @@ layout(binding = ML_IMG_VISIBILITY_IDS, r32ui) uniform coherent uimage2D u_ids;
 #endif
 
 void main() {
+#if ML_COMPUTE_RASTER
+#if ML_RASTER_HARDWARE_LIST
+    // Drawn without GL's culling, since the list mixes sidedness: culled here, as a raster pass would.
+    if (u_cullBackFaces != 0u && !gl_FrontFacing && (materials[v_materialIndex].info.w & ML_MATERIAL_DOUBLE_SIDED) == 0u) discard;
+#endif
+    alphaTestFragment();
+    if (gl_FragCoord.z < 1.0) rasterStore(ivec2(gl_FragCoord.xy), gl_FragCoord.z, fragmentTriangle());
+#else
     uint id = v_firstTriangle + uint(gl_PrimitiveID) + 1u;
 #if ML_ALPHA_TEST
     alphaTestFragment();
     o_triangle = id;
 #else
     imageAtomicMax(u_ids, ivec2(gl_FragCoord.xy), id);
+#endif
 #endif
 }

@@ -91,6 +91,7 @@ std::vector<PassTime> FrameRenderer::renderAt(float time, std::uint32_t drawSeed
         if (!overdraw_) overdraw_ = std::make_unique<OverdrawPass>(scene_.materialFeatures());
         overdraw_->run(scene_, targets_, timer_);
     } else {
+        targets_.setComputedDepth(nullptr);
         method_->render(FrameContext{scene_, lights_, frameUniformBuffer_, uniforms_, targets_, timer_});
     }
     // After the method and anything it drew last (a transparent pass lands in the samples too).

@@ -47,6 +47,11 @@ public:
     // RGBA32F (multisampled with --msaa): what the methods shade into, and its depth.
     const gl::Texture2D& hdr() const { return hdr_; }
     const gl::Texture2D& depth() const { return depth_; }
+    // The opaque depth as the passes that sample it read it: depth(), or, for the frame of a
+    // method that rastered by compute (the visibility buffer's compute raster), its R32F depth.
+    // FrameRenderer clears it before each method's frame.
+    const gl::Texture2D& opaqueDepth() const { return computedDepth_ ? *computedDepth_ : depth_; }
+    void setComputedDepth(const gl::Texture2D* depth) { computedDepth_ = depth; }
     const gl::Framebuffer& hdrFramebuffer() const { return hdrFbo_; }
     const gl::Framebuffer& hdrOnlyFramebuffer() const { return hdrOnlyFbo_; }
 
@@ -68,6 +73,7 @@ private:
     bool stencil_ = false;
     TargetSampling sampling_;
     gl::Texture2D hdr_, depth_, resolved_, ldr_;
+    const gl::Texture2D* computedDepth_ = nullptr;
     gl::Framebuffer hdrFbo_, ldrFbo_, hdrOnlyFbo_;
 };
 

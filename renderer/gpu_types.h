@@ -39,7 +39,7 @@ struct alignas(16) GpuMaterial {
     glm::vec4 baseColorFactor;
     glm::vec4 emissiveCutoff;  // rgb emissive, a alpha cutoff
     glm::vec4 factors;         // metallic, roughness, normal scale, occlusion strength
-    glm::uvec4 info;           // texture slot bits, TEXCOORD_1 slot bits, texture set + 1, unused
+    glm::uvec4 info;           // texture slot bits, TEXCOORD_1 slot bits, texture set + 1, ML_MATERIAL_* bits
     glm::vec4 uvTransforms[2 * ML_TEXTURE_SLOTS];  // per slot: mat2 columns, offset
 };
 static_assert(sizeof(GpuMaterial) == 64 + 32 * ML_TEXTURE_SLOTS);

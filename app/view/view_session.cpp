@@ -6,6 +6,7 @@
 #include <cstring>
 #include <filesystem>
 
+#include "renderer/gl/extensions.h"
 #include "renderer/gl/gl_api.h"  // before glfw3.h, which must not include GL/gl.h itself
 
 #define GLFW_INCLUDE_NONE
@@ -27,15 +28,6 @@ namespace {
 constexpr GLenum kGpuMemoryTotalNvx = 0x9048;
 constexpr GLenum kGpuMemoryAvailableNvx = 0x9049;
 
-bool hasExtension(const char* name) {
-    GLint count = 0;
-    glGetIntegerv(GL_NUM_EXTENSIONS, &count);
-    for (GLint i = 0; i < count; ++i) {
-        const auto* ext = reinterpret_cast<const char*>(glGetStringi(GL_EXTENSIONS, static_cast<GLuint>(i)));
-        if (ext && std::strcmp(ext, name) == 0) return true;
-    }
-    return false;
-}
 
 // Statistics read back (a GPU sync) this often while interactive, not every frame.
 constexpr double kStatisticsInterval = 0.25;
@@ -59,7 +51,7 @@ ViewSession::ViewSession(const ViewOptions& options, PreparedFrame frame, std::o
       controller_(frame_.settings.camera, diagonal(frame_.scene.bounds)) {
     gl::enableDebugOutput(options.frame.glDebug ? gl::DebugVerbosity::All : gl::DebugVerbosity::ErrorsOnly);
     info_ = queryGlInfo();
-    nvxMemoryInfo_ = hasExtension("GL_NVX_gpu_memory_info");
+    nvxMemoryInfo_ = gl::hasExtension("GL_NVX_gpu_memory_info");
     if (options.frame.verbose)
         std::printf("GL_RENDERER: %s\nGL_VERSION: %s\nplatform: %s\n", info_.renderer.c_str(), info_.version.c_str(),
                     window_.platform().c_str());

@@ -46,6 +46,27 @@
 // assignment's points: the capture and its shading run after the lists are built.
 #define ML_SSBO_GLASS_PIXELS 16        // per pixel: its fragment count, then (scanned, filled) where its fragments end
 #define ML_SSBO_GLASS_FRAGMENTS 17     // per fragment: depth bits, triangle id; then, glass of more than one texture set, its colour
+// The visibility buffer's compute raster (renderer/passes/compute_raster.h), before anything else
+// of the frame binds these points.
+#define ML_SSBO_RASTER_DEPTH_IDS 16    // per pixel: nearest depth and triangle (one 64-bit word, or two 32-bit arrays)
+#define ML_SSBO_RASTER_WORK 17         // counters and indirect arguments (ML_RASTER_WORK_*)
+#define ML_SSBO_RASTER_LARGE 18        // triangles for the tile pass: snapped vertices, depths, id, tile bounds (48 B)
+#define ML_SSBO_RASTER_PAIRS 19        // (large triangle, screen tile) for the tile pass
+#define ML_SSBO_RASTER_HARDWARE 23     // triangles the hardware rasters instead (clipped at the eye plane)
+#define ML_RASTER_WORK_HARDWARE_DRAW 0   // DrawArraysIndirectCommand of the hardware's triangles (words 0-3)
+#define ML_RASTER_WORK_BIN_DISPATCH 4    // the binning's dispatch (words 4-6)
+#define ML_RASTER_WORK_TILE_DISPATCH 7   // the tile pass's dispatch (words 7-9)
+#define ML_RASTER_WORK_LARGE_COUNT 10
+#define ML_RASTER_WORK_PAIR_COUNT 11
+#define ML_RASTER_WORK_WORDS 12
+#define ML_RASTER_WORKGROUP 64       // triangles per workgroup of the setup pass
+#define ML_RASTER_TILE 16            // the tile pass's screen tile edge: a pixel per invocation
+#define ML_RASTER_SMALL_EXTENT 64    // a triangle rastered by its own invocation spans at most this many pixels...
+#define ML_RASTER_SMALL_PIXELS 64    // ...and at most this many pixel centres of its bounds
+// Material::info.w bits.
+#define ML_MATERIAL_DOUBLE_SIDED 1u
+// vec4s in a material (glsl/include/material.glsl, GpuMaterial); info is the fourth.
+#define ML_GPU_MATERIAL_VEC4S (4 + 2 * ML_TEXTURE_SLOTS)
 // Radix sort (glsl/radix_sort.comp) and z-binning (--assign zbin, glsl/zbin_assign.comp). Kept
 // below 32: llvmpipe offers 32 storage-buffer bindings.
 #define ML_SSBO_RADIX_KEYS_IN 20       // keys to sort (one pass reads these...)
@@ -223,6 +244,7 @@
 #define ML_BLOOM_RADIUS 8
 #define ML_IMG_BLOOM_IN 5
 #define ML_IMG_BLOOM_OUT 6
+#define ML_IMG_RASTER_DEPTH 5    // the compute raster's depth (R32F), shared with bloom's input
 #define ML_IMG_VISIBILITY_IDS 7  // the visibility raster's triangle ids, written by image atomics (visibility.frag)
 #define ML_TEX_OVERDRAW_COUNTS 10 // --view overdraw: the per-pixel fragment counts, read by its colour pass
 

@@ -8,7 +8,7 @@ struct Material {
     vec4 emissiveCutoff;   // rgb: emissive factor times strength, a: alpha cutoff
     vec4 factors;          // metallic, roughness, normal scale, occlusion strength
     uvec4 info;            // x: slots with a texture (bit per ML_SLOT_*), y: slots reading TEXCOORD_1,
-                           // z: texture set + 1 (0: none), w: unused
+                           // z: texture set + 1 (0: none), w: ML_MATERIAL_* bits
     // Per slot, KHR_texture_transform as uv' = mat2(xy, zw) * uv + offset: [2 slot] the matrix's
     // columns, [2 slot + 1].xy the offset.
     vec4 uvTransforms[2 * ML_TEXTURE_SLOTS];

@@ -181,7 +181,7 @@ void ClusteredLighting::build(const FrameContext& ctx, const GBuffer* gbuffer) {
     const std::uint32_t clusters = grid_.clusterCount();
     ensureStorage(clusters);
     gridBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_CLUSTER_GRID);
-    glBindTextureUnit(ML_TEX_DEPTH, ctx.targets.depth().id());
+    glBindTextureUnit(ML_TEX_DEPTH, ctx.targets.opaqueDepth().id());
     const GLuint screenX = gl::groupsFor(ctx.targets.width(), ML_SCREEN_TILE);
     const GLuint screenY = gl::groupsFor(ctx.targets.height(), ML_SCREEN_TILE);
 
@@ -300,7 +300,7 @@ void ClusteredLighting::markTransparentSamples(const FrameContext& ctx, unsigned
     ctx.scene.drawTransparent(transparentSamples_, glm::vec3(ctx.uniforms.cameraPos));
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glDepthMask(GL_TRUE);
-    glBindTextureUnit(ML_TEX_DEPTH, ctx.targets.depth().id());
+    glBindTextureUnit(ML_TEX_DEPTH, ctx.targets.opaqueDepth().id());
     glMemoryBarrier(kComputeToCompute);
 }
 

@@ -39,7 +39,7 @@ ZBinAssignment::ZBinAssignment(bool spotLights, const std::pair<std::string, std
 void ZBinAssignment::build(const FrameContext& ctx, const ClusterGrid& grid, std::size_t maxStorageBlock) {
     grid_ = grid;
     lights_ = ctx.lights.count();
-    depth_ = ctx.targets.depth().id();
+    depth_ = ctx.targets.opaqueDepth().id();
     width_ = ctx.targets.width();
     height_ = ctx.targets.height();
     const std::uint32_t tiles = grid.tilesX * grid.tilesY;

@@ -77,7 +77,8 @@ std::unique_ptr<ShadingMethod> createMethod(const MethodSettings& settings, std:
     case MethodKind::Deferred:
         return std::make_unique<ClusteredDeferred>(settings.clustering, settings.resolve, settings.gbuffer, materialFeatures, transparency);
     case MethodKind::Visibility:
-        return std::make_unique<VisibilityBuffer>(settings.clustering, settings.gbuffer, materialFeatures, transparency);
+        return std::make_unique<VisibilityBuffer>(settings.clustering, settings.gbuffer, materialFeatures, transparency,
+                                                  ComputeRaster::resolve(settings.visibilityRaster));
     }
     throw std::invalid_argument("unhandled method");
 }

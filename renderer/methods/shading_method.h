@@ -9,6 +9,7 @@
 #include "renderer/clustering/clustering_settings.h"
 #include "renderer/frame_context.h"
 #include "renderer/gbuffer_format.h"
+#include "renderer/methods/visibility_raster.h"
 
 namespace ml {
 
@@ -51,6 +52,8 @@ struct MethodSettings {
     // Bytes the transparent pass's capture may take (renderer/passes/glass_fragments.h); 0: this
     // GPU's storage-buffer limit. Tests lower it to see a frame refused.
     std::size_t transparentCaptureBudget = 0;
+    // Visibility: --vis-raster (auto: compute where the GPU has 64-bit atomics).
+    VisibilityRaster visibilityRaster = VisibilityRaster::Auto;
 };
 
 // Why a method cannot draw with --msaa above 1, or null where it can (naive, forward-plus).

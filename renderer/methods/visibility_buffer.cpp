@@ -6,8 +6,9 @@
 namespace ml {
 
 VisibilityBuffer::VisibilityBuffer(const ClusteringSettings& settings, GBufferFormat gbuffer, std::uint32_t materialFeatures,
-                                   const TransparencySettings& transparency)
-    : gbuffer_(gbuffer, materialFeatures),
+                                   const TransparencySettings& transparency, VisibilityRaster raster)
+    : raster_(raster),
+      gbuffer_(gbuffer, materialFeatures),
       rasterProgram_("visibility.raster", {{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "visibility.frag"}},
                      materialFeatures, RasterProgram::Reads::CoverageOnly),
       clearIdsProgram_(gl::Program::compute("visibility_clear_ids.comp")),
@@ -15,7 +16,10 @@ VisibilityBuffer::VisibilityBuffer(const ClusteringSettings& settings, GBufferFo
       resolveProgram_(gl::Program::compute("visibility_resolve.comp", gbuffer_.defines())),
       lightingProgram_(gl::Program::compute("deferred_lighting.comp", deferredLightingDefines(settings, gbuffer_))),
       clustering_(settings, materialFeatures, gbuffer_.defines()),
-      transparent_(TransparentPass::overClusterLists("visibility.transparent", materialFeatures, settings, transparency)) {}
+      transparent_(TransparentPass::overClusterLists("visibility.transparent", materialFeatures, settings, transparency)) {
+    if (raster_ != VisibilityRaster::Hardware)
+        computeRaster_ = std::make_unique<ComputeRaster>(materialFeatures, raster_ == VisibilityRaster::Compute);
+}
 
 void VisibilityBuffer::prepareTargets(const FrameTargets& frame) {
     if (!stamp_.update(frame)) return;
@@ -41,32 +45,37 @@ void VisibilityBuffer::classifyTiles(std::size_t slots, GLuint groupsX, GLuint g
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, resolveDispatch_.id());
 }
 
+void VisibilityBuffer::rasterInHardware(const FrameContext& ctx) {
+    // The ids by compute (the ROPs' clear costs a full-screen layer of writes on an H100);
+    // the opaque ranges' atomics keep the largest id (visibility.frag).
+    clearIdsProgram_.use();
+    glBindImageTexture(ML_IMG_VISIBILITY_IDS, triangleIds_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
+    glDispatchCompute(gl::groupsFor(stamp_.width(), ML_SCREEN_TILE), gl::groupsFor(stamp_.height(), ML_SCREEN_TILE), 1);
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    depthFbo_.bind();
+    glViewport(0, 0, ctx.targets.width(), ctx.targets.height());
+    const float clearDepth = 1.0f;
+    glClearNamedFramebufferfv(depthFbo_.id(), GL_DEPTH, 0, &clearDepth);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    ctx.scene.draw(rasterProgram_, SceneGpu::Ranges::Opaque);
+    if (ctx.scene.hasAlphaTestedRanges()) {
+        // Drawn last, through the ROPs: their ids overwrite where they pass the depth test.
+        glMemoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT);
+        fbo_.bind();
+        ctx.scene.draw(rasterProgram_, SceneGpu::Ranges::AlphaTested);
+    }
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+}
+
 void VisibilityBuffer::render(const FrameContext& ctx) {
     prepareTargets(ctx.targets);
     gbuffer_.prepare(ctx.targets);
     {
         auto pass = ctx.timer.pass("visibility.raster");
-        // The ids by compute (the ROPs' clear costs a full-screen layer of writes on an H100);
-        // the opaque ranges' atomics keep the largest id (visibility.frag).
-        clearIdsProgram_.use();
-        glBindImageTexture(ML_IMG_VISIBILITY_IDS, triangleIds_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
-        glDispatchCompute(gl::groupsFor(stamp_.width(), ML_SCREEN_TILE), gl::groupsFor(stamp_.height(), ML_SCREEN_TILE), 1);
-        glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-        depthFbo_.bind();
-        glViewport(0, 0, ctx.targets.width(), ctx.targets.height());
-        const float clearDepth = 1.0f;
-        glClearNamedFramebufferfv(depthFbo_.id(), GL_DEPTH, 0, &clearDepth);
-        glEnable(GL_DEPTH_TEST);
-        glDepthFunc(GL_LESS);
-        glDepthMask(GL_TRUE);
-        ctx.scene.draw(rasterProgram_, SceneGpu::Ranges::Opaque);
-        if (ctx.scene.hasAlphaTestedRanges()) {
-            // Drawn last, through the ROPs: their ids overwrite where they pass the depth test.
-            glMemoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT);
-            fbo_.bind();
-            ctx.scene.draw(rasterProgram_, SceneGpu::Ranges::AlphaTested);
-        }
-        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+        if (computeRaster_) computeRaster_->run(ctx, triangleIds_);
+        else rasterInHardware(ctx);
     }
     // The depth is final: the glass is counted now, its total long known when the fill needs it.
     transparent_.countFragments(ctx, clustering_.settings().view);

@@ -5,6 +5,7 @@
 // target + depth took 0.9 ms where three RGBA16F targets took 2.6-7.1 ms) raster work is kept small.
 #pragma once
 
+#include <memory>
 #include <vector>
 
 #include "renderer/clustering/clustered_lighting.h"
@@ -16,6 +17,7 @@
 #include "renderer/gbuffer.h"
 #include "renderer/methods/shading_method.h"
 #include "renderer/scene/raster_program.h"
+#include "renderer/passes/compute_raster.h"
 #include "renderer/passes/transparent_pass.h"
 
 namespace ml {
@@ -23,8 +25,13 @@ namespace ml {
 class VisibilityBuffer final : public ShadingMethod {
 public:
     VisibilityBuffer(const ClusteringSettings& settings, GBufferFormat gbuffer, std::uint32_t materialFeatures,
-                     const TransparencySettings& transparency = {});
+                     const TransparencySettings& transparency = {}, VisibilityRaster raster = VisibilityRaster::Hardware);
     std::string name() const override { return "visibility"; }
+    // Hardware, Compute or ComputeTwoPass (ComputeRaster::resolve has settled Auto).
+    VisibilityRaster raster() const { return raster_; }
+    const ComputeRaster* computeRaster() const { return computeRaster_.get(); }
+    // The last frame's ids: triangle index + 1 per pixel, 0 where nothing was drawn.
+    const gl::Texture2D& triangleIds() const { return triangleIds_; }
     void render(const FrameContext& ctx) override;
     const GlassFragments* transparentCapture() const override { return transparent_.capture(); }
     const ClusteredLighting* clustering() const override { return &clustering_; }
@@ -34,12 +41,15 @@ public:
 
 private:
     void prepareTargets(const FrameTargets& frame);
+    void rasterInHardware(const FrameContext& ctx);
     // Lists, per texture-set slot, the screen tiles whose pixels need it (visibility_classify.comp),
     // and leaves the indirect dispatches bound for the resolve.
     void classifyTiles(std::size_t slots, GLuint groupsX, GLuint groupsY);
 
+    VisibilityRaster raster_;
     GBuffer gbuffer_;
     RasterProgram rasterProgram_;
+    std::unique_ptr<ComputeRaster> computeRaster_;  // --vis-raster compute
     gl::Program clearIdsProgram_;
     gl::Program classifyProgram_;
     gl::Program resolveProgram_;

@@ -125,6 +125,7 @@ SceneGpu::SceneGpu(const Scene& scene, TriangleOrder order) : features_(ml::mate
             index = it->second;
         }
         g.info.z = static_cast<std::uint32_t>(index + 1);
+        if (m.doubleSided) g.info.w |= ML_MATERIAL_DOUBLE_SIDED;
         materials.push_back(g);
         materialSet.push_back(index);
     }
@@ -192,6 +193,7 @@ SceneGpu::SceneGpu(const Scene& scene, TriangleOrder order) : features_(ml::mate
             transparent_.push_back(t);
             continue;
         }
+        if (!g.alphaTested) opaqueTriangles_ += d.indexCount / 3;
         if (groups_.empty() || groups_.back().key() != g.key()) {
             groups_.push_back(g);
             groups_.back().firstRange = i;
@@ -344,6 +346,27 @@ std::optional<glm::vec2> SceneGpu::transparentDepthRange(const glm::mat4& view, 
     }
     if (hi < cameraNear || lo > cameraFar) return std::nullopt;
     return glm::vec2(std::max(lo, cameraNear), std::min(hi, cameraFar));
+}
+
+std::optional<glm::ivec4> SceneGpu::transparentScreenRect(const glm::mat4& viewProj, int width, int height) const {
+    if (!hasTransparent()) return std::nullopt;
+    glm::vec2 lo(std::numeric_limits<float>::max()), hi(std::numeric_limits<float>::lowest());
+    for (const TransparentRange& r : transparent_) {
+        for (int k = 0; k < 8; ++k) {
+            const glm::vec3 p((k & 1) ? r.bounds.max.x : r.bounds.min.x, (k & 2) ? r.bounds.max.y : r.bounds.min.y,
+                              (k & 4) ? r.bounds.max.z : r.bounds.min.z);
+            const glm::vec4 clip = viewProj * glm::vec4(p, 1.0f);
+            if (clip.w <= 0.0f) return glm::ivec4(0, 0, width, height);
+            const glm::vec2 window = (glm::vec2(clip) / clip.w * 0.5f + 0.5f) * glm::vec2(width, height);
+            lo = glm::min(lo, window);
+            hi = glm::max(hi, window);
+        }
+    }
+    // Widened by a pixel each side: the box's projection is exact, the rounding of it is not.
+    const glm::ivec2 a = glm::max(glm::ivec2(glm::floor(glm::max(lo, glm::vec2(-1.0f)))) - 1, glm::ivec2(0));
+    const glm::ivec2 b = glm::min(glm::ivec2(glm::ceil(glm::min(hi, glm::vec2(width + 1, height + 1)))) + 1, glm::ivec2(width, height));
+    if (a.x >= b.x || a.y >= b.y) return std::nullopt;
+    return glm::ivec4(a, b - a);
 }
 
 void SceneGpu::unbindSamplers() const {

@@ -59,6 +59,9 @@ public:
     enum class Ranges { All, Opaque, AlphaTested };
     void draw(const RasterProgram& program, Ranges which = Ranges::All) const;
     bool hasAlphaTestedRanges() const;
+    // Triangles of the ranges draw(Ranges::Opaque) draws: the index buffer's first ones, since
+    // opaque ranges come first (the visibility buffer's compute raster reads them as one list).
+    std::size_t opaqueTriangleCount() const { return opaqueTriangles_; }
 
     // Transparent (glTF BLEND) draw ranges, drawn after the opaque frame by drawTransparent and by
     // nothing else. Off (--transparency off), the scene draws as if it had none.
@@ -83,6 +86,10 @@ public:
     // the opaque depth buffer does not see those surfaces. Empty without transparent ranges or
     // when they all lie outside the camera's range.
     std::optional<glm::vec2> transparentDepthRange(const glm::mat4& view, float cameraNear, float cameraFar) const;
+    // The window rectangle (x, y, width, height) within a width x height target that holds every
+    // transparent range's projected bounding box; the whole target where a box reaches behind the
+    // eye. Empty without transparent ranges or where they all project outside it.
+    std::optional<glm::ivec4> transparentScreenRect(const glm::mat4& viewProj, int width, int height) const;
     // Draw calls one pass issues with the current submission.
     std::size_t drawCallsPerPass() const;
     std::size_t drawRangeCount() const { return draws_.size(); }
@@ -153,6 +160,7 @@ private:
     gl::Buffer drawParams_;  // per draw range: material, first triangle (8 B)
     gl::Buffer commands_;    // DrawElementsIndirectCommand per draw range, in group order (20 B)
     std::size_t indexCount_ = 0;
+    std::size_t opaqueTriangles_ = 0;
     DrawSubmission submission_ = DrawSubmission::Direct;
     bool backfaceCulling_ = true;
 };

@@ -1,0 +1,29 @@
+#version 450 core
+// The compute raster's hardware list (renderer/passes/compute_raster.h): the triangles it leaves
+// to the hardware (clipped at the eye plane), drawn as one non-indexed list that pulls each
+// triangle's vertices. Outputs what scene.vert gives visibility.frag, the triangle recovered as
+// v_firstTriangle + gl_PrimitiveID.
+#include "include/bindings.h"
+#include "include/frame_uniforms.glsl"
+
+layout(std430, binding = ML_SSBO_VERTICES) readonly buffer Vertices { float vertexData[]; };  // 8 floats a vertex
+layout(std430, binding = ML_SSBO_INDICES) readonly buffer Indices { uint indexData[]; };
+layout(std430, binding = ML_SSBO_TRIANGLE_MATERIALS) readonly buffer TriangleMaterials { uint triangleMaterial[]; };
+layout(std430, binding = ML_SSBO_RASTER_HARDWARE) readonly buffer RasterHardware { uint hardwareTriangles[]; };
+
+layout(location = 0) out vec3 v_worldPos;
+layout(location = 3) flat out uint v_materialIndex;
+layout(location = 4) flat out uint v_firstTriangle;
+
+invariant gl_Position;
+
+void main() {
+    uint primitive = uint(gl_VertexID) / 3u;
+    uint triangle = hardwareTriangles[primitive];
+    uint v = indexData[3u * triangle + uint(gl_VertexID) % 3u];
+    vec3 position = vec3(vertexData[8u * v], vertexData[8u * v + 1u], vertexData[8u * v + 2u]);
+    v_worldPos = position;
+    v_materialIndex = triangleMaterial[triangle];
+    v_firstTriangle = triangle - primitive;
+    gl_Position = u_proj * vec4(mat3(u_view) * (position - u_cameraPos.xyz), 1.0);
+}

@@ -1,0 +1,35 @@
+#version 450 core
+// The compute raster's tile pass (renderer/passes/compute_raster.h): a workgroup per (large
+// triangle, screen tile) from the binning, a pixel per invocation.
+#extension GL_ARB_gpu_shader_int64 : require
+#if ML_RASTER_ATOMIC64
+#extension GL_NV_shader_atomic_int64 : require
+#endif
+#include "include/bindings.h"
+#include "include/frame_uniforms.glsl"
+#include "include/compute_raster.glsl"
+
+layout(local_size_x = ML_RASTER_TILE, local_size_y = ML_RASTER_TILE) in;
+
+layout(std430, binding = ML_SSBO_RASTER_WORK) readonly buffer RasterWork { uint rasterWork[]; };
+layout(std430, binding = ML_SSBO_RASTER_LARGE) readonly buffer RasterLarge { uvec4 largeTriangles[]; };
+layout(std430, binding = ML_SSBO_RASTER_PAIRS) readonly buffer RasterPairs { uvec2 pairs[]; };
+
+uniform uint u_pairCapacity;
+
+void main() {
+    uint count = min(rasterWork[ML_RASTER_WORK_PAIR_COUNT], u_pairCapacity);
+    for (uint pair = gl_WorkGroupID.x; pair < count; pair += gl_NumWorkGroups.x) {
+        uvec2 entry = pairs[pair];
+        uvec4 r0 = largeTriangles[3u * entry.x], r1 = largeTriangles[3u * entry.x + 1u], r2 = largeTriangles[3u * entry.x + 2u];
+        ivec2 pixel = ivec2(entry.y & 0xffffu, entry.y >> 16) * ML_RASTER_TILE + ivec2(gl_LocalInvocationID.xy);
+        if (any(greaterThanEqual(pixel, ivec2(u_viewport.xy)))) continue;
+        RasterTriangle t;
+        t.v0 = ivec2(r0.xy);
+        t.v1 = ivec2(r0.zw);
+        t.v2 = ivec2(r1.xy);
+        t.z = vec3(uintBitsToFloat(r1.zw), uintBitsToFloat(r2.x));
+        float depth;
+        if (rasterCovers64(t, pixel, depth)) rasterStore(pixel, depth, r2.y);
+    }
+}

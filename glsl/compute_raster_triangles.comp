@@ -1,0 +1,124 @@
+#version 450 core
+// The compute raster's first pass (renderer/passes/compute_raster.h): one invocation per opaque
+// triangle sets it up (clip, snap, cull) and rasters it itself where it is small, a pixel at a
+// time; larger ones go to the tile pass's list, and the few the compute raster cannot set up
+// (a vertex at or behind the eye plane, or past the guard band) to the hardware's list. In the
+// id pass of two-pass atomics (ML_RASTER_PASS 1) the lists are already made: it rasters the
+// small ones again and appends nothing.
+#extension GL_ARB_gpu_shader_int64 : require
+#if ML_RASTER_ATOMIC64
+#extension GL_NV_shader_atomic_int64 : require
+#endif
+#include "include/bindings.h"
+#include "include/frame_uniforms.glsl"
+#include "include/compute_raster.glsl"
+
+layout(local_size_x = ML_RASTER_WORKGROUP) in;
+
+layout(std430, binding = ML_SSBO_VERTICES) readonly buffer Vertices { float vertexData[]; };  // 8 floats a vertex
+layout(std430, binding = ML_SSBO_INDICES) readonly buffer Indices { uint indexData[]; };
+layout(std430, binding = ML_SSBO_TRIANGLE_MATERIALS) readonly buffer TriangleMaterials { uint triangleMaterial[]; };
+layout(std430, binding = ML_SSBO_MATERIALS) readonly buffer Materials { uvec4 materialWords[]; };  // GpuMaterial, info at +3
+layout(std430, binding = ML_SSBO_RASTER_WORK) coherent buffer RasterWork { uint rasterWork[]; };
+layout(std430, binding = ML_SSBO_RASTER_LARGE) writeonly buffer RasterLarge { uvec4 largeTriangles[]; };
+layout(std430, binding = ML_SSBO_RASTER_HARDWARE) writeonly buffer RasterHardware { uint hardwareTriangles[]; };
+
+uniform uint u_triangles;      // opaque triangles: the prefix of the index buffer that holds them
+uniform uint u_cullBackFaces;  // --backface-culling: cull single-sided materials' back faces
+uniform uint u_largeCapacity;  // entries largeTriangles holds
+uniform uint u_clipsToViewport;  // the GPU clips triangles at the viewport's sides (no guard band: Mesa's llvmpipe)
+
+vec3 vertexPosition(uint v) { return vec3(vertexData[8u * v], vertexData[8u * v + 1u], vertexData[8u * v + 2u]); }
+
+const float kGuardBand = float(1 << (30 - 2 * ML_SUBPIXEL_BITS));  // window units either side: 64-bit edges stay exact
+
+void toHardware(uint triangle) {
+#if ML_RASTER_PASS == 0
+    uint at = atomicAdd(rasterWork[ML_RASTER_WORK_HARDWARE_DRAW], 3u) / 3u;
+    hardwareTriangles[at] = triangle;
+#endif
+}
+
+void main() {
+    uint triangle = gl_GlobalInvocationID.x;
+    if (triangle >= u_triangles) return;
+    vec4 c0 = rasterClipPosition(vertexPosition(indexData[3u * triangle]));
+    vec4 c1 = rasterClipPosition(vertexPosition(indexData[3u * triangle + 1u]));
+    vec4 c2 = rasterClipPosition(vertexPosition(indexData[3u * triangle + 2u]));
+    // Wholly outside one clip plane: nothing to draw (and nothing for the hardware either).
+    if ((c0.x > c0.w && c1.x > c1.w && c2.x > c2.w) || (c0.x < -c0.w && c1.x < -c1.w && c2.x < -c2.w) ||
+        (c0.y > c0.w && c1.y > c1.w && c2.y > c2.w) || (c0.y < -c0.w && c1.y < -c1.w && c2.y < -c2.w) ||
+        (c0.z > c0.w && c1.z > c1.w && c2.z > c2.w) || (c0.z < -c0.w && c1.z < -c1.w && c2.z < -c2.w))
+        return;
+    if (c0.w <= 0.0 || c1.w <= 0.0 || c2.w <= 0.0) {
+        toHardware(triangle);  // needs clipping at the eye plane
+        return;
+    }
+    vec2 half_ = 0.5 * u_viewport.xy;
+    vec3 w0 = vec3(c0.xyz / c0.w), w1 = vec3(c1.xyz / c1.w), w2 = vec3(c2.xyz / c2.w);
+    vec2 s0 = w0.xy * half_ + half_, s1 = w1.xy * half_ + half_, s2 = w2.xy * half_ + half_;
+    if (any(greaterThan(abs(vec4(s0, s1)), vec4(kGuardBand))) || any(greaterThan(abs(s2), vec2(kGuardBand)))) {
+        toHardware(triangle);
+        return;
+    }
+    // Where the GPU clips at the viewport, the clipped triangle's edges run through re-snapped
+    // vertices: a triangle that crosses a side is left to the hardware, to cover what it covers.
+    if (u_clipsToViewport != 0u && (any(lessThan(min(s0, min(s1, s2)), vec2(0.0))) || any(greaterThan(max(s0, max(s1, s2)), u_viewport.xy)))) {
+        toHardware(triangle);
+        return;
+    }
+    RasterTriangle t;
+    t.v0 = ivec2(roundEven(s0 * float(ML_SUBPIXEL_ONE)));
+    t.v1 = ivec2(roundEven(s1 * float(ML_SUBPIXEL_ONE)));
+    t.v2 = ivec2(roundEven(s2 * float(ML_SUBPIXEL_ONE)));
+    t.z = vec3(w0.z, w1.z, w2.z) * 0.5 + 0.5;
+    int64_t area = int64_t(t.v1.x - t.v0.x) * int64_t(t.v2.y - t.v0.y) - int64_t(t.v1.y - t.v0.y) * int64_t(t.v2.x - t.v0.x);
+    if (area == 0l) return;  // no pixel of a degenerate triangle is drawn
+    if (area < 0l) {
+        // Clockwise: a back face. Wound the other way, it covers the same pixels.
+        uint info = materialWords[triangleMaterial[triangle] * ML_GPU_MATERIAL_VEC4S + 3u].w;
+        if (u_cullBackFaces != 0u && (info & ML_MATERIAL_DOUBLE_SIDED) == 0u) return;
+        ivec2 v = t.v1;
+        t.v1 = t.v2;
+        t.v2 = v;
+        t.z = t.z.xzy;
+    }
+    ivec2 lo, hi;
+    rasterPixelBounds(t, lo, hi);
+    if (any(greaterThan(lo, hi))) return;
+    ivec2 extent = max(t.v0, max(t.v1, t.v2)) - min(t.v0, min(t.v1, t.v2));
+    ivec2 pixels = hi - lo + 1;
+    if (all(lessThanEqual(extent, ivec2(ML_RASTER_SMALL_EXTENT << ML_SUBPIXEL_BITS))) &&
+        pixels.x * pixels.y <= ML_RASTER_SMALL_PIXELS) {
+        // Small: edges relative to v0 stay within 32 bits ((2 * 64 * 2^8)^2 < 2^31).
+        ivec2 a = ivec2(0), b = t.v1 - t.v0, c = t.v2 - t.v0;
+        int bias0 = ownsEdge(t.v1, t.v2) ? 1 : 0, bias1 = ownsEdge(t.v2, t.v0) ? 1 : 0, bias2 = ownsEdge(t.v0, t.v1) ? 1 : 0;
+        for (int y = lo.y; y <= hi.y; ++y) {
+            int py = (y << ML_SUBPIXEL_BITS) + ML_SUBPIXEL_HALF - t.v0.y;
+            for (int x = lo.x; x <= hi.x; ++x) {
+                int px = (x << ML_SUBPIXEL_BITS) + ML_SUBPIXEL_HALF - t.v0.x;
+                int e2 = b.x * py - b.y * px;
+                int e0 = (c.x - b.x) * (py - b.y) - (c.y - b.y) * (px - b.x);
+                int e1 = -c.x * (py - c.y) + c.y * (px - c.x);
+                if (e0 + bias0 <= 0 || e1 + bias1 <= 0 || e2 + bias2 <= 0) continue;
+                float depth = rasterDepth(t, float(e0), float(e1), float(e2));
+                if (depth >= 0.0 && depth < 1.0) rasterStore(ivec2(x, y), depth, triangle);
+            }
+        }
+        return;
+    }
+#if ML_RASTER_PASS == 0
+    // Large: the tile pass rasters it, a workgroup per screen tile it overlaps.
+    uint at = atomicAdd(rasterWork[ML_RASTER_WORK_LARGE_COUNT], 1u);
+    if (at >= u_largeCapacity) {
+        toHardware(triangle);
+        return;
+    }
+    atomicMax(rasterWork[ML_RASTER_WORK_BIN_DISPATCH], min(at + 1u, 65535u));
+    ivec2 tileLo = lo / ML_RASTER_TILE, tileHi = hi / ML_RASTER_TILE;
+    largeTriangles[3u * at] = uvec4(uvec2(t.v0), uvec2(t.v1));
+    largeTriangles[3u * at + 1u] = uvec4(uvec2(t.v2), floatBitsToUint(t.z.xy));
+    largeTriangles[3u * at + 2u] = uvec4(floatBitsToUint(t.z.z), triangle, uint(tileLo.x) | (uint(tileLo.y) << 16),
+                                         uint(tileHi.x) | (uint(tileHi.y) << 16));
+#endif
+}

@@ -1,0 +1,243 @@
+#include "renderer/passes/compute_raster.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "glsl/include/bindings.h"
+#include "renderer/gl/extensions.h"
+#include "renderer/scene/material_features.h"
+
+namespace ml {
+
+namespace {
+
+// Which fill rule this GPU's rasterizer applies, in GL's y-up window coordinates: 0 owns top and
+// left edges, 1 bottom and left ones. Found once by drawing a triangle whose horizontal edges
+// run through pixel centres and reading back which of them it covered.
+int hardwareEdgeRule() {
+    static const int rule = [] {
+        GLuint texture = 0, fbo = 0, vao = 0;
+        glCreateTextures(GL_TEXTURE_2D, 1, &texture);
+        glTextureStorage2D(texture, 1, GL_R8, 4, 4);
+        glCreateFramebuffers(1, &fbo);
+        glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT0, texture, 0);
+        glCreateVertexArrays(1, &vao);
+        const gl::Program probe("compute-raster.edge-rule", {{GL_VERTEX_SHADER, "compute_raster_edge_rule.vert"},
+                                                             {GL_FRAGMENT_SHADER, "compute_raster_edge_rule.frag"}});
+        GLint previousFbo = 0;
+        glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &previousFbo);
+        glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+        glViewport(0, 0, 4, 4);
+        const GLfloat zero[4] = {0, 0, 0, 0};
+        glClearNamedFramebufferfv(fbo, GL_COLOR, 0, zero);
+        glDisable(GL_DEPTH_TEST);
+        glDisable(GL_CULL_FACE);
+        glDisable(GL_BLEND);
+        probe.use();
+        glBindVertexArray(vao);
+        glDrawArrays(GL_TRIANGLES, 0, 6);
+        std::uint8_t pixels[16] = {};
+        glPixelStorei(GL_PACK_ALIGNMENT, 1);
+        glGetTextureImage(texture, 0, GL_RED, GL_UNSIGNED_BYTE, sizeof pixels, pixels);
+        glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(previousFbo));
+        glDeleteVertexArrays(1, &vao);
+        glDeleteFramebuffers(1, &fbo);
+        glDeleteTextures(1, &texture);
+        // The probe's rectangle spans pixel centres y = 1.5 to 2.5 across column 1: its bottom
+        // edge runs through row 1's centre, its top edge through row 2's.
+        return pixels[1 * 4 + 1] != 0 ? 1 : 0;
+    }();
+    return rule;
+}
+
+// Mesa's software rasterizers clip every triangle at the viewport's sides (its draw module has
+// no guard band); hardware rasterizers clip only where a triangle leaves a guard band far wider.
+bool clipsToViewport() {
+    const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+    const std::string name = renderer ? renderer : "";
+    return name.find("llvmpipe") != std::string::npos || name.find("softpipe") != std::string::npos;
+}
+
+int subpixelBits() {
+    GLint bits = 0;
+    glGetIntegerv(GL_SUBPIXEL_BITS, &bits);
+    return std::clamp(bits, 4, 8);
+}
+
+shaders::Defines rasterDefines(bool packed, int pass) {
+    return {{"ML_RASTER_ATOMIC64", packed ? "1" : "0"},
+            {"ML_RASTER_PASS", std::to_string(pass)},
+            {"ML_SUBPIXEL_BITS", std::to_string(subpixelBits())},
+            {"ML_RASTER_EDGE_RULE", std::to_string(hardwareEdgeRule())}};
+}
+
+shaders::Defines withDefine(shaders::Defines defines, const char* name, const char* value) {
+    defines.emplace_back(name, value);
+    return defines;
+}
+
+constexpr GLbitfield kComputeToCompute = GL_SHADER_STORAGE_BARRIER_BIT;
+
+}  // namespace
+
+bool ComputeRaster::supported() { return gl::hasExtension("GL_ARB_gpu_shader_int64"); }
+bool ComputeRaster::hasPackedAtomics() { return supported() && gl::hasExtension("GL_NV_shader_atomic_int64"); }
+
+VisibilityRaster ComputeRaster::resolve(VisibilityRaster choice) {
+    switch (choice) {
+    case VisibilityRaster::Auto: return hasPackedAtomics() ? VisibilityRaster::Compute : VisibilityRaster::Hardware;
+    case VisibilityRaster::Hardware: return choice;
+    case VisibilityRaster::Compute:
+    case VisibilityRaster::ComputeTwoPass:
+        if (!supported())
+            throw std::invalid_argument(std::string("--vis-raster ") + visibilityRasterName(choice) +
+                                        ": this GPU lacks GL_ARB_gpu_shader_int64 (use hardware)");
+        return choice == VisibilityRaster::Compute && !hasPackedAtomics() ? VisibilityRaster::ComputeTwoPass : choice;
+    }
+    return VisibilityRaster::Hardware;
+}
+
+ComputeRaster::ComputeRaster(std::uint32_t materialFeatures, bool packedAtomics)
+    : packed_(packedAtomics), passes_(packedAtomics ? 1 : 2), clipsToViewport_(clipsToViewport()) {
+    for (int pass = 0; pass < passes_; ++pass) {
+        const shaders::Defines defines = rasterDefines(packed_, pass);
+        const std::string suffix = passes_ == 1 ? "" : (pass == 0 ? ".depth" : ".ids");
+        setup_[pass] = gl::Program::compute("compute_raster_triangles.comp", defines);
+        tiles_[pass] = gl::Program::compute("compute_raster_tiles.comp", defines);
+        const shaders::Defines fragment = withDefine(defines, "ML_COMPUTE_RASTER", "1");
+        shaders::Defines list = withDefine(fragment, "ML_RASTER_HARDWARE_LIST", "1");
+        const shaders::Defines features = materialFeatureDefines(materialFeatures);
+        list.insert(list.end(), features.begin(), features.end());
+        hardwareList_[pass] = gl::Program("visibility.compute-raster.hardware" + suffix,
+                                          {{GL_VERTEX_SHADER, "compute_raster_hardware.vert"}, {GL_FRAGMENT_SHADER, "visibility.frag"}},
+                                          list);
+        if (materialFeatures & ML_FEATURE_ALPHA_TEST)
+            alphaTested_[pass] = RasterProgram("visibility.compute-raster" + suffix,
+                                               {{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "visibility.frag"}},
+                                               materialFeatures, RasterProgram::Reads::CoverageOnly, fragment);
+    }
+    bin_ = gl::Program::compute("compute_raster_bin.comp");
+    finish_ = gl::Program::compute("compute_raster_finish.comp", rasterDefines(packed_, 0));
+    if (materialFeatures & ML_FEATURE_BLEND)
+        depthCopy_ = gl::Program("visibility.compute-raster.depth-copy",
+                                 {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "compute_raster_depth.frag"}});
+    GLuint vao = 0;
+    glCreateVertexArrays(1, &vao);
+    emptyVao_ = gl::Handle<gl::VertexArrayDeleter>(vao);
+    work_ = gl::Buffer("compute-raster.work", ML_RASTER_WORK_WORDS * sizeof(GLuint));
+}
+
+void ComputeRaster::prepare(const FrameContext& ctx) {
+    if (stamp_.update(ctx.targets)) {
+        const std::size_t pixels = std::size_t(stamp_.width()) * std::size_t(stamp_.height());
+        // The store starts (and every finish leaves it) at all ones: nothing drawn.
+        store_ = gl::Buffer("compute-raster.store", pixels * 8, nullptr, 0);
+        const GLuint ones = ~0u;
+        glClearNamedBufferData(store_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &ones);
+        depth_ = gl::Texture2D("compute-raster.depth", GL_R32F, stamp_.width(), stamp_.height());
+        depthFbo_ = gl::Framebuffer("compute-raster.depth-copy", {}, &ctx.targets.depth());
+        // Pairs: up to four layers of the screen's tiles; a triangle past it goes to the hardware.
+        const std::size_t tiles = std::size_t(gl::groupsFor(stamp_.width(), ML_RASTER_TILE)) * gl::groupsFor(stamp_.height(), ML_RASTER_TILE);
+        pairCapacity_ = std::max<std::size_t>(4 * tiles, 1u << 16);
+        pairs_ = gl::Buffer("compute-raster.pairs", pairCapacity_ * 8, nullptr, 0);
+    }
+    if (ctx.scene.triangleCount() != sceneTriangles_) {
+        sceneTriangles_ = ctx.scene.triangleCount();
+        largeCapacity_ = std::max<std::size_t>(sceneTriangles_, 1);
+        large_ = gl::Buffer("compute-raster.large", largeCapacity_ * 48, nullptr, 0);
+        hardware_ = gl::Buffer("compute-raster.hardware", largeCapacity_ * 4, nullptr, 0);
+    }
+    const GLuint initial[ML_RASTER_WORK_WORDS] = {0, 1, 0, 0, 0, 1, 1, 0, 1, 1, 0, 0};
+    work_.upload(initial, sizeof initial);
+}
+
+void ComputeRaster::run(const FrameContext& ctx, const gl::Texture2D& ids) {
+    prepare(ctx);
+    ctx.scene.bindGeometryStorage();
+    store_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_RASTER_DEPTH_IDS);
+    work_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_RASTER_WORK);
+    large_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_RASTER_LARGE);
+    pairs_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_RASTER_PAIRS);
+    hardware_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_RASTER_HARDWARE);
+    for (int pass = 0; pass < passes_; ++pass) rasterPass(ctx, pass);
+
+    finish_.use();
+    glBindImageTexture(ML_IMG_VISIBILITY_IDS, ids.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32UI);
+    glBindImageTexture(ML_IMG_RASTER_DEPTH, depth_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
+    glDispatchCompute(gl::groupsFor(stamp_.width(), ML_SCREEN_TILE), gl::groupsFor(stamp_.height(), ML_SCREEN_TILE), 1);
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | kComputeToCompute);
+    ctx.targets.setComputedDepth(&depth_);
+    if (ctx.scene.hasTransparent()) copyDepthUnderGlass(ctx);
+}
+
+void ComputeRaster::rasterPass(const FrameContext& ctx, int pass) {
+    const GLuint opaque = static_cast<GLuint>(ctx.scene.opaqueTriangleCount());
+    gl::Program& setup = setup_[pass];
+    setup.use();
+    setup.set("u_triangles", opaque);
+    setup.set("u_cullBackFaces", ctx.scene.backfaceCulling() ? 1u : 0u);
+    setup.set("u_largeCapacity", static_cast<GLuint>(largeCapacity_));
+    setup.set("u_clipsToViewport", clipsToViewport_ ? 1u : 0u);
+    glDispatchCompute(gl::groupsFor(opaque, ML_RASTER_WORKGROUP), 1, 1);
+    glMemoryBarrier(kComputeToCompute | GL_COMMAND_BARRIER_BIT);
+
+    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, work_.id());
+    if (pass == 0) {
+        bin_.use();
+        bin_.set("u_largeCapacity", static_cast<GLuint>(largeCapacity_));
+        bin_.set("u_pairCapacity", static_cast<GLuint>(pairCapacity_));
+        glDispatchComputeIndirect(ML_RASTER_WORK_BIN_DISPATCH * sizeof(GLuint));
+        glMemoryBarrier(kComputeToCompute | GL_COMMAND_BARRIER_BIT);
+    }
+    tiles_[pass].use();
+    tiles_[pass].set("u_pairCapacity", static_cast<GLuint>(pairCapacity_));
+    glDispatchComputeIndirect(ML_RASTER_WORK_TILE_DISPATCH * sizeof(GLuint));
+    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
+
+    // The hardware's share, into the same store: no depth test, no colour, no depth write.
+    depthFbo_.bind();
+    glViewport(0, 0, stamp_.width(), stamp_.height());
+    glDisable(GL_DEPTH_TEST);
+    glDepthMask(GL_FALSE);
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    glMemoryBarrier(kComputeToCompute);
+    hardwareList_[pass].use();
+    hardwareList_[pass].set("u_cullBackFaces", ctx.scene.backfaceCulling() ? 1u : 0u);
+    glDisable(GL_CULL_FACE);
+    glBindVertexArray(emptyVao_.id());
+    glBindBuffer(GL_DRAW_INDIRECT_BUFFER, work_.id());
+    glDrawArraysIndirect(GL_TRIANGLES, reinterpret_cast<const void*>(std::uintptr_t(ML_RASTER_WORK_HARDWARE_DRAW * sizeof(GLuint))));
+    glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
+    if (alphaTested_[pass].variant(true) && ctx.scene.hasAlphaTestedRanges()) ctx.scene.draw(alphaTested_[pass], SceneGpu::Ranges::AlphaTested);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glDepthMask(GL_TRUE);
+    glMemoryBarrier(kComputeToCompute);
+}
+
+void ComputeRaster::copyDepthUnderGlass(const FrameContext& ctx) {
+    const auto rect = ctx.scene.transparentScreenRect(ctx.uniforms.viewProj, stamp_.width(), stamp_.height());
+    if (!rect) return;
+    depthFbo_.bind();
+    glViewport(0, 0, stamp_.width(), stamp_.height());
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(rect->x, rect->y, rect->z, rect->w);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_ALWAYS);
+    glDepthMask(GL_TRUE);
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    depthCopy_.use();
+    glBindTextureUnit(ML_TEX_DEPTH, depth_.id());
+    glBindVertexArray(emptyVao_.id());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glDepthFunc(GL_LESS);
+    glDisable(GL_SCISSOR_TEST);
+}
+
+std::uint32_t ComputeRaster::hardwareTriangles() const {
+    std::uint32_t vertices = 0;
+    work_.download(&vertices, sizeof vertices, ML_RASTER_WORK_HARDWARE_DRAW * sizeof(GLuint));
+    return vertices / 3;
+}
+
+}  // namespace ml

@@ -1,0 +1,80 @@
+// The visibility buffer's compute raster (--vis-raster compute): the opaque triangles rastered by
+// compute shaders instead of the graphics units, which on an H100 (few of them, 132 SMs) cannot
+// write a depth-tested pixel faster than a floor the scene's raster already sits on
+// (`manylights raster-floors`, docs/benchmarks.md).
+//
+//   setup (a thread per triangle) ──small──> rastered there, pixel by pixel
+//        │                         ──large──> binning ──> tile pass (a workgroup per triangle and 16x16 tile)
+//        └─ a vertex at or behind the eye plane ──> the hardware, into the same store (no depth buffer)
+//   alpha-tested ranges ──> the hardware, into the same store
+//   finish: the store ──> the id target (index + 1) and an R32F depth, the store reset
+//
+// Which pixels a triangle covers and at what depth follows the hardware's rules (snapped
+// vertices, the fill rule, the depth plane; glsl/include/compute_raster.glsl), so the ids equal
+// the hardware raster's but where two surfaces tie in depth. The store resolves nearest depth,
+// then smallest id (the first drawn, as GL_LESS keeps) by one 64-bit atomicMin where the GPU has
+// GL_NV_shader_atomic_int64, or by two passes of 32-bit atomics (depth, then id) where it has not,
+// as on Mesa's llvmpipe, so the tests run the same raster.
+//
+// The depth is a colour target, which the passes that sample depth read (FrameTargets::opaqueDepth);
+// the transparent passes depth-test in hardware, so where the scene has glass it is copied into
+// the depth buffer over the glass's screen bounds alone.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "renderer/frame_context.h"
+#include "renderer/frame_targets_stamp.h"
+#include "renderer/gl/buffer.h"
+#include "renderer/gl/framebuffer.h"
+#include "renderer/gl/program.h"
+#include "renderer/gl/texture.h"
+#include "renderer/methods/visibility_raster.h"
+#include "renderer/scene/raster_program.h"
+
+namespace ml {
+
+
+class ComputeRaster {
+public:
+    // What this GPU can run: the compute raster needs GL_ARB_gpu_shader_int64 (its edges), and
+    // resolves in one pass with GL_NV_shader_atomic_int64.
+    static bool supported();
+    static bool hasPackedAtomics();
+    // The raster `choice` runs on this GPU: Auto and Compute resolved. Throws
+    // std::invalid_argument naming the flag where this GPU cannot run the compute raster.
+    static VisibilityRaster resolve(VisibilityRaster choice);
+
+    ComputeRaster(std::uint32_t materialFeatures, bool packedAtomics);
+
+    // Rasters the scene's opaque and alpha-tested ranges into `ids` (triangle index + 1, 0 where
+    // nothing is) and depth(); where the scene has glass, copies the depth into the frame's depth
+    // buffer under it. Sets ctx.targets' opaque depth to depth().
+    void run(const FrameContext& ctx, const gl::Texture2D& ids);
+    const gl::Texture2D& depth() const { return depth_; }
+
+    // Triangles of the last frame that went to the hardware list (a GPU read; tests).
+    std::uint32_t hardwareTriangles() const;
+
+private:
+    void prepare(const FrameContext& ctx);
+    void rasterPass(const FrameContext& ctx, int pass);
+    void copyDepthUnderGlass(const FrameContext& ctx);
+
+    bool packed_;
+    int passes_;
+    bool clipsToViewport_;
+    gl::Program setup_[2], tiles_[2], bin_, finish_, depthCopy_;
+    gl::Program hardwareList_[2];
+    RasterProgram alphaTested_[2];
+    gl::Handle<gl::VertexArrayDeleter> emptyVao_;
+    gl::Buffer store_, work_, large_, pairs_, hardware_;
+    std::size_t largeCapacity_ = 0, pairCapacity_ = 0;
+    gl::Texture2D depth_;
+    gl::Framebuffer depthFbo_;
+    FrameTargetsStamp stamp_;
+    std::size_t sceneTriangles_ = 0;
+};
+
+}  // namespace ml
