@@ -10,6 +10,7 @@
 #include "app/camera_track.h"
 #include "app/bench/sample_spread.h"
 #include "app/bench/sm_clock.h"
+#include "renderer/methods/visibility_buffer.h"
 #include "renderer/clustering/clustered_lighting.h"
 #include "renderer/clustering/cull_accuracy.h"
 #include "renderer/context/gl_context.h"
@@ -122,6 +123,8 @@ BenchRow configColumns(const BenchPoint& p, int index, std::uint32_t frame, cons
     row["prepass"] = p.forwardPlus ? nlohmann::ordered_json(o.prepass) : nlohmann::ordered_json();
     row["msaa"] = p.gbuffered ? nlohmann::ordered_json() : nlohmann::ordered_json(o.msaa);
     row["resolve"] = p.deferred ? nlohmann::ordered_json(o.resolve) : nlohmann::ordered_json();
+    // As asked; the point's run replaces it with what ran (auto resolved for this GPU).
+    row["vis_raster"] = p.visibility ? nlohmann::ordered_json(o.visRaster) : nlohmann::ordered_json();
     row["draw"] = o.draw;
     row["backface_culling"] = o.backfaceCulling;
     row["transparency"] = o.transparency;
@@ -247,6 +250,8 @@ void BenchRunner::measureInto(BenchRow& row, const BenchPoint& point) {
     renderer_->setDrawSubmission(f.settings.draw);
     renderer_->render(first);  // applies it, so the scene reports its draw calls
     row["draw_calls"] = renderer_->scene().drawCallsPerPass();
+    if (const auto* visibility = dynamic_cast<const VisibilityBuffer*>(&renderer_->method()))
+        row["vis_raster"] = visibilityRasterName(visibility->raster());
 
     auto renderFrame = [&](std::uint32_t frame) {
         renderer_->setCamera(track.at(frame));

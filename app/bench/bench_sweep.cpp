@@ -77,7 +77,7 @@ RadiusSpec asRadius(const json& v) {
 // ---- scene, a light set and a naive reference; method-level axes innermost.
 
 enum class ValueKind { Text, Integer, Number, Boolean, Radius, NumberOrAuto };
-enum class Applies { Always, Clustered, Deferred, GBuffered, ForwardPlus, Capped, ExactGBuffered, Forward };
+enum class Applies { Always, Clustered, Deferred, GBuffered, ForwardPlus, Capped, ExactGBuffered, Forward, Visibility };
 
 struct AxisDef {
     SweepAxis info;
@@ -187,6 +187,7 @@ const std::vector<AxisDef>& axisDefs() {
              p.deferred = kind == MethodKind::Deferred;
              p.gbuffered = kind == MethodKind::Deferred || kind == MethodKind::Visibility;
              p.forwardPlus = kind == MethodKind::ForwardPlus;
+             p.visibility = kind == MethodKind::Visibility;
          }},
         {{"gbuffer", "--gbuffer", "G-buffer of deferred and visibility: exact, standard, packed, two-component"}, ValueKind::Text,
          Applies::GBuffered,
@@ -199,6 +200,12 @@ const std::vector<AxisDef>& axisDefs() {
         {{"msaa", "--msaa", "samples per pixel of naive and forward-plus: 1, 2, 4, 8 (deferred and visibility store one)"},
          ValueKind::Integer, Applies::Forward,
          [](BenchPoint& p, const json& v) { p.frame.msaa = validMsaa(asInteger(v, 1, 8)); }},
+        {{"vis_raster", "--vis-raster", "visibility's raster: auto, hardware, compute, compute-two-pass"}, ValueKind::Text,
+         Applies::Visibility,
+         [](BenchPoint& p, const json& v) {
+             (void)parseVisibilityRaster(asText(v));
+             p.frame.visRaster = v.get<std::string>();
+         }},
         {{"resolve", "--resolve", "deferred lighting pass: compute or fragment"}, ValueKind::Text, Applies::Deferred,
          [](BenchPoint& p, const json& v) {
              (void)parseResolve(asText(v));
@@ -278,6 +285,7 @@ bool applies(const AxisDef& axis, const BenchPoint& p) {
     case Applies::Capped: return p.capped;
     case Applies::ExactGBuffered: return p.gbuffered && !p.capped;  // normal_cones: exact lists of a G-buffer
     case Applies::Forward: return !p.gbuffered;                       // msaa: naive and forward-plus
+    case Applies::Visibility: return p.visibility;
     }
     return true;
 }
@@ -398,6 +406,7 @@ std::string describePoint(const BenchPoint& p) {
     }
     if (p.deferred) s += ", " + o.resolve + " resolve";
     if (p.gbuffered) s += ", " + o.gbuffer + " G-buffer";
+    if (p.visibility && o.visRaster != FrameOptions{}.visRaster) s += ", " + o.visRaster + " raster";
     if (p.forwardPlus && o.prepass == "off") s += ", no pre-pass";
     if (o.msaa > 1) s += ", MSAA " + std::to_string(o.msaa);
     if (o.specular == "off") s += ", specular off";
@@ -563,6 +572,7 @@ Sweep expandSweep(const json& doc, const json& overrides, const std::vector<std:
             if (!p.capped) p.frame.maxPerCluster = FrameOptions{}.maxPerCluster;
             if (!p.gbuffered || p.capped) p.frame.normalCones = false;
             if (!p.deferred) p.frame.resolve = FrameOptions{}.resolve;
+            if (!p.visibility) p.frame.visRaster = FrameOptions{}.visRaster;
             if (!p.gbuffered) p.frame.gbuffer = FrameOptions{}.gbuffer;
             if (!p.forwardPlus) p.frame.prepass = FrameOptions{}.prepass;
             if (p.frame.msaa > 1 && p.gbuffered)

@@ -47,8 +47,8 @@ uint rasterPixelCount() { return uint(u_viewport.x) * uint(u_viewport.y); }
 void rasterStore(ivec2 pixel, float depth, uint triangle) {
     uint at = uint(pixel.y) * uint(u_viewport.x) + uint(pixel.x);
 #if ML_RASTER_ATOMIC64
-    uint64_t packed = packUint2x32(uvec2(triangle, floatBitsToUint(depth)));
-    if (packed < depthIds[at]) atomicMin(depthIds[at], packed);
+    uint64_t word = packUint2x32(uvec2(triangle, floatBitsToUint(depth)));
+    if (word < depthIds[at]) atomicMin(depthIds[at], word);
 #elif ML_RASTER_PASS == 0
     uint bits = floatBitsToUint(depth);
     if (bits < depthIds[at]) atomicMin(depthIds[at], bits);
