@@ -1,7 +1,8 @@
 #version 450 core
 // The compute raster's binning (renderer/passes/compute_raster.h): a workgroup per large
 // triangle lists (triangle, tile) for every screen tile its pixel bounds overlap, for the tile
-// pass. A triangle whose tiles do not fit the list goes to the hardware's list instead.
+// pass, and for every triangle of the clipped list (ML_RASTER_CLIPPED_PAIR marks them). A
+// triangle whose tiles do not fit the list goes to the hardware's list instead.
 #include "include/bindings.h"
 
 layout(local_size_x = 64) in;
@@ -10,6 +11,7 @@ layout(std430, binding = ML_SSBO_RASTER_WORK) coherent buffer RasterWork { uint 
 layout(std430, binding = ML_SSBO_RASTER_LARGE) readonly buffer RasterLarge { uvec4 largeTriangles[]; };
 layout(std430, binding = ML_SSBO_RASTER_PAIRS) writeonly buffer RasterPairs { uvec2 pairs[]; };
 layout(std430, binding = ML_SSBO_RASTER_HARDWARE) writeonly buffer RasterHardware { uint hardwareTriangles[]; };
+layout(std430, binding = ML_SSBO_RASTER_CLIPPED) readonly buffer RasterClipped { uvec4 clippedTriangles[]; };
 
 uniform uint u_largeCapacity;
 uniform uint u_pairCapacity;
@@ -17,9 +19,15 @@ uniform uint u_pairCapacity;
 shared uint s_first;
 
 void main() {
-    uint count = min(rasterWork[ML_RASTER_WORK_LARGE_COUNT], u_largeCapacity);
-    for (uint large = gl_WorkGroupID.x; large < count; large += gl_NumWorkGroups.x) {
-        uvec4 record = largeTriangles[3u * large + 2u];
+    uint largeCount = min(rasterWork[ML_RASTER_WORK_LARGE_COUNT], u_largeCapacity);
+    uint count = largeCount + min(rasterWork[ML_RASTER_WORK_CLIPPED_COUNT], u_largeCapacity);
+    for (uint item = gl_WorkGroupID.x; item < count; item += gl_NumWorkGroups.x) {
+        bool clipped = item >= largeCount;
+        uint large = clipped ? (item - largeCount) | ML_RASTER_CLIPPED_PAIR : item;
+        // Tile bounds in .zw, the triangle in .y (large); bounds in .xy, the triangle in the
+        // record before's .w (clipped).
+        uvec4 record = clipped ? clippedTriangles[5u * (item - largeCount) + 4u].zwxy : largeTriangles[3u * large + 2u];
+        if (clipped) record.y = clippedTriangles[5u * (item - largeCount) + 3u].w;
         uvec2 lo = uvec2(record.z & 0xffffu, record.z >> 16), hi = uvec2(record.w & 0xffffu, record.w >> 16);
         uvec2 size = hi - lo + 1u;
         uint tiles = size.x * size.y;

@@ -14,6 +14,7 @@ layout(local_size_x = ML_RASTER_TILE, local_size_y = ML_RASTER_TILE) in;
 layout(std430, binding = ML_SSBO_RASTER_WORK) readonly buffer RasterWork { uint rasterWork[]; };
 layout(std430, binding = ML_SSBO_RASTER_LARGE) readonly buffer RasterLarge { uvec4 largeTriangles[]; };
 layout(std430, binding = ML_SSBO_RASTER_PAIRS) readonly buffer RasterPairs { uvec2 pairs[]; };
+layout(std430, binding = ML_SSBO_RASTER_CLIPPED) readonly buffer RasterClipped { uvec4 clippedTriangles[]; };
 
 uniform uint u_pairCapacity;
 
@@ -21,9 +22,22 @@ void main() {
     uint count = min(rasterWork[ML_RASTER_WORK_PAIR_COUNT], u_pairCapacity);
     for (uint pair = gl_WorkGroupID.x; pair < count; pair += gl_NumWorkGroups.x) {
         uvec2 entry = pairs[pair];
-        uvec4 r0 = largeTriangles[3u * entry.x], r1 = largeTriangles[3u * entry.x + 1u], r2 = largeTriangles[3u * entry.x + 2u];
         ivec2 pixel = ivec2(entry.y & 0xffffu, entry.y >> 16) * ML_RASTER_TILE + ivec2(gl_LocalInvocationID.xy);
         if (any(greaterThanEqual(pixel, ivec2(u_viewport.xy)))) continue;
+        if ((entry.x & ML_RASTER_CLIPPED_PAIR) != 0u) {
+            uint at = 5u * (entry.x & ~ML_RASTER_CLIPPED_PAIR);
+            uvec4 q0 = clippedTriangles[at], q1 = clippedTriangles[at + 1u], q2 = clippedTriangles[at + 2u], q3 = clippedTriangles[at + 3u];
+            ClippedTriangle c;
+            c.edge0 = uintBitsToFloat(q0.xyz);
+            c.edge1 = uintBitsToFloat(uvec3(q0.w, q1.xy));
+            c.edge2 = uintBitsToFloat(uvec3(q1.zw, q2.x));
+            c.depthNumerator = uintBitsToFloat(q2.yzw);
+            c.depthDenominator = uintBitsToFloat(q3.xyz);
+            float clippedDepth;
+            if (rasterCoversClipped(c, pixel, clippedDepth)) rasterStore(pixel, clippedDepth, q3.w);
+            continue;
+        }
+        uvec4 r0 = largeTriangles[3u * entry.x], r1 = largeTriangles[3u * entry.x + 1u], r2 = largeTriangles[3u * entry.x + 2u];
         RasterTriangle t;
         t.v0 = ivec2(r0.xy);
         t.v1 = ivec2(r0.zw);

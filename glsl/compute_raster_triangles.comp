@@ -4,7 +4,8 @@
 // time; larger ones go to the tile pass's list, and the few the compute raster cannot set up
 // (a vertex at or behind the eye plane, or past the guard band) to the hardware's list. In the
 // id pass of two-pass atomics (ML_RASTER_PASS 1) the lists are already made: it rasters the
-// small ones again and appends nothing.
+// small ones again and appends nothing. A triangle that crosses the eye plane goes to the tile pass
+// as homogeneous edge planes (include/compute_raster.glsl, ClippedTriangle).
 #extension GL_ARB_gpu_shader_int64 : require
 #if ML_RASTER_ATOMIC64
 #extension GL_NV_shader_atomic_int64 : require
@@ -22,6 +23,7 @@ layout(std430, binding = ML_SSBO_MATERIALS) readonly buffer Materials { uvec4 ma
 layout(std430, binding = ML_SSBO_RASTER_WORK) coherent buffer RasterWork { uint rasterWork[]; };
 layout(std430, binding = ML_SSBO_RASTER_LARGE) writeonly buffer RasterLarge { uvec4 largeTriangles[]; };
 layout(std430, binding = ML_SSBO_RASTER_HARDWARE) writeonly buffer RasterHardware { uint hardwareTriangles[]; };
+layout(std430, binding = ML_SSBO_RASTER_CLIPPED) writeonly buffer RasterClipped { uvec4 clippedTriangles[]; };
 
 uniform uint u_triangles;      // opaque triangles: the prefix of the index buffer that holds them
 uniform uint u_cullBackFaces;  // --backface-culling: cull single-sided materials' back faces
@@ -39,6 +41,62 @@ void toHardware(uint triangle) {
 #endif
 }
 
+// Tile bounds of the part of a triangle in front of the near plane (z >= -w): the triangle clipped
+// there (Sutherland-Hodgman, at most four corners), projected. False where none of it is.
+bool nearClippedTiles(vec4 c[3], out uvec2 tileLo, out uvec2 tileHi) {
+    vec2 lo = vec2(1e30), hi = vec2(-1e30);
+    bool any_ = false;
+    for (int i = 0; i < 3; ++i) {
+        vec4 a = c[i], b = c[(i + 1) % 3];
+        float da = a.z + a.w, db = b.z + b.w;
+        if (da >= 0.0) {
+            vec2 s = a.xy / a.w;
+            lo = min(lo, s);
+            hi = max(hi, s);
+            any_ = true;
+        }
+        if ((da >= 0.0) != (db >= 0.0)) {
+            vec4 m = mix(a, b, da / (da - db));
+            vec2 s = m.xy / max(m.w, 1e-30);
+            lo = min(lo, s);
+            hi = max(hi, s);
+            any_ = true;
+        }
+    }
+    if (!any_) return false;
+    vec2 half_ = 0.5 * u_viewport.xy;
+    ivec2 pixelLo = max(ivec2(floor(clamp(lo * half_ + half_, vec2(-1.0), u_viewport.xy + 1.0))) - 1, ivec2(0));
+    ivec2 pixelHi = min(ivec2(ceil(clamp(hi * half_ + half_, vec2(-1.0), u_viewport.xy + 1.0))) + 1, ivec2(u_viewport.xy) - 1);
+    if (any(greaterThan(pixelLo, pixelHi))) return false;
+    tileLo = uvec2(pixelLo / ML_RASTER_TILE);
+    tileHi = uvec2(pixelHi / ML_RASTER_TILE);
+    return true;
+}
+
+// A triangle with a vertex at or behind the eye plane, to the tile pass as homogeneous planes.
+void toClipped(uint triangle, vec4 c0, vec4 c1, vec4 c2) {
+#if ML_RASTER_PASS == 0
+    ClippedTriangle h;
+    bool front;
+    if (!rasterHomogeneous(c0, c1, c2, h, front)) return;  // seen edge-on
+    if (!front) {
+        uint info = materialWords[triangleMaterial[triangle] * ML_GPU_MATERIAL_VEC4S + 3u].w;
+        if (u_cullBackFaces != 0u && (info & ML_MATERIAL_DOUBLE_SIDED) == 0u) return;
+    }
+    vec4 corners[3] = vec4[](c0, c1, c2);
+    uvec2 tileLo, tileHi;
+    if (!nearClippedTiles(corners, tileLo, tileHi)) return;
+    uint at = atomicAdd(rasterWork[ML_RASTER_WORK_CLIPPED_COUNT], 1u);
+    if (at >= u_largeCapacity) return;  // as many as the scene has triangles: never
+    atomicMax(rasterWork[ML_RASTER_WORK_BIN_DISPATCH], min(at + 1u, 65535u));
+    clippedTriangles[5u * at] = uvec4(floatBitsToUint(h.edge0), floatBitsToUint(h.edge1.x));
+    clippedTriangles[5u * at + 1u] = uvec4(floatBitsToUint(h.edge1.yz), floatBitsToUint(h.edge2.xy));
+    clippedTriangles[5u * at + 2u] = uvec4(floatBitsToUint(h.edge2.z), floatBitsToUint(h.depthNumerator));
+    clippedTriangles[5u * at + 3u] = uvec4(floatBitsToUint(h.depthDenominator), triangle);
+    clippedTriangles[5u * at + 4u] = uvec4(tileLo.x | (tileLo.y << 16), tileHi.x | (tileHi.y << 16), 0u, 0u);
+#endif
+}
+
 void main() {
     uint triangle = gl_GlobalInvocationID.x;
     if (triangle >= u_triangles) return;
@@ -51,12 +109,15 @@ void main() {
         (c0.z > c0.w && c1.z > c1.w && c2.z > c2.w) || (c0.z < -c0.w && c1.z < -c1.w && c2.z < -c2.w))
         return;
     if (c0.w <= 0.0 || c1.w <= 0.0 || c2.w <= 0.0) {
-        toHardware(triangle);  // needs clipping at the eye plane
+        // Where the GPU clips at the viewport, to the hardware (see below); else unclipped, as
+        // homogeneous planes.
+        if (u_clipsToViewport != 0u) toHardware(triangle);
+        else toClipped(triangle, c0, c1, c2);
         return;
     }
-    vec2 half_ = 0.5 * u_viewport.xy;
-    vec3 w0 = vec3(c0.xyz / c0.w), w1 = vec3(c1.xyz / c1.w), w2 = vec3(c2.xyz / c2.w);
-    vec2 s0 = w0.xy * half_ + half_, s1 = w1.xy * half_ + half_, s2 = w2.xy * half_ + half_;
+    vec2 s0, s1, s2;
+    vec3 z;
+    rasterWindow(c0, c1, c2, s0, s1, s2, z);
     if (any(greaterThan(abs(vec4(s0, s1)), vec4(kGuardBand))) || any(greaterThan(abs(s2), vec2(kGuardBand)))) {
         toHardware(triangle);
         return;
@@ -67,21 +128,14 @@ void main() {
         toHardware(triangle);
         return;
     }
-    RasterTriangle t;
-    t.v0 = ivec2(roundEven(s0 * float(ML_SUBPIXEL_ONE)));
-    t.v1 = ivec2(roundEven(s1 * float(ML_SUBPIXEL_ONE)));
-    t.v2 = ivec2(roundEven(s2 * float(ML_SUBPIXEL_ONE)));
-    t.z = vec3(w0.z, w1.z, w2.z) * 0.5 + 0.5;
-    int64_t area = int64_t(t.v1.x - t.v0.x) * int64_t(t.v2.y - t.v0.y) - int64_t(t.v1.y - t.v0.y) * int64_t(t.v2.x - t.v0.x);
+    RasterTriangle t = rasterSnap(s0, s1, s2, z);
+    int64_t area = rasterArea(t);
     if (area == 0l) return;  // no pixel of a degenerate triangle is drawn
     if (area < 0l) {
         // Clockwise: a back face. Wound the other way, it covers the same pixels.
         uint info = materialWords[triangleMaterial[triangle] * ML_GPU_MATERIAL_VEC4S + 3u].w;
         if (u_cullBackFaces != 0u && (info & ML_MATERIAL_DOUBLE_SIDED) == 0u) return;
-        ivec2 v = t.v1;
-        t.v1 = t.v2;
-        t.v2 = v;
-        t.z = t.z.xzy;
+        t = rasterReversed(t);
     }
     ivec2 lo, hi;
     rasterPixelBounds(t, lo, hi);

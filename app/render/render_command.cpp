@@ -16,6 +16,7 @@
 #include "app/render/sequence_progress.h"
 #include "app/render/sequence_timing.h"
 #include "app/render/video_encoder.h"
+#include "renderer/methods/visibility_buffer.h"
 #include "renderer/clustering/clustered_lighting.h"
 #include "renderer/frame_accumulation.h"
 #include "renderer/frame_renderer.h"
@@ -173,6 +174,15 @@ int runRender(RenderOptions o) {
             std::printf("transparency: %llu fragments captured at %dx%d (%zu B each, %zu B per pixel), %.1f MiB\n",
                         static_cast<unsigned long long>(glass->fragmentCount()), renderer.targets().width(), renderer.targets().height(),
                         GlassFragments::kBytesPerFragment, GlassFragments::kBytesPerPixel, double(glass->bytes()) / (1 << 20));
+        if (const auto* visibility = dynamic_cast<const VisibilityBuffer*>(&renderer.method())) {
+            if (const ComputeRaster* raster = visibility->computeRaster()) {
+                const ComputeRaster::Work w = raster->lastWork();
+                std::printf("compute raster (%s): %u opaque triangles; %u large and %u across the eye plane to the tile pass over %u tiles, %u to the hardware\n",
+                            visibilityRasterName(visibility->raster()), w.opaqueTriangles, w.large, w.clipped, w.tiles, w.hardware);
+            } else {
+                std::printf("visibility raster: hardware\n");
+            }
+        }
         if (const OverdrawPass* overdraw = renderer.overdraw()) {
             // The view replaced the method's frame, so no light lists were built.
             const OverdrawStatistics s = overdrawStatistics(overdraw->readCounts());

@@ -52,13 +52,16 @@
 #define ML_SSBO_RASTER_WORK 17         // counters and indirect arguments (ML_RASTER_WORK_*)
 #define ML_SSBO_RASTER_LARGE 18        // triangles for the tile pass: snapped vertices, depths, id, tile bounds (48 B)
 #define ML_SSBO_RASTER_PAIRS 19        // (large triangle, screen tile) for the tile pass
-#define ML_SSBO_RASTER_HARDWARE 23     // triangles the hardware rasters instead (clipped at the eye plane)
+#define ML_SSBO_RASTER_HARDWARE 23     // triangles the hardware rasters instead (where the GPU clips at the viewport)
+#define ML_SSBO_RASTER_CLIPPED 24      // triangles that cross the eye plane, as homogeneous edge planes for the tile pass (80 B)
 #define ML_RASTER_WORK_HARDWARE_DRAW 0   // DrawArraysIndirectCommand of the hardware's triangles (words 0-3)
 #define ML_RASTER_WORK_BIN_DISPATCH 4    // the binning's dispatch (words 4-6)
 #define ML_RASTER_WORK_TILE_DISPATCH 7   // the tile pass's dispatch (words 7-9)
 #define ML_RASTER_WORK_LARGE_COUNT 10
 #define ML_RASTER_WORK_PAIR_COUNT 11
-#define ML_RASTER_WORK_WORDS 12
+#define ML_RASTER_WORK_CLIPPED_COUNT 12
+#define ML_RASTER_WORK_WORDS 13
+#define ML_RASTER_CLIPPED_PAIR 0x80000000u  // a pair's triangle is in the clipped list
 #define ML_RASTER_WORKGROUP 64       // triangles per workgroup of the setup pass
 #define ML_RASTER_TILE 16            // the tile pass's screen tile edge: a pixel per invocation
 #define ML_RASTER_SMALL_EXTENT 64    // a triangle rastered by its own invocation spans at most this many pixels...

@@ -65,7 +65,11 @@ struct RasterTriangle {
 };
 
 // The hardware's clip position of a world-space point: scene.vert's expression, term for term.
-vec4 rasterClipPosition(vec3 world) { return u_proj * vec4(mat3(u_view) * (world - u_cameraPos.xyz), 1.0); }
+// `precise`, so that both programs of two-pass atomics set a triangle up to the same bits.
+vec4 rasterClipPosition(vec3 world) {
+    precise vec4 clip = u_proj * vec4(mat3(u_view) * (world - u_cameraPos.xyz), 1.0);
+    return clip;
+}
 
 // Whether an edge a->b of a counter-clockwise triangle owns the pixel centres that lie on it.
 bool ownsEdge(ivec2 a, ivec2 b) {
@@ -78,10 +82,12 @@ bool ownsEdge(ivec2 a, ivec2 b) {
 }
 
 // The window depth plane at a pixel centre from its three edge values (e0 opposite v0, ...),
-// whose sum is twice the triangle's area.
+// whose sum is twice the triangle's area. `precise`: two-pass atomics compare the depth of the
+// id pass with the depth pass's to the bit, from programs compiled apart.
 float rasterDepth(RasterTriangle t, float e0, float e1, float e2) {
-    float inv = 1.0 / (e0 + e1 + e2);
-    return t.z.x + (e1 * inv) * (t.z.y - t.z.x) + (e2 * inv) * (t.z.z - t.z.x);
+    precise float inv = 1.0 / (e0 + e1 + e2);
+    precise float depth = t.z.x + (e1 * inv) * (t.z.y - t.z.x) + (e2 * inv) * (t.z.z - t.z.x);
+    return depth;
 }
 
 // The pixel window of a triangle's snapped bounds: the pixels whose centres may be covered,
@@ -93,16 +99,119 @@ void rasterPixelBounds(RasterTriangle t, out ivec2 lo, out ivec2 hi) {
     hi = min((mx - ML_SUBPIXEL_HALF) >> ML_SUBPIXEL_BITS, ivec2(u_viewport.xy) - 1);
 }
 
+// Window positions (pixels) and depths of a triangle's clip positions, every w > 0.
+void rasterWindow(vec4 c0, vec4 c1, vec4 c2, out vec2 s0, out vec2 s1, out vec2 s2, out vec3 z) {
+    vec2 half_ = 0.5 * u_viewport.xy;
+    precise vec3 w0 = c0.xyz / c0.w, w1 = c1.xyz / c1.w, w2 = c2.xyz / c2.w;
+    precise vec2 p0 = w0.xy * half_ + half_, p1 = w1.xy * half_ + half_, p2 = w2.xy * half_ + half_;
+    precise vec3 depth = vec3(w0.z, w1.z, w2.z) * 0.5 + 0.5;
+    s0 = p0;
+    s1 = p1;
+    s2 = p2;
+    z = depth;
+}
+
+// Snapped to the sub-pixel grid, in the winding given.
+RasterTriangle rasterSnap(vec2 s0, vec2 s1, vec2 s2, vec3 z) {
+    RasterTriangle t;
+    t.v0 = ivec2(roundEven(s0 * float(ML_SUBPIXEL_ONE)));
+    t.v1 = ivec2(roundEven(s1 * float(ML_SUBPIXEL_ONE)));
+    t.v2 = ivec2(roundEven(s2 * float(ML_SUBPIXEL_ONE)));
+    t.z = z;
+    return t;
+}
+
+// Twice the signed area (positive: counter-clockwise, a front face).
+int64_t rasterArea(RasterTriangle t) {
+    return int64_t(t.v1.x - t.v0.x) * int64_t(t.v2.y - t.v0.y) - int64_t(t.v1.y - t.v0.y) * int64_t(t.v2.x - t.v0.x);
+}
+
+// The same triangle wound the other way: it covers the same pixels.
+RasterTriangle rasterReversed(RasterTriangle t) {
+    RasterTriangle r = t;
+    r.v1 = t.v2;
+    r.v2 = t.v1;
+    r.z = t.z.xzy;
+    return r;
+}
+
 // Coverage and depth at one pixel, in 64-bit edge arithmetic (any triangle within the guard band).
-bool rasterCovers64(RasterTriangle t, ivec2 pixel, out float depth) {
+// The three edge values at a pixel centre (e0 opposite v0, ...), exact in 64 bits.
+i64vec3 rasterEdges64(RasterTriangle t, ivec2 pixel) {
     i64vec2 p = i64vec2(pixel) * ML_SUBPIXEL_ONE + ML_SUBPIXEL_HALF;
     i64vec2 a = i64vec2(t.v0), b = i64vec2(t.v1), c = i64vec2(t.v2);
     int64_t e2 = (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x);  // edge v0->v1, opposite v2
     int64_t e0 = (c.x - b.x) * (p.y - b.y) - (c.y - b.y) * (p.x - b.x);  // edge v1->v2, opposite v0
     int64_t e1 = (a.x - c.x) * (p.y - c.y) - (a.y - c.y) * (p.x - c.x);  // edge v2->v0, opposite v1
+    return i64vec3(e0, e1, e2);
+}
+
+bool rasterCovers64(RasterTriangle t, ivec2 pixel, out float depth) {
+    i64vec3 e = rasterEdges64(t, pixel);
+    int64_t e0 = e.x, e1 = e.y, e2 = e.z;
     if (e0 + (ownsEdge(t.v1, t.v2) ? 1l : 0l) <= 0l || e1 + (ownsEdge(t.v2, t.v0) ? 1l : 0l) <= 0l ||
         e2 + (ownsEdge(t.v0, t.v1) ? 1l : 0l) <= 0l)
         return false;
     depth = rasterDepth(t, float(e0), float(e1), float(e2));
+    return depth >= 0.0 && depth < 1.0;
+}
+
+// A triangle that crosses the eye plane, rastered without clipping (Olano and Greer's homogeneous
+// rasterization): with V_i = (X_i, Y_i, W_i) its vertices' clip positions scaled to the viewport,
+// a pixel p = (x, y, 1) has e_i = p . (V_j x V_k) = b_i det(V) / w, b its barycentrics on the
+// triangle and w its clip w; so p is covered where every e_i, signed by det(V), is positive (the
+// visible part, w > 0), and its clip depth is (e . z) / (e . W). The planes are stored signed.
+struct ClippedTriangle {
+    vec3 edge0, edge1, edge2;  // e_i's planes, times sign(det)
+    vec3 depthNumerator;       // sum_i z_i * edge_i
+    vec3 depthDenominator;     // sum_i W_i * edge_i
+};
+
+// Whether a pixel centre on an edge (e exactly 0) belongs to this side: one of two triangles that
+// share the edge (whose planes are negations) owns it.
+bool ownsHomogeneousEdge(vec3 edge) { return edge.x > 0.0 || (edge.x == 0.0 && edge.y > 0.0); }
+
+// The planes of a triangle that crosses the eye plane; false where it is seen edge-on. `front`:
+// whether it faces the eye (det(V) has the sign of the screen area where every w is positive).
+bool rasterHomogeneous(vec4 c0, vec4 c1, vec4 c2, out ClippedTriangle t, out bool front) {
+    vec2 half_ = 0.5 * u_viewport.xy;
+    // Clip space scaled to the viewport: X / W is the window x.
+    precise vec3 v0 = vec3(c0.xy * half_ + c0.w * half_, c0.w);
+    precise vec3 v1 = vec3(c1.xy * half_ + c1.w * half_, c1.w);
+    precise vec3 v2 = vec3(c2.xy * half_ + c2.w * half_, c2.w);
+    precise vec3 e0 = cross(v1, v2), e1 = cross(v2, v0), e2 = cross(v0, v1);
+    precise float det = dot(v0, e0);
+    front = det > 0.0;
+    if (det < 0.0) {
+        e0 = -e0;
+        e1 = -e1;
+        e2 = -e2;
+    }
+    t.edge0 = e0;
+    t.edge1 = e1;
+    t.edge2 = e2;
+    precise vec3 numerator = c0.z * e0 + c1.z * e1 + c2.z * e2;
+    precise vec3 denominator = c0.w * e0 + c1.w * e1 + c2.w * e2;
+    t.depthNumerator = numerator;
+    t.depthDenominator = denominator;
+    return det != 0.0;
+}
+
+// The window depth of the triangle's plane at a pixel centre, as the planes give it.
+float rasterClippedDepth(ClippedTriangle t, ivec2 pixel) {
+    vec3 p = vec3(vec2(pixel) + 0.5, 1.0);
+    precise float z = 0.5 * dot(t.depthNumerator, p) / dot(t.depthDenominator, p) + 0.5;
+    return z;
+}
+
+bool rasterCoversClipped(ClippedTriangle t, ivec2 pixel, out float depth) {
+    vec3 p = vec3(vec2(pixel) + 0.5, 1.0);
+    precise float e0 = dot(t.edge0, p), e1 = dot(t.edge1, p), e2 = dot(t.edge2, p);
+    if (e0 < 0.0 || e1 < 0.0 || e2 < 0.0) return false;
+    if ((e0 == 0.0 && !ownsHomogeneousEdge(t.edge0)) || (e1 == 0.0 && !ownsHomogeneousEdge(t.edge1)) ||
+        (e2 == 0.0 && !ownsHomogeneousEdge(t.edge2)))
+        return false;
+    if (!(dot(t.depthDenominator, p) > 0.0)) return false;
+    depth = rasterClippedDepth(t, pixel);
     return depth >= 0.0 && depth < 1.0;
 }

@@ -72,10 +72,11 @@ void VisibilityBuffer::rasterInHardware(const FrameContext& ctx) {
 void VisibilityBuffer::render(const FrameContext& ctx) {
     prepareTargets(ctx.targets);
     gbuffer_.prepare(ctx.targets);
-    {
+    if (computeRaster_) {
+        computeRaster_->run(ctx, triangleIds_);  // times its own steps (visibility.raster-*)
+    } else {
         auto pass = ctx.timer.pass("visibility.raster");
-        if (computeRaster_) computeRaster_->run(ctx, triangleIds_);
-        else rasterInHardware(ctx);
+        rasterInHardware(ctx);
     }
     // The depth is final: the glass is counted now, its total long known when the fill needs it.
     transparent_.countFragments(ctx, clustering_.settings().view);

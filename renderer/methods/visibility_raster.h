@@ -7,7 +7,7 @@ namespace ml {
 
 // --vis-raster: how the visibility buffer rasters its ids.
 enum class VisibilityRaster {
-    Auto,            // compute where the GPU has 64-bit atomics, else hardware
+    Auto,            // the default: hardware, for now (ComputeRaster::resolve says why)
     Hardware,        // the graphics pipeline, ids by image atomics behind the depth test
     Compute,         // compute, 64-bit atomics where the GPU has them, else two passes
     ComputeTwoPass,  // compute with two passes of 32-bit atomics, whatever the GPU has

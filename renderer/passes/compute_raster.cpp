@@ -1,6 +1,7 @@
 #include "renderer/passes/compute_raster.h"
 
 #include <algorithm>
+#include <optional>
 #include <stdexcept>
 
 #include "glsl/include/bindings.h"
@@ -85,7 +86,10 @@ bool ComputeRaster::hasPackedAtomics() { return supported() && gl::hasExtension(
 
 VisibilityRaster ComputeRaster::resolve(VisibilityRaster choice) {
     switch (choice) {
-    case VisibilityRaster::Auto: return hasPackedAtomics() ? VisibilityRaster::Compute : VisibilityRaster::Hardware;
+    // The hardware raster until the compute raster is both faster and as exact on the scenes as
+    // they ship: on the H100 it is faster on the atrium but not on Sponza, and it resolves depth
+    // ties between coplanar surfaces unlike the hardware naive is drawn with (docs/benchmarks.md).
+    case VisibilityRaster::Auto: return VisibilityRaster::Hardware;
     case VisibilityRaster::Hardware: return choice;
     case VisibilityRaster::Compute:
     case VisibilityRaster::ComputeTwoPass:
@@ -136,9 +140,10 @@ void ComputeRaster::prepare(const FrameContext& ctx) {
         glClearNamedBufferData(store_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &ones);
         depth_ = gl::Texture2D("compute-raster.depth", GL_R32F, stamp_.width(), stamp_.height());
         depthFbo_ = gl::Framebuffer("compute-raster.depth-copy", {}, &ctx.targets.depth());
-        // Pairs: up to four layers of the screen's tiles; a triangle past it goes to the hardware.
+        // Pairs: up to 64 layers of the screen's tiles (the atrium at 2560x1440 needs about 16); a
+        // triangle past it goes to the hardware.
         const std::size_t tiles = std::size_t(gl::groupsFor(stamp_.width(), ML_RASTER_TILE)) * gl::groupsFor(stamp_.height(), ML_RASTER_TILE);
-        pairCapacity_ = std::max<std::size_t>(4 * tiles, 1u << 16);
+        pairCapacity_ = std::max<std::size_t>(64 * tiles, 1u << 16);
         pairs_ = gl::Buffer("compute-raster.pairs", pairCapacity_ * 8, nullptr, 0);
     }
     if (ctx.scene.triangleCount() != sceneTriangles_) {
@@ -146,8 +151,9 @@ void ComputeRaster::prepare(const FrameContext& ctx) {
         largeCapacity_ = std::max<std::size_t>(sceneTriangles_, 1);
         large_ = gl::Buffer("compute-raster.large", largeCapacity_ * 48, nullptr, 0);
         hardware_ = gl::Buffer("compute-raster.hardware", largeCapacity_ * 4, nullptr, 0);
+        clipped_ = gl::Buffer("compute-raster.clipped", largeCapacity_ * 80, nullptr, 0);
     }
-    const GLuint initial[ML_RASTER_WORK_WORDS] = {0, 1, 0, 0, 0, 1, 1, 0, 1, 1, 0, 0};
+    const GLuint initial[ML_RASTER_WORK_WORDS] = {0, 1, 0, 0, 0, 1, 1, 0, 1, 1, 0, 0, 0};
     work_.upload(initial, sizeof initial);
 }
 
@@ -159,19 +165,30 @@ void ComputeRaster::run(const FrameContext& ctx, const gl::Texture2D& ids) {
     large_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_RASTER_LARGE);
     pairs_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_RASTER_PAIRS);
     hardware_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_RASTER_HARDWARE);
+    clipped_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_RASTER_CLIPPED);
     for (int pass = 0; pass < passes_; ++pass) rasterPass(ctx, pass);
+    finish(ctx, ids);
+    ctx.targets.setComputedDepth(&depth_);
+    if (ctx.scene.hasTransparent()) {
+        auto timed = ctx.timer.pass("visibility.raster-glass-depth");
+        copyDepthUnderGlass(ctx);
+    }
+}
 
+void ComputeRaster::finish(const FrameContext& ctx, const gl::Texture2D& ids) {
+    auto timed = ctx.timer.pass("visibility.raster-finish");
     finish_.use();
     glBindImageTexture(ML_IMG_VISIBILITY_IDS, ids.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32UI);
     glBindImageTexture(ML_IMG_RASTER_DEPTH, depth_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
     glDispatchCompute(gl::groupsFor(stamp_.width(), ML_SCREEN_TILE), gl::groupsFor(stamp_.height(), ML_SCREEN_TILE), 1);
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | kComputeToCompute);
-    ctx.targets.setComputedDepth(&depth_);
-    if (ctx.scene.hasTransparent()) copyDepthUnderGlass(ctx);
 }
 
 void ComputeRaster::rasterPass(const FrameContext& ctx, int pass) {
     const GLuint opaque = static_cast<GLuint>(ctx.scene.opaqueTriangleCount());
+    opaqueTriangles_ = opaque;
+    std::optional<PassTimer::Scope> timed;
+    timed.emplace(ctx.timer, "visibility.raster-setup");
     gl::Program& setup = setup_[pass];
     setup.use();
     setup.set("u_triangles", opaque);
@@ -181,6 +198,8 @@ void ComputeRaster::rasterPass(const FrameContext& ctx, int pass) {
     glDispatchCompute(gl::groupsFor(opaque, ML_RASTER_WORKGROUP), 1, 1);
     glMemoryBarrier(kComputeToCompute | GL_COMMAND_BARRIER_BIT);
 
+    timed.reset();
+    timed.emplace(ctx.timer, "visibility.raster-tiles");
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, work_.id());
     if (pass == 0) {
         bin_.use();
@@ -195,6 +214,8 @@ void ComputeRaster::rasterPass(const FrameContext& ctx, int pass) {
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
 
     // The hardware's share, into the same store: no depth test, no colour, no depth write.
+    timed.reset();
+    timed.emplace(ctx.timer, "visibility.raster-hardware");
     depthFbo_.bind();
     glViewport(0, 0, stamp_.width(), stamp_.height());
     glDisable(GL_DEPTH_TEST);
@@ -203,6 +224,7 @@ void ComputeRaster::rasterPass(const FrameContext& ctx, int pass) {
     glMemoryBarrier(kComputeToCompute);
     hardwareList_[pass].use();
     hardwareList_[pass].set("u_cullBackFaces", ctx.scene.backfaceCulling() ? 1u : 0u);
+
     glDisable(GL_CULL_FACE);
     glBindVertexArray(emptyVao_.id());
     glBindBuffer(GL_DRAW_INDIRECT_BUFFER, work_.id());
@@ -234,10 +256,16 @@ void ComputeRaster::copyDepthUnderGlass(const FrameContext& ctx) {
     glDisable(GL_SCISSOR_TEST);
 }
 
-std::uint32_t ComputeRaster::hardwareTriangles() const {
-    std::uint32_t vertices = 0;
-    work_.download(&vertices, sizeof vertices, ML_RASTER_WORK_HARDWARE_DRAW * sizeof(GLuint));
-    return vertices / 3;
+ComputeRaster::Work ComputeRaster::lastWork() const {
+    GLuint words[ML_RASTER_WORK_WORDS] = {};
+    work_.download(words, sizeof words);
+    Work w;
+    w.opaqueTriangles = opaqueTriangles_;
+    w.large = std::min<std::uint32_t>(words[ML_RASTER_WORK_LARGE_COUNT], static_cast<std::uint32_t>(largeCapacity_));
+    w.tiles = std::min<std::uint32_t>(words[ML_RASTER_WORK_PAIR_COUNT], static_cast<std::uint32_t>(pairCapacity_));
+    w.hardware = words[ML_RASTER_WORK_HARDWARE_DRAW] / 3;
+    w.clipped = words[ML_RASTER_WORK_CLIPPED_COUNT];
+    return w;
 }
 
 }  // namespace ml

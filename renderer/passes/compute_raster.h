@@ -5,7 +5,8 @@
 //
 //   setup (a thread per triangle) ──small──> rastered there, pixel by pixel
 //        │                         ──large──> binning ──> tile pass (a workgroup per triangle and 16x16 tile)
-//        └─ a vertex at or behind the eye plane ──> the hardware, into the same store (no depth buffer)
+//        └─ a vertex at or behind the eye plane ──> the tile pass, as homogeneous edge planes
+//           (on a GPU that clips at the viewport, as llvmpipe does: the hardware, into the same store)
 //   alpha-tested ranges ──> the hardware, into the same store
 //   finish: the store ──> the id target (index + 1) and an R32F depth, the store reset
 //
@@ -53,13 +54,26 @@ public:
     // buffer under it. Sets ctx.targets' opaque depth to depth().
     void run(const FrameContext& ctx, const gl::Texture2D& ids);
     const gl::Texture2D& depth() const { return depth_; }
+    // Whether triangles that cross the viewport's sides or the eye plane go to the hardware (set
+    // from the GPU: Mesa's software rasterizers clip at the viewport). Tests turn it off on
+    // llvmpipe to run the homogeneous path.
+    void setClipsToViewport(bool clips) { clipsToViewport_ = clips; }
 
-    // Triangles of the last frame that went to the hardware list (a GPU read; tests).
-    std::uint32_t hardwareTriangles() const;
+    // Where the last frame's triangles went (a GPU read; --stats, tests): the rest of the opaque
+    // ones were rastered by the setup pass, or culled.
+    struct Work {
+        std::uint32_t opaqueTriangles = 0;
+        std::uint32_t large = 0;     // to the tile pass
+        std::uint32_t clipped = 0;   // to the tile pass as homogeneous planes (crossing the eye plane)
+        std::uint32_t tiles = 0;     // (triangle, tile) pairs the tile pass ran
+        std::uint32_t hardware = 0;  // to the hardware (clipped at the eye plane, or past the lists)
+    };
+    Work lastWork() const;
 
 private:
     void prepare(const FrameContext& ctx);
     void rasterPass(const FrameContext& ctx, int pass);
+    void finish(const FrameContext& ctx, const gl::Texture2D& ids);
     void copyDepthUnderGlass(const FrameContext& ctx);
 
     bool packed_;
@@ -69,12 +83,13 @@ private:
     gl::Program hardwareList_[2];
     RasterProgram alphaTested_[2];
     gl::Handle<gl::VertexArrayDeleter> emptyVao_;
-    gl::Buffer store_, work_, large_, pairs_, hardware_;
+    gl::Buffer store_, work_, large_, pairs_, hardware_, clipped_;
     std::size_t largeCapacity_ = 0, pairCapacity_ = 0;
     gl::Texture2D depth_;
     gl::Framebuffer depthFbo_;
     FrameTargetsStamp stamp_;
     std::size_t sceneTriangles_ = 0;
+    std::uint32_t opaqueTriangles_ = 0;
 };
 
 }  // namespace ml

@@ -24,6 +24,7 @@
 #include "scenes/scene_library.h"
 #include "tests/corpus/corpus.h"
 #include "tests/gpu/gpu_test.h"
+#include "tests/gpu/raster_ids.h"
 
 namespace ml::test {
 namespace {
@@ -103,6 +104,30 @@ TEST_P(CorpusFile, EveryMethodHoldsTheContractAgainstNaive) {
                 << label << ": max " << d.maxAbs * 255.0 << "/255; images in "
                 << writeFailureImages(testNameOf(camera.name + "_" + methodName(kind)), ldr, reference.ldr);
         }
+    }
+}
+
+// The visibility buffer's compute raster gives the hardware raster's ids on every file and camera,
+// but where two surfaces tie in depth (tests/gpu/compute_raster_test.cpp says why), and at no
+// more pixels than the accuracy contract's share (1 in 10,000) elsewhere: a vertex whose window
+// position lies within a rounding step of a sub-pixel boundary snaps by the last bit of the
+// vertex transform, which the hardware computes its own way (ToyCar shows 1 or 2 such pixels at
+// some cameras; the built-in scenes none). At 320x180: at 160x90 most triangles of most files
+// are smaller than a pixel and few edges are tested.
+TEST_P(CorpusFile, ComputeRasterGivesTheHardwareIds) {
+    const Scene scene = loadCorpusScene(GetParam());
+    for (const NamedCamera& camera : corpusCameras(scene)) {
+        FrameSettings s;
+        s.width = 320;
+        s.height = 180;
+        s.camera = camera.camera;
+        FrameRenderer renderer(scene, {}, s);
+        const RasterResult hardware = visibilityRaster(renderer, VisibilityRaster::Hardware);
+        const RasterResult compute = visibilityRaster(renderer, VisibilityRaster::ComputeTwoPass);
+        const std::string label = GetParam() + " " + camera.name;
+        const IdDifference d = compareIds(hardware, compute, s.width, label);
+        std::printf("%-70s ids differ at %zu pixels, %zu not a tie\n", label.c_str(), d.pixels, d.coverage);
+        EXPECT_LE(double(d.coverage), kMaxBadShare * s.width * s.height) << label;
     }
 }
 
