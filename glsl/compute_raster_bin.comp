@@ -1,9 +1,13 @@
 #version 450 core
 // The compute raster's binning (renderer/passes/compute_raster.h): a workgroup per large
-// triangle lists (triangle, tile) for every screen tile its pixel bounds overlap, for the tile
+// triangle lists (triangle, tile) for every screen tile of its pixel bounds that its edges do not
+// all pass by (a tile wholly outside one edge holds none of its pixels), for the tile
 // pass, and for every triangle of the clipped list (ML_RASTER_CLIPPED_PAIR marks them). A
 // triangle whose tiles do not fit the list goes to the hardware's list instead.
+#extension GL_ARB_gpu_shader_int64 : require
 #include "include/bindings.h"
+#include "include/frame_uniforms.glsl"
+#include "include/compute_raster.glsl"
 
 layout(local_size_x = 64) in;
 
@@ -16,7 +20,38 @@ layout(std430, binding = ML_SSBO_RASTER_CLIPPED) readonly buffer RasterClipped {
 uniform uint u_largeCapacity;
 uniform uint u_pairCapacity;
 
+shared uint s_count;
 shared uint s_first;
+
+// Whether a screen tile may hold pixels of the triangle: no edge has every pixel centre of the
+// tile outside it. Edges are linear, so the tile's extremes are at its corner pixels.
+bool tileTouches(bool clipped, uint index, uvec2 tile) {
+    ivec2 lo = ivec2(tile) * ML_RASTER_TILE, hi = lo + (ML_RASTER_TILE - 1);
+    ivec2 corners[4] = ivec2[](lo, ivec2(hi.x, lo.y), ivec2(lo.x, hi.y), hi);
+    if (clipped) {
+        uvec4 q0 = clippedTriangles[5u * index], q1 = clippedTriangles[5u * index + 1u], q2 = clippedTriangles[5u * index + 2u];
+        vec3 edges[3] = vec3[](uintBitsToFloat(q0.xyz), uintBitsToFloat(uvec3(q0.w, q1.xy)), uintBitsToFloat(uvec3(q1.zw, q2.x)));
+        for (int e = 0; e < 3; ++e) {
+            bool inside = false;
+            for (int k = 0; k < 4; ++k) inside = inside || dot(edges[e], vec3(vec2(corners[k]) + 0.5, 1.0)) >= 0.0;
+            if (!inside) return false;
+        }
+        return true;
+    }
+    uvec4 r0 = largeTriangles[3u * index], r1 = largeTriangles[3u * index + 1u];
+    RasterTriangle t;
+    t.v0 = ivec2(r0.xy);
+    t.v1 = ivec2(r0.zw);
+    t.v2 = ivec2(r1.xy);
+    bool inside0 = false, inside1 = false, inside2 = false;
+    for (int k = 0; k < 4; ++k) {
+        i64vec3 e = rasterEdges64(t, corners[k]);
+        inside0 = inside0 || e.x >= 0l;
+        inside1 = inside1 || e.y >= 0l;
+        inside2 = inside2 || e.z >= 0l;
+    }
+    return inside0 && inside1 && inside2;
+}
 
 void main() {
     uint largeCount = min(rasterWork[ML_RASTER_WORK_LARGE_COUNT], u_largeCapacity);
@@ -30,7 +65,16 @@ void main() {
         if (clipped) record.y = clippedTriangles[5u * (item - largeCount) + 3u].w;
         uvec2 lo = uvec2(record.z & 0xffffu, record.z >> 16), hi = uvec2(record.w & 0xffffu, record.w >> 16);
         uvec2 size = hi - lo + 1u;
-        uint tiles = size.x * size.y;
+        uint boundsTiles = size.x * size.y;
+        uint index = large & ~ML_RASTER_CLIPPED_PAIR;
+        if (gl_LocalInvocationIndex == 0u) s_count = 0u;
+        barrier();
+        uint touched = 0u;
+        for (uint i = gl_LocalInvocationIndex; i < boundsTiles; i += gl_WorkGroupSize.x)
+            if (tileTouches(clipped, index, lo + uvec2(i % size.x, i / size.x))) ++touched;
+        atomicAdd(s_count, touched);
+        barrier();
+        uint tiles = s_count;
         if (gl_LocalInvocationIndex == 0u) {
             uint first = atomicAdd(rasterWork[ML_RASTER_WORK_PAIR_COUNT], tiles);
             if (first + tiles > u_pairCapacity || first + tiles < first) {
@@ -46,9 +90,12 @@ void main() {
         uint first = s_first;
         barrier();
         if (first == 0xffffffffu) continue;
-        for (uint i = gl_LocalInvocationIndex; i < tiles; i += gl_WorkGroupSize.x) {
+        if (gl_LocalInvocationIndex == 0u) s_count = 0u;
+        barrier();
+        for (uint i = gl_LocalInvocationIndex; i < boundsTiles; i += gl_WorkGroupSize.x) {
             uvec2 tile = lo + uvec2(i % size.x, i / size.x);
-            pairs[first + i] = uvec2(large, tile.x | (tile.y << 16));
+            if (tileTouches(clipped, index, tile)) pairs[first + atomicAdd(s_count, 1u)] = uvec2(large, tile.x | (tile.y << 16));
         }
+        barrier();
     }
 }

@@ -120,7 +120,7 @@ ComputeRaster::ComputeRaster(std::uint32_t materialFeatures, bool packedAtomics)
                                                {{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "visibility.frag"}},
                                                materialFeatures, RasterProgram::Reads::CoverageOnly, fragment);
     }
-    bin_ = gl::Program::compute("compute_raster_bin.comp");
+    bin_ = gl::Program::compute("compute_raster_bin.comp", rasterDefines(packed_, 0));
     finish_ = gl::Program::compute("compute_raster_finish.comp", rasterDefines(packed_, 0));
     if (materialFeatures & ML_FEATURE_BLEND)
         depthCopy_ = gl::Program("visibility.compute-raster.depth-copy",

@@ -1,23 +1,26 @@
 #!/usr/bin/env bash
-# Issue 30's compute raster on the H100, one binary, one command: the visibility buffer by the
-# hardware raster and by the compute raster, (1) timed on the atrium as it ships (glass on), GGX,
-# 2560x1440, overlap:32, exact lists, atrium-set, median of 30 frames after 5, at 65,536 and
-# 1,048,576 lights; (2) each against naive on the atrium, the AMD scenes and two glossy files.
+# Issue 30's compute raster on the H100 (nvidia-h100-x1), one binary (.devbin, tools/pack-for-gpu),
+# one command: (1) the visibility buffer by the hardware and by the compute raster, timed per
+# pass (timing.sweep.json); (2) each against naive (accuracy.sweep.json); (3) where the compute
+# raster's triangles went (render --stats); (4) its ids against the hardware raster's (the GPU
+# and corpus tests' ComputeRaster cases, run on the H100; the corpus copy is .corpus-d, linked
+# where the test binaries look). Carry .devbin, .gl and .corpus-d (Sponza, NormalTangentMirrorTest).
 set -u
-nvidia-smi --query-gpu=name,driver_version,clocks.sm,clocks.max.sm --format=csv > $OUT/gpu.txt
-(while true; do nvidia-smi --query-gpu=timestamp,clocks.sm,temperature.gpu,power.draw --format=csv,noheader >> $OUT/smclock.csv; sleep 1; done) &
-M="env LD_LIBRARY_PATH=.devbin/lib .devbin/manylights"
 D=docs/bench/nvidia-h100/compute-raster
-S='--preset scale --warmup 5 --timed-frames 30 --camera atrium-set --backend egl --method visibility --vis-raster hardware,compute'
-$M bench $S --lights 65536 --out $OUT --name raster-64k > $OUT/raster-64k.log 2>&1
-$M bench $S --lights 1048576 --out $OUT --name raster-1m > $OUT/raster-1m.log 2>&1
-$M bench --sweep $D/accuracy.sweep.json --backend egl --out $OUT --name accuracy > $OUT/accuracy.log 2>&1
-# (3) The two rasters' frames against each other (a different id shows as a different pixel).
-mkdir -p /tmp/frames
-for scene in atrium .corpus-d/amd/sponza/Sponza.gltf; do
-  for r in hardware compute; do
-    $M render --scene $scene --method visibility --vis-raster $r --lights 4096 --size 2560x1440 --backend egl --out /tmp/frames/$r.png > /dev/null 2>&1
-  done
-  echo "$scene: $($M compare /tmp/frames/compute.png /tmp/frames/hardware.png 2>&1)" >> $OUT/frames.txt
+M="env LD_LIBRARY_PATH=.devbin/lib .devbin/manylights"
+nvidia-smi --query-gpu=name,driver_version,clocks.sm,clocks.max.sm --format=csv > $OUT/gpu.txt
+(while true; do nvidia-smi --query-gpu=timestamp,clocks.sm,temperature.gpu,power.draw --format=csv,noheader >> /tmp/smclock.csv; sleep 1; done) &
+$M bench --sweep $D/timing.sweep.json --backend egl --out $OUT --name timing > /tmp/timing.log 2>&1
+$M bench --sweep $D/accuracy.sweep.json --backend egl --out $OUT --name accuracy > /tmp/accuracy.log 2>&1
+for c in default -15,1.7,-6.3,15,1.7,-6.3,60 0,28,0.5,0,0,0,60 -16,3,-4.5,16,1.5,4.5,60; do
+  echo "atrium $c: $($M render --camera $c --method visibility --vis-raster compute --lights 65536 --size 2560x1440 --backend egl --stats --out /tmp/a.png 2>&1 | grep 'compute raster')" >> $OUT/work.txt
 done
+for c in 0 1 2 3; do
+  echo "sponza gltf:$c: $($M render --scene .corpus-d/amd/sponza/Sponza.gltf --camera gltf:$c --method visibility --vis-raster compute --lights 4096 --size 2560x1440 --backend egl --stats --out /tmp/a.png 2>&1 | grep 'compute raster')" >> $OUT/work.txt
+done
+xz -dk .devbin/ml_gpu_tests.xz .devbin/ml_corpus_tests.xz
+mkdir -p /work/shared && ln -sfn $PWD/.corpus-d /work/shared/corpus
+{ env LD_LIBRARY_PATH=.devbin/lib .devbin/ml_gpu_tests --gtest_filter='ComputeRaster*'
+  env LD_LIBRARY_PATH=.devbin/lib .devbin/ml_corpus_tests --gtest_filter='*ComputeRaster*'; } 2>&1 | grep -v "^\[ RUN\|^\[--" > $OUT/ids.txt
 kill %1
+tar czf $OUT/logs.tgz -C /tmp timing.log accuracy.log smclock.csv
