@@ -5,6 +5,9 @@
 // pass, and for every triangle of the clipped list (ML_RASTER_CLIPPED_PAIR marks them). A
 // triangle whose tiles do not fit the list goes to the hardware's list instead.
 #extension GL_ARB_gpu_shader_int64 : require
+#if ML_RASTER_ATOMIC64
+#extension GL_NV_shader_atomic_int64 : require
+#endif
 #include "include/bindings.h"
 #include "include/frame_uniforms.glsl"
 #include "include/compute_raster.glsl"

@@ -13,10 +13,10 @@ nvidia-smi --query-gpu=name,driver_version,clocks.sm,clocks.max.sm --format=csv 
 $M bench --sweep $D/timing.sweep.json --backend egl --out $OUT --name timing > /tmp/timing.log 2>&1
 $M bench --sweep $D/accuracy.sweep.json --backend egl --out $OUT --name accuracy > /tmp/accuracy.log 2>&1
 for c in default -15,1.7,-6.3,15,1.7,-6.3,60 0,28,0.5,0,0,0,60 -16,3,-4.5,16,1.5,4.5,60; do
-  echo "atrium $c: $($M render --camera $c --method visibility --vis-raster compute --lights 65536 --size 2560x1440 --backend egl --stats --out /tmp/a.png 2>&1 | grep 'compute raster')" >> $OUT/work.txt
+  echo "atrium $c: $($M render --camera $c --method visibility --vis-raster compute --lights 65536 --size 2560x1440 --backend egl --stats --overwrite --out /tmp/a.png 2>&1 | grep 'compute raster')" >> $OUT/work.txt
 done
 for c in 0 1 2 3; do
-  echo "sponza gltf:$c: $($M render --scene .corpus-d/amd/sponza/Sponza.gltf --camera gltf:$c --method visibility --vis-raster compute --lights 4096 --size 2560x1440 --backend egl --stats --out /tmp/a.png 2>&1 | grep 'compute raster')" >> $OUT/work.txt
+  echo "sponza gltf:$c: $($M render --scene .corpus-d/amd/sponza/Sponza.gltf --camera gltf:$c --method visibility --vis-raster compute --lights 4096 --size 2560x1440 --backend egl --stats --overwrite --out /tmp/a.png 2>&1 | grep 'compute raster')" >> $OUT/work.txt
 done
 xz -dk .devbin/ml_gpu_tests.xz .devbin/ml_corpus_tests.xz
 mkdir -p /work/shared && ln -sfn $PWD/.corpus-d /work/shared/corpus
