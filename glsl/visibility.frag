@@ -45,6 +45,9 @@ void main() {
     // Drawn without GL's culling, since the list mixes sidedness: culled here, as a raster pass would.
     if (u_cullBackFaces != 0u && !gl_FrontFacing && (materials[v_materialIndex].info.w & ML_MATERIAL_DOUBLE_SIDED) == 0u) discard;
 #endif
+    // The compute-rastered surfaces are in the store already: a fragment behind them needs no
+    // alpha test (a manual early depth test; there is no depth buffer).
+    if (rasterHidden(ivec2(gl_FragCoord.xy), gl_FragCoord.z)) discard;
     alphaTestFragment();
     // The hardware's own depth: the compute raster's plane at the pixel (which would make ties
     // with compute-rastered surfaces resolve alike) matched the hardware raster's ids worse on

@@ -57,6 +57,20 @@ void rasterStore(ivec2 pixel, float depth, uint triangle) {
 #endif
 }
 
+// Whether the store already holds a nearer depth at the pixel than `depth` (the depth pass), or
+// another depth than it (the id pass): a fragment the store will not take, tested before its
+// costlier work (the hardware's share: an alpha test's texture read).
+bool rasterHidden(ivec2 pixel, float depth) {
+    uint at = uint(pixel.y) * uint(u_viewport.x) + uint(pixel.x);
+#if ML_RASTER_ATOMIC64
+    return unpackUint2x32(depthIds[at]).y < floatBitsToUint(depth);
+#elif ML_RASTER_PASS == 0
+    return depthIds[at] < floatBitsToUint(depth);
+#else
+    return depthIds[at] != floatBitsToUint(depth);
+#endif
+}
+
 // A triangle ready to raster: window positions snapped to the sub-pixel grid and wound
 // counter-clockwise (y up), window depth at each vertex.
 struct RasterTriangle {
