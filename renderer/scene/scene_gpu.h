@@ -3,6 +3,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <tuple>
@@ -83,6 +84,9 @@ public:
     // the opaque depth buffer does not see those surfaces. Empty without transparent ranges or
     // when they all lie outside the camera's range.
     std::optional<glm::vec2> transparentDepthRange(const glm::mat4& view, float cameraNear, float cameraFar) const;
+    // An animated scene's transparent ranges move with their vertices: refits each range's box to
+    // posed(vertex, its loaded position) over its vertices (kept for an animated scene only).
+    void refitTransparentBounds(const std::function<glm::vec3(std::uint32_t, const glm::vec3&)>& posed);
     // Draw calls one pass issues with the current submission.
     std::size_t drawCallsPerPass() const;
     std::size_t drawRangeCount() const { return draws_.size(); }
@@ -91,6 +95,11 @@ public:
     // every raster pass's texture coordinates): vertices, indices, the material of every
     // triangle, the materials, and the optional vertex streams, at their ML_SSBO_* points.
     void bindGeometryStorage() const;
+    // The vertex animation (renderer/scene/vertex_animation.h) writes posed vertices in place:
+    // the vertices at ML_SSBO_VERTICES, the tangents (where the scene's shading reads them) at
+    // ML_SSBO_VERTEX_TANGENTS.
+    void bindVertexStreamsForWriting() const;
+    bool hasTangentStream() const { return static_cast<bool>(tangents_); }
     // Texture sets: the distinct (texture, sampler) tuples over a material's slots. Materials name
     // theirs (GpuMaterial::info.z); -1 is "no texture". Binds a set's textures at ML_TEX_*.
     std::size_t textureSetCount() const { return textureSets_.size(); }
@@ -127,6 +136,9 @@ private:
         int textureSet = -1;
         bool doubleSided = false;
         Bounds bounds;
+        // An animated scene's only: the range's vertices and their loaded positions.
+        std::vector<std::uint32_t> vertices;
+        std::vector<glm::vec3> loaded;
     };
 
     void setCullState(bool doubleSided) const;
