@@ -100,6 +100,9 @@ public:
     // ML_SSBO_VERTEX_TANGENTS.
     void bindVertexStreamsForWriting() const;
     bool hasTangentStream() const { return static_cast<bool>(tangents_); }
+    // The vertex and tangent buffers as they are now (a GPU sync): the vertex animation's tests.
+    std::vector<Vertex> downloadVertices() const { return vertices_.downloadAll<Vertex>(); }
+    std::vector<glm::vec4> downloadTangents() const { return tangents_ ? tangents_.downloadAll<glm::vec4>() : std::vector<glm::vec4>{}; }
     // Texture sets: the distinct (texture, sampler) tuples over a material's slots. Materials name
     // theirs (GpuMaterial::info.z); -1 is "no texture". Binds a set's textures at ML_TEX_*.
     std::size_t textureSetCount() const { return textureSets_.size(); }
