@@ -166,8 +166,11 @@ Bounds sweptBounds(const Scene& scene, std::optional<std::size_t> clip, double s
                    std::size_t maxPoses) {
     const AnimationClip* c = sceneClip(scene, clip);
     if (c == nullptr) return scene.bounds;
-    const std::size_t frames = static_cast<std::size_t>(std::ceil(c->duration / frameSeconds)) + 1;
-    const std::size_t poses = std::clamp<std::size_t>(frames, 1, std::max<std::size_t>(maxPoses, 1));
+    const std::size_t frames = static_cast<std::size_t>(std::min(std::ceil(c->duration / frameSeconds), 1e9)) + 1;
+    // About 4 million vertex poses at most (half a second on one core): a big animated scene
+    // is swept at fewer, evenly spread times.
+    const std::size_t budget = std::max<std::size_t>(2, 4'000'000 / std::max<std::size_t>(1, scene.animation->restPositions.size()));
+    const std::size_t poses = std::clamp<std::size_t>(frames, 1, std::max<std::size_t>(std::min(maxPoses, budget), 1));
     // Spread over the loop when it has more frames than poses allowed.
     const double step = c->duration > 0.0f ? std::max(frameSeconds, static_cast<double>(c->duration) / static_cast<double>(poses)) : 0.0;
     Bounds bounds;

@@ -74,9 +74,11 @@ std::size_t morphTargetCount(const std::string& path, const tinygltf::Model& mod
 
 AnimationReader::AnimationReader(const std::string& path, const tinygltf::Model& model, const AccessorReader& reader)
     : path_(path), model_(model), reader_(reader) {
+    // Once per mesh, however many nodes place it.
+    for (std::size_t m = 0; m < model.meshes.size(); ++m) morphTargets_.push_back(morphTargetCount(path, model, m));
+    for (std::size_t targets : morphTargets_) animation_.morphTargetMeshes += targets > 0;
     readNodes();
     readSkins();
-    for (std::size_t m = 0; m < model.meshes.size(); ++m) animation_.morphTargetMeshes += morphTargetCount(path, model, m) > 0;
     for (std::size_t a = 0; a < model.animations.size(); ++a) readClip(a);
     moved_.assign(animation_.nodes.size(), false);
     for (const AnimationClip& clip : animation_.clips)
@@ -103,7 +105,7 @@ void AnimationReader::readNodes() {
                             std::to_string(model_.skins.size()) + " skins)");
         // Morph weights at rest: the node's own, else its mesh's, else zero (glTF 3.7.2.2).
         if (node.mesh >= 0 && static_cast<std::size_t>(node.mesh) < model_.meshes.size()) {
-            const std::size_t targets = morphTargetCount(path_, model_, static_cast<std::size_t>(node.mesh));
+            const std::size_t targets = morphTargets_[static_cast<std::size_t>(node.mesh)];
             const std::vector<double>& given = node.weights.empty() ? model_.meshes[static_cast<std::size_t>(node.mesh)].weights : node.weights;
             if (!node.weights.empty() && node.weights.size() != targets)
                 fail(path_, name + ": weights has " + std::to_string(node.weights.size()) + " numbers for its mesh's " +

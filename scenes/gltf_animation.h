@@ -51,6 +51,7 @@ private:
     const AccessorReader& reader_;
     SceneAnimation animation_;
     std::vector<bool> moved_;
+    std::vector<std::size_t> morphTargets_;  // per mesh
     std::size_t skippedChannels_ = 0;
     std::string skippedPaths_;  // the first path skipped, for the warning
     std::size_t keyframeFloats_ = 0;  // all samplers together, bounded by kMaxKeyframeFloats
