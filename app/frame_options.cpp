@@ -309,11 +309,11 @@ PreparedFrame prepareFrame(const FrameOptions& o, const Scene* loaded) {
     if (f.scene.indices.empty()) throw SceneError(o.scene + ": the scene has no triangles");
     f.settings.sceneAnimation = sceneAnimationFor(o.animation, o.sceneTime, f.scene);
     if (const std::optional<std::size_t> clip = f.settings.sceneAnimation.clip) {
-        // The scene as frame frameIndex shows it (the default camera frames it, lights are placed
-        // on it), and bounds that hold it over the whole loop (clip planes, light volume).
-        const double start = o.sceneTime + static_cast<double>(f.frameIndex) * kSecondsPerFrame;
-        applyPose(f.scene, poseAt(*f.scene.animation, sceneClip(f.scene, clip), start));
-        f.scene.bounds = sweptBounds(f.scene, clip, start, kSecondsPerFrame);
+        // The scene as frame 0 shows it (the default camera frames it, lights are placed on it),
+        // and bounds that hold it over the whole loop (clip planes, light volume). Not frame
+        // --frames K's pose: then `--frames K` and frame K of a sequence would differ.
+        applyPose(f.scene, poseAt(*f.scene.animation, sceneClip(f.scene, clip), o.sceneTime));
+        f.scene.bounds = sweptBounds(f.scene, clip, o.sceneTime, kSecondsPerFrame);
     }
     const bool gbufferMethod = f.settings.method.kind == MethodKind::Deferred || f.settings.method.kind == MethodKind::Visibility;
     if (gbufferMethod && f.settings.method.gbuffer == GBufferFormat::TwoComponent && (materialFeatures(f.scene) & ML_FEATURE_EMISSIVE))

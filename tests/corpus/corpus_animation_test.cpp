@@ -55,19 +55,7 @@ TEST_F(CorpusAnimation, CesiumManWalkingHoldsTheContractInEveryMethod) {
     const ImageDifference moved = compareImages(renderer.readLdr(), reference.ldr);
     std::printf("CesiumMan naive, 0 s against 0.5 s: %.2f %% of pixels differ by more than 1/255\n", moved.badPixelShare * 100.0);
     EXPECT_GT(moved.badPixelShare, 0.005);
-    for (MethodKind kind : kEveryMethod) {
-        if (kind == MethodKind::Naive) continue;
-        MethodSettings method;
-        method.kind = kind;
-        renderer.setMethod(method);
-        renderer.render(frame);
-        const RgbaImage ldr = renderer.readLdr();
-        const ImageDifference d = compareImages(ldr, reference.ldr);
-        std::printf("CesiumMan at 0.5 s, %dx%d, %-12s max %3.0f/255  over 1/255 %.4f %%\n", kWidth, kHeight, methodName(kind).c_str(),
-                    d.maxAbs * 255.0, d.badPixelShare * 100.0);
-        EXPECT_LE(d.badPixelShare, 1e-4) << methodName(kind) << ": images in "
-                                         << writeFailureImages("CesiumMan_" + methodName(kind), ldr, reference.ldr);
-    }
+    expectEveryMethodHoldsTheContract(renderer, frame, reference, "CesiumMan at 0.5 s " + std::to_string(kWidth) + "x" + std::to_string(kHeight), 1e-4);
 }
 
 }  // namespace

@@ -179,3 +179,39 @@ TEST_F(VertexAnimation, StaticScenesAndAnimationOffHaveNoPass) {
 
 }  // namespace
 }  // namespace ml::test
+
+namespace ml::test {
+namespace {
+
+using namespace gltf_test;
+
+// `render` on an animated file: a sequence's frame is the single frame of the same number, and a
+// clip the file does not have is one line naming it and the clips there are.
+TEST(VertexAnimationCommand, SequencesRepeatSingleFramesAndBadClipsAreOneLine) {
+    const fs::path dir = testDir();
+    const std::string file = skinnedStrip().g.writeGlb(dir, "skinned-strip").string();
+    const std::string common = "render --scene " + file + " --size 96x54 --lights 16 --scene-time 0.25 ";
+    std::string output;
+    ASSERT_EQ(runManylights(common + "--frames 0..2 --out seq_%d.png --overwrite", output, dir.string()), 0) << output;
+    ASSERT_EQ(runManylights(common + "--frames 2 --out single.png", output, dir.string()), 0) << output;
+    EXPECT_EQ(readPng((dir / "seq_2.png").string()).pixels, readPng((dir / "single.png").string()).pixels);
+    EXPECT_NE(readPng((dir / "seq_0.png").string()).pixels, readPng((dir / "seq_2.png").string()).pixels);
+
+    for (const auto& [flag, culprits] : std::vector<std::pair<std::string, std::vector<std::string>>>{
+             {"--animation Walk", {"--animation 'Walk'", "1 clip: 0 'Bend'"}},
+             {"--animation 3", {"--animation '3'", "0 'Bend'"}},
+             {"--scene-time nan", {"--scene-time"}}}) {
+        const int status = runManylights("render --out /dev/null --scene " + file + " " + flag, output, dir.string());
+        EXPECT_NE(status, 0) << flag;
+        for (const std::string& culprit : culprits) EXPECT_NE(output.find(culprit), std::string::npos) << flag << ": " << output;
+        EXPECT_EQ(std::count(output.begin(), output.end(), '\n'), 1) << output;
+    }
+    EXPECT_NE(runManylights("render --out /dev/null --scene boxes --animation 0", output), 0);
+    EXPECT_NE(output.find("the scene has no animation clips"), std::string::npos) << output;
+    // By name and off work.
+    EXPECT_EQ(runManylights(common + "--animation Bend --out named.png", output, dir.string()), 0) << output;
+    EXPECT_EQ(runManylights(common + "--animation off --out off.png", output, dir.string()), 0) << output;
+}
+
+}  // namespace
+}  // namespace ml::test

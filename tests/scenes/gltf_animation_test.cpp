@@ -158,18 +158,14 @@ TEST(GltfAnimationFaults, SamplerOutputPastItsBuffer) {
 
 TEST(GltfAnimationFaults, DecreasingKeyframeTimes) {
     const fs::path dir = testDir();
-    Gltf g;
-    const int mesh = g.mesh({trianglePrimitive(g)});
-    g.scene({g.node({{"mesh", mesh}})});
+    Gltf g = oneTriangle();
     addAnimation(g, "Back", 0, "translation", {0.0f, 2.0f, 1.0f}, {0, 0, 0, 1, 0, 0, 2, 0, 0}, "VEC3", 3);
     expectFault(g.writeGlb(dir, "decreasing-times"), {"animations[0] 'Back' samplers[0]", "decrease at key 2"});
 }
 
 TEST(GltfAnimationFaults, EqualKeyframeTimesAreAJump) {
     const fs::path dir = testDir();
-    Gltf g;
-    const int mesh = g.mesh({trianglePrimitive(g)});
-    g.scene({g.node({{"mesh", mesh}})});
+    Gltf g = oneTriangle();
     addAnimation(g, "Jump", 0, "translation", {0.0f, 1.0f, 1.0f, 2.0f}, {0, 0, 0, 1, 0, 0, 5, 0, 0, 5, 0, 0}, "VEC3", 3);
     const Scene scene = load(g.writeGlb(dir, "equal-times"));
     EXPECT_NEAR(posedBounds(scene, 0, 0.5).min.x, 0.5f, 1e-6f);
@@ -178,18 +174,14 @@ TEST(GltfAnimationFaults, EqualKeyframeTimesAreAJump) {
 
 TEST(GltfAnimationFaults, NaNKeyframeValue) {
     const fs::path dir = testDir();
-    Gltf g;
-    const int mesh = g.mesh({trianglePrimitive(g)});
-    g.scene({g.node({{"mesh", mesh}})});
+    Gltf g = oneTriangle();
     addAnimation(g, "Nan", 0, "translation", {0.0f, 1.0f}, {0, 0, 0, NAN, 0, 0}, "VEC3", 3);
     expectFault(g.writeGlb(dir, "nan-output"), {"output of animations[0] 'Nan' samplers[0]", "non-finite", "element 1"});
 }
 
 TEST(GltfAnimationFaults, NaNKeyframeTime) {
     const fs::path dir = testDir();
-    Gltf g;
-    const int mesh = g.mesh({trianglePrimitive(g)});
-    g.scene({g.node({{"mesh", mesh}})});
+    Gltf g = oneTriangle();
     addAnimation(g, "Nan", 0, "translation", {0.0f, NAN}, {0, 0, 0, 1, 0, 0}, "VEC3", 3);
     expectFault(g.writeGlb(dir, "nan-input"), {"input of animations[0] 'Nan' samplers[0]", "non-finite"});
 }
@@ -237,9 +229,7 @@ TEST(GltfAnimationFaults, NaNSkinWeight) {
 
 TEST(GltfAnimationFaults, MorphWeightsChannelWithoutTargets) {
     const fs::path dir = testDir();
-    Gltf g;
-    const int mesh = g.mesh({trianglePrimitive(g)});
-    g.scene({g.node({{"mesh", mesh}})});
+    Gltf g = oneTriangle();
     addAnimation(g, "Weights", 0, "weights", {0.0f, 1.0f}, {0.0f, 1.0f}, "SCALAR", 1);
     expectFault(g.writeGlb(dir, "weights-without-targets"), {"animations[0] 'Weights' channels[0]", "no mesh with morph targets"});
 }
