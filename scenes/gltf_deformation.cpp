@@ -29,7 +29,7 @@ const Format kDeltaFormat{TINYGLTF_TYPE_VEC3, "VEC3 FLOAT (or BYTE or SHORT with
 }  // namespace
 
 void DeformationBuilder::add(const MeshInstance& instance, const MeshPlan& plan, const std::vector<std::uint32_t>& groupBases,
-                             std::uint32_t firstVertex, std::uint32_t vertexCount, bool mirroredAtRest) {
+                             std::uint32_t firstVertex, std::uint32_t vertexCount) {
     const tinygltf::Node& node = model_.nodes[instance.node];
     DeformedMesh mesh;
     mesh.firstVertex = firstVertex;
@@ -38,7 +38,6 @@ void DeformationBuilder::add(const MeshInstance& instance, const MeshPlan& plan,
     mesh.node = instance.node;
     mesh.instance = glm::mat4(instance.instance);
     mesh.skin = node.skin;
-    mesh.mirroredAtRest = mirroredAtRest;
     mesh.restWeights = animation_.nodes[instance.node].weights;
     mesh.morphTargets = mesh.restWeights.size();
     // Rest positions, normals and tangents are taken at finish; the slots exist from here.

@@ -23,13 +23,14 @@ public:
                        SceneAnimation& animation)
         : path_(path), model_(model), reader_(reader), animation_(animation) {}
 
-    // A mesh instance SceneBuilder has just placed in the mesh's own space (world = identity):
+    // A mesh instance SceneBuilder has just placed in the mesh's own space (world = identity;
+    // where its node mirrors, the loader has flipped the winding back as for a static instance):
     // its vertices are the scene's [firstVertex, firstVertex + vertexCount), group g's block
     // starting at groupBases[g]. Reads the influences (a skinned node) and the morph deltas of
     // each vertex group from its first primitive (primitives that share a group share POSITION,
     // and glTF has them share these too). Each fault is one line naming the accessor.
     void add(const MeshInstance& instance, const MeshPlan& plan, const std::vector<std::uint32_t>& groupBases,
-             std::uint32_t firstVertex, std::uint32_t vertexCount, bool mirroredAtRest);
+             std::uint32_t firstVertex, std::uint32_t vertexCount);
 
     // After SceneBuilder::finish: takes every deformed vertex's rest data from the scene (where
     // it is still in the mesh's space), hands the animation to the scene, and poses the scene at

@@ -145,7 +145,7 @@ Scene loadChecked(const std::string& path, std::vector<std::string>& warnings) {
             // A skinned mesh ignores its node's transform (glTF), so only a node-placed one mirrors.
             const bool mirrored = model.nodes[placed.node].skin < 0 && glm::determinant(glm::dmat3(placed.world)) < 0.0;
             if (mirrored) flipWinding(scene.indices, firstIndex);
-            deformation->add(placed, *plan, bases, firstVertex, static_cast<std::uint32_t>(scene.vertices.size()) - firstVertex, mirrored);
+            deformation->add(placed, *plan, bases, firstVertex, static_cast<std::uint32_t>(scene.vertices.size()) - firstVertex);
         }
     }
     if (scene.indices.empty())

@@ -84,9 +84,6 @@ struct DeformedMesh {
     std::size_t morphTargets = 0;
     std::size_t firstDelta = 0;
     std::vector<float> restWeights;
-    // The rest pose mirrors the mesh (a negative determinant): the loader flipped its winding
-    // back, as it does for a static mirrored instance, and tangent w follows the pose's sign.
-    bool mirroredAtRest = false;
 };
 
 struct MorphDelta {

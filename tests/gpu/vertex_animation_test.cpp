@@ -160,6 +160,31 @@ TEST_F(VertexAnimation, EveryMethodMatchesNaiveOnAPosedFrame) {
     }
 }
 
+// Transparent ranges blend back to front by their boxes: a glass cube sliding past a glass square
+// changes their order as it passes (the boxes are refitted to the posed vertices each frame).
+TEST_F(VertexAnimation, TransparentOrderFollowsTheAnimation) {
+    Gltf g = animatedCube();
+    const int cubeGlass = colourMaterial(g, {0.2f, 0.4f, 1.0f, 0.5f}, "BLEND");
+    const int squareGlass = colourMaterial(g, {1.0f, 0.4f, 0.2f, 0.5f}, "BLEND");
+    g.doc["meshes"][0]["primitives"][0]["material"] = cubeGlass;
+    const int square = g.mesh({gltf_test::square(g, 0.0f, 0.5f, squareGlass)});
+    g.doc["scenes"][0]["nodes"].push_back(g.node({{"mesh", square}, {"translation", {2, 0, 0}}}));
+    const Scene scene = load(g.writeGlb(testDir(), "sliding-glass"));
+    const glm::vec3 eye(10.0f, 0.0f, 0.0f);
+    const auto orderAt = [&](double seconds) {
+        FrameSettings s = smallFrame(scene, CameraPose{eye, {0, 0, 0}, 60.0f}, 32, 18);
+        s.sceneAnimation.startSeconds = seconds;
+        FrameRenderer renderer(scene, kLights, s);
+        renderer.render(0);
+        return renderer.scene().transparentOrder(eye);
+    };
+    ASSERT_EQ(scene.animation->meshes.size(), 1u);  // the cube moves, the square does not
+    const std::vector<std::uint32_t> before = orderAt(0.0), after = orderAt(1.9);  // the cube at x = 0, then 3.8
+    ASSERT_EQ(before.size(), 2u);
+    EXPECT_EQ(after[0], before[1]);
+    EXPECT_EQ(after[1], before[0]);
+}
+
 TEST_F(VertexAnimation, StaticScenesAndAnimationOffHaveNoPass) {
     const TestScene boxes = testScene("boxes", 8, 1);
     FrameSettings s = smallFrame(boxes.scene, 32, 18);
