@@ -115,8 +115,6 @@ glm::vec3 VertexAnimationPass::posedPosition(std::uint32_t vertex, const glm::ve
 std::size_t VertexAnimationPass::bytes() const { return vertices_.size() + meshes_.size() + deltas_.size() + poseBuffer_.size(); }
 
 void VertexAnimationPass::run(const SceneGpu& scene, double seconds) {
-    if (posedAt_ && *posedAt_ == seconds) return;
-    posedAt_ = seconds;
     const SceneAnimation& a = *animation_;
     pose_ = poseAt(a, clip_, seconds);
     const PoseLayout layout = poseLayout(a);

@@ -12,7 +12,6 @@
 
 #include <cstddef>
 #include <memory>
-#include <optional>
 #include <vector>
 
 #include "renderer/gl/buffer.h"
@@ -28,7 +27,7 @@ public:
     VertexAnimationPass(const Scene& scene, std::size_t clip, bool tangents);
 
     // Poses the vertices at `seconds` into the clip (looping). The same time gives the same
-    // vertices; a frame at the time last posed dispatches nothing.
+    // vertices. Every frame dispatches, at a repeated time too, so `bench` times the pass.
     void run(const SceneGpu& scene, double seconds);
     const AnimationPose& pose() const { return pose_; }
     // Scene vertex `vertex` as last posed (the CPU mirror), or `loaded` where nothing moves it.
@@ -44,7 +43,6 @@ private:
     std::vector<glm::vec4> poseData_;  // staging for poseBuffer_
     AnimationPose pose_;
     std::size_t vertexCount_ = 0;
-    std::optional<double> posedAt_;
 };
 
 }  // namespace ml
