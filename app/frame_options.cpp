@@ -6,11 +6,13 @@
 #include <limits>
 #include <stdexcept>
 
+#include "app/animation_choice.h"
 #include "app/camera_spec.h"
 #include "renderer/camera/default_camera.h"
 #include "glsl/include/bindings.h"
 #include "renderer/lights/light_buffers.h"
 #include "renderer/scene/material_features.h"
+#include "scenes/animation_pose.h"
 #include "scenes/scene_library.h"
 
 namespace ml::app {
@@ -137,6 +139,10 @@ void addFrameOptions(CLI::App& cmd, FrameOptions& o) {
            "--far", [&o](const std::string& text) { o.farPlane = parseClipPlane("--far", text); },
            "far clip plane, or auto (the default: fits the scene's bounds)");
     cmd.add_option("--frames", o.frames, "advance the light animation this many frames (1/60 s each) first")->capture_default_str();
+    cmd.add_option("--animation", o.animation, "the glTF clip a file plays: its name, its index (from 0), or off "
+                   "(drawn at rest) (default: the first clip)")->type_name("NAME|INDEX|off");
+    cmd.add_option("--scene-time", o.sceneTime, "seconds into the clip at frame 0; each frame adds 1/60 s, as the lights' "
+                   "animation does, and the clip loops")->capture_default_str();
     cmd.add_option("--exposure", o.exposure, "auto (from the frame's log-average luminance, computed on the GPU), or EV "
                    "stops (the HDR frame times 2^EV before the tonemap) (default: auto for a file; for a built-in scene "
                    "log2(pi) = 1.65 under --brdf ggx, whose Lambert divides by pi, and 0 under blinn-phong: the same look)")
@@ -306,6 +312,14 @@ PreparedFrame prepareFrame(const FrameOptions& o, const Scene* loaded) {
 
     f.scene = loaded ? *loaded : loadScene(SceneRequest{o.scene, o.detail}, f.warnings);
     if (f.scene.indices.empty()) throw SceneError(o.scene + ": the scene has no triangles");
+    f.settings.sceneAnimation = sceneAnimationFor(o.animation, o.sceneTime, f.scene);
+    if (const std::optional<std::size_t> clip = f.settings.sceneAnimation.clip) {
+        // The scene as frame 0 shows it (the default camera frames it, lights are placed on it),
+        // and bounds that hold it over the whole loop (clip planes, light volume). Not frame
+        // --frames K's pose: then `--frames K` and frame K of a sequence would differ.
+        applyPose(f.scene, poseAt(*f.scene.animation, sceneClip(f.scene, clip), o.sceneTime));
+        f.scene.bounds = sweptBounds(f.scene, clip, o.sceneTime, kSecondsPerFrame);
+    }
     const bool gbufferMethod = f.settings.method.kind == MethodKind::Deferred || f.settings.method.kind == MethodKind::Visibility;
     if (gbufferMethod && f.settings.method.gbuffer == GBufferFormat::TwoComponent && (materialFeatures(f.scene) & ML_FEATURE_EMISSIVE))
         f.warnings.push_back("--gbuffer two-component has no room for emissive: the scene's emissive surfaces stay dark "

@@ -10,6 +10,9 @@ namespace ml {
 FrameRenderer::FrameRenderer(const Scene& scene, const std::vector<Light>& lights, const FrameSettings& settings)
     : settings_(settings),
       scene_(scene, settings.triangleOrder),
+      vertexAnimation_(sceneClip(scene, settings.sceneAnimation.clip)
+                           ? std::make_unique<VertexAnimationPass>(scene, *settings.sceneAnimation.clip, scene_.hasTangentStream())
+                           : nullptr),
       lights_(lights),
       // Sampled as asked from the start, so a size the GPU cannot hold is refused before allocation.
       targets_(settings.width, settings.height, false, TargetSampling{settings.method.msaa, settings.supersample}),
@@ -79,6 +82,13 @@ std::vector<PassTime> FrameRenderer::render(std::uint32_t frameIndex, std::uint3
 std::vector<PassTime> FrameRenderer::renderAt(float time, std::uint32_t drawSeed) {
     timer_.beginFrame();
     updateUniforms(time);
+    if (vertexAnimation_) {
+        auto pass = timer_.pass("scene.animate");
+        vertexAnimation_->run(scene_, settings_.sceneAnimation.startSeconds + static_cast<double>(time));
+        // Transparent ranges blend back to front by their boxes, which move with them.
+        if (scene_.transparentRangeCount() > 0)
+            scene_.refitTransparentBounds([&](std::uint32_t v, const glm::vec3& loaded) { return vertexAnimation_->posedPosition(v, loaded); });
+    }
     {
         auto pass = timer_.pass("lights.animate");
         animate_.run(lights_, time, settings_.animation, settings_.lightModel, drawSeed);

@@ -19,12 +19,20 @@
 #include "renderer/pass_timer.h"
 #include "renderer/passes/resolve_pass.h"
 #include "renderer/scene/scene_gpu.h"
+#include "renderer/scene/vertex_animation.h"
 #include "renderer/passes/tonemap_pass.h"
 
 namespace ml {
 
 // The animation advances this much per frame index, whatever the real frame rate.
 inline constexpr float kSecondsPerFrame = 1.0f / 60.0f;
+
+// --animation and --scene-time: the glTF clip a file plays (none: off, drawn at rest) and the
+// time it starts from; a frame at animation time T shows the clip at startSeconds + T.
+struct SceneAnimationSettings {
+    std::optional<std::size_t> clip = 0;  // the first clip, where the scene has one
+    double startSeconds = 0.0;
+};
 
 struct FrameSettings {
     int width = 1280;
@@ -48,6 +56,7 @@ struct FrameSettings {
     LightModel lightModel;  // --brdf, --light-cutoff, --cutoff: frame uniforms, no recompile
     BloomSettings bloom;
     LightAnimation animation;
+    SceneAnimationSettings sceneAnimation;
     bool timing = false;
     TimingClock clock = TimingClock::GpuQueries;
     TimingReadback readback = TimingReadback::Wait;
@@ -96,6 +105,8 @@ public:
     const SceneGpu& scene() const { return scene_; }
     // --view overdraw's pass, once a frame has been rendered with that view (else null).
     const OverdrawPass* overdraw() const { return overdraw_.get(); }
+    // The vertex animation pre-pass: null for a static scene or with --animation off.
+    const VertexAnimationPass* vertexAnimation() const { return vertexAnimation_.get(); }
 
 private:
     void updateUniforms(float time);
@@ -106,6 +117,7 @@ private:
 
     FrameSettings settings_;
     SceneGpu scene_;
+    std::unique_ptr<VertexAnimationPass> vertexAnimation_;  // only where a clip plays
     LightBuffers lights_;
     FrameTargets targets_;
     gl::Buffer frameUniformBuffer_;

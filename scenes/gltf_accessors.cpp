@@ -67,6 +67,7 @@ std::string componentTypeName(int componentType) {
 
 std::string describe(const tinygltf::Model& model, int accessor, const Use& use) {
     std::string s = "accessors[" + std::to_string(accessor) + "]";
+    if (use.owner != nullptr) return s + " (" + use.attribute + " of " + *use.owner + ")";
     if (use.instancedNode >= 0) {
         const auto node = static_cast<std::size_t>(use.instancedNode);
         return s + " (" + use.attribute + " of " + named("nodes", node, model.nodes[node].name) + " EXT_mesh_gpu_instancing)";

@@ -19,6 +19,8 @@ struct Use {
     int mesh;
     int primitive;
     int instancedNode = -1;  // EXT_mesh_gpu_instancing's attributes belong to a node, not a primitive
+    // Animation data belongs to neither: "animations[0] 'Walk' samplers[2]", "skins[1] 'Armature'".
+    const std::string* owner = nullptr;
 };
 
 
@@ -27,7 +29,8 @@ std::size_t componentBytes(int componentType);
 std::size_t componentCount(int type);
 
 // "accessors[4] (NORMAL of meshes[0] 'Body' primitive 2)",
-// "accessors[7] (ROTATION of nodes[3] 'Trees' EXT_mesh_gpu_instancing)".
+// "accessors[7] (ROTATION of nodes[3] 'Trees' EXT_mesh_gpu_instancing)",
+// "accessors[9] (output of animations[0] 'Walk' samplers[2])".
 std::string describe(const tinygltf::Model& model, int accessor, const Use& use);
 
 // The formats glTF 2.0 allows for each use; KHR_mesh_quantization widens those of vertex data.

@@ -26,6 +26,12 @@ inline constexpr std::size_t kMaxIndices = std::size_t{1} << 28;
 // EXT_mesh_gpu_instancing's instances, all nodes together: each becomes a copy of its mesh in
 // world space, and an accessor without a buffer view can ask for any number at no cost.
 inline constexpr std::size_t kMaxInstances = std::size_t{1} << 20;
+// Animation keyframes, all samplers together (times and values): 32 Mi floats (128 MiB). An
+// accessor without a buffer view costs nothing in the file.
+inline constexpr std::size_t kMaxKeyframeFloats = std::size_t{1} << 25;
+// Morph target deltas, vertices x targets over all deformed meshes: 2 Mi (96 MiB on the GPU,
+// under the 128 MiB a storage buffer may hold on llvmpipe).
+inline constexpr std::size_t kMaxMorphDeltas = std::size_t{1} << 21;
 // Decoded base-colour textures, all together: 256 Mi texels (1 GiB of RGBA8).
 inline constexpr int kMaxImageSide = 16384;
 inline constexpr std::uint64_t kMaxImageTexels = std::uint64_t{1} << 28;

@@ -22,12 +22,10 @@ MeshPlan planMesh(const std::string& path, const tinygltf::Model& model, std::si
     const tinygltf::Mesh& mesh = model.meshes[meshIndex];
     MeshPlan plan;
     std::map<std::tuple<int, int, int, int, int, int>, std::size_t> groupOf;
-    bool morphed = false;
     for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {
         const tinygltf::Primitive& prim = mesh.primitives[p];
         // Built only for a message: a mesh may have a million primitives.
         const auto where = [&] { return named("meshes", meshIndex, mesh.name) + " primitive " + std::to_string(p); };
-        morphed = morphed || !prim.targets.empty();
         if (!isOneOf(prim.mode, {TINYGLTF_MODE_TRIANGLES, TINYGLTF_MODE_TRIANGLE_STRIP, TINYGLTF_MODE_TRIANGLE_FAN})) {
             ++skipped.primitiveModes[prim.mode];
             continue;
@@ -79,11 +77,10 @@ MeshPlan planMesh(const std::string& path, const tinygltf::Model& model, std::si
         planned.group = it->second;
         plan.primitives.push_back(planned);
     }
-    if (morphed) ++skipped.morphedMeshes;
     return plan;
 }
 
-void SceneBuilder::addInstance(const MeshInstance& instance, const MeshPlan& plan) {
+std::vector<std::uint32_t> SceneBuilder::addInstance(const MeshInstance& instance, const MeshPlan& plan) {
     // Normals transform by the inverse transpose of the linear part. Its columns are the cross
     // products of the matrix's columns over the determinant; dropping the division keeps the
     // directions and still works for singular transforms (a zero scale), keeping only the sign.
@@ -124,6 +121,9 @@ void SceneBuilder::addInstance(const MeshInstance& instance, const MeshPlan& pla
         for (int set = 0; set < 2; ++set)
             if (!tangentRanges[g][set].empty()) generateTangents(scene_, tangentRanges[g][set], set);
     }
+    std::vector<std::uint32_t> bases;
+    for (const Block& block : blocks) bases.push_back(block.base);
+    return bases;
 }
 
 // Reads a vertex attribute whose NaN or infinite components are a shading fault, not a geometry

@@ -27,7 +27,6 @@ struct Skipped {
     std::map<int, std::size_t> primitiveModes;  // POINTS, LINES, LINE_LOOP, LINE_STRIP (or unknown) -> primitives
     std::size_t withoutPosition = 0;
     std::size_t emptyPrimitives = 0;
-    std::size_t morphedMeshes = 0;
     std::size_t regeneratedNormals = 0;   // primitives whose NORMAL held NaN or infinity
     std::size_t regeneratedTangents = 0;  // primitives whose TANGENT held NaN or infinity
     std::size_t repairedTexcoords = 0;    // TEXCOORD_0 or TEXCOORD_1 with NaN or infinity
@@ -77,7 +76,9 @@ public:
           materials_(materials),
           reader_(path, model, lists(model.extensionsUsed, "KHR_mesh_quantization")) {}
 
-    void addInstance(const MeshInstance& instance, const MeshPlan& plan);
+    // Appends the instance's vertices (one block per vertex group, in plan order, one after
+    // another) and triangles; returns where each group's block starts.
+    std::vector<std::uint32_t> addInstance(const MeshInstance& instance, const MeshPlan& plan);
 
     // One draw range per material (instances append in node order, so a material recurs), and
     // the optional streams dropped where no drawn primitive asked for them.

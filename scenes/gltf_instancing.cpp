@@ -70,7 +70,7 @@ std::vector<MeshInstance> gpuInstances(const std::string& path, const tinygltf::
             trs *= glm::mat4_cast(q / length);
         }
         if (!scales.empty()) trs = glm::scale(trs, glm::dvec3(scales[3 * i], scales[3 * i + 1], scales[3 * i + 2]));
-        instances.push_back({placed.node, placed.mesh, placed.world * trs});
+        instances.push_back({placed.node, placed.mesh, placed.world * trs, trs});
     }
     return instances;
 }

@@ -8,8 +8,12 @@
 //   gltf_draco       decode KHR_draco_mesh_compression primitives into plain accessors;
 //   gltf_nodes       flatten the default scene's node trees with an explicit stack;
 //   gltf_instancing  expand each EXT_mesh_gpu_instancing node into one mesh instance per TRS;
+//   gltf_animation   for a file with animations, skins or morph targets only: the node hierarchy
+//                    at rest, the clips and skins, and which instances they move;
 //   gltf_geometry    plan each mesh's primitives once and append each instance's triangles in
 //                    world space, reading through gltf_accessors (which checks every byte range);
+//                    an instance that moves in the mesh's own space, its influences and morph
+//                    deltas beside it (gltf_deformation), posed at rest once all are placed;
 //   gltf_materials   convert materials and their images on first use;
 //   gltf_cameras     place the perspective cameras the node trees hold;
 //   gltf_lights      place the lights (KHR_lights_punctual) the node trees hold;
@@ -20,11 +24,14 @@
 #include <filesystem>
 #include <new>
 #include <optional>
+#include <utility>
 
+#include "scenes/gltf_animation.h"
 #include "scenes/gltf_cameras.h"
 #include "scenes/gltf_lights.h"
 #include "scenes/gltf_common.h"
 #include "scenes/gltf_container.h"
+#include "scenes/gltf_deformation.h"
 #include "scenes/gltf_draco.h"
 #include "scenes/gltf_geometry.h"
 #include "scenes/gltf_instancing.h"
@@ -62,11 +69,8 @@ std::vector<std::string> unmodelledFeatures(const tinygltf::Model& model, const 
     const auto note = [&](std::size_t n, const std::string& text) {
         if (n > 0) lines.push_back(text);
     };
-    note(model.skins.size(), counted(model.skins.size(), "skin", "skins") + " skipped (not modelled; skinned meshes are drawn unposed)");
-    note(model.animations.size(), counted(model.animations.size(), "animation", "animations") + " skipped (not modelled)");
     note(skipped.orthographicCameras, counted(skipped.orthographicCameras, "orthographic camera", "orthographic cameras") +
                                           " skipped (only perspective cameras are modelled)");
-    note(skipped.morphedMeshes, "morph targets of " + counted(skipped.morphedMeshes, "mesh", "meshes") + " skipped (not modelled)");
 
     for (const std::string& ext : model.extensionsUsed)
         if (!isModelledGltfExtension(ext))
@@ -89,6 +93,19 @@ std::vector<std::string> unmodelledFeatures(const tinygltf::Model& model, const 
     return lines;
 }
 
+// Reverses the winding of the triangles from `first` on (a mirroring transform's, put back).
+void flipWinding(std::vector<std::uint32_t>& indices, std::size_t first) {
+    for (std::size_t t = first; t + 2 < indices.size(); t += 3) std::swap(indices[t + 1], indices[t + 2]);
+}
+
+// Cameras and lights stay where the rest pose puts them: only meshes are animated.
+std::size_t movedCamerasAndLights(const FlatScene& flat, const AnimationReader& animation) {
+    std::size_t n = 0;
+    for (const CameraInstance& c : flat.cameras) n += animation.moves(c.node);
+    for (const LightInstance& l : flat.lights) n += animation.moves(l.node);
+    return n;
+}
+
 Scene loadChecked(const std::string& path, std::vector<std::string>& warnings) {
     ParsedGltf parsed = readGltfContainer(path);
     std::vector<std::string> decodeWarnings = std::move(parsed.warnings);
@@ -104,21 +121,50 @@ Scene loadChecked(const std::string& path, std::vector<std::string>& warnings) {
     std::size_t instanceBudget = kMaxInstances;
     std::vector<std::optional<MeshPlan>> plans(model.meshes.size());
     const FlatScene flat = flattenNodes(path, model);
+    // Only a file with something that moves pays for animation.
+    std::optional<AnimationReader> animation;
+    std::optional<DeformationBuilder> deformation;
+    if (hasAnimation(model)) {
+        animation.emplace(path, model, instanceReader);
+        deformation.emplace(path, model, instanceReader, animation->animation());
+    }
     for (const MeshInstance& instance : flat.meshes) {
         std::optional<MeshPlan>& plan = plans[instance.mesh];
         if (!plan) plan = planMesh(path, model, instance.mesh, skipped);
-        for (const MeshInstance& placed : gpuInstances(path, model, instanceReader, instance, instanceBudget))
-            builder.addInstance(placed, *plan);
+        for (const MeshInstance& placed : gpuInstances(path, model, instanceReader, instance, instanceBudget)) {
+            if (!animation || !animation->deforms(placed)) {
+                builder.addInstance(placed, *plan);
+                continue;
+            }
+            // Placed in the mesh's own space; the pose puts it in the world.
+            const auto firstVertex = static_cast<std::uint32_t>(scene.vertices.size());
+            const std::size_t firstIndex = scene.indices.size();
+            MeshInstance local = placed;
+            local.world = glm::dmat4(1.0);
+            const std::vector<std::uint32_t> bases = builder.addInstance(local, *plan);
+            // A skinned mesh ignores its node's transform (glTF), so only a node-placed one mirrors.
+            const bool mirrored = model.nodes[placed.node].skin < 0 && glm::determinant(glm::dmat3(placed.world)) < 0.0;
+            if (mirrored) flipWinding(scene.indices, firstIndex);
+            deformation->add(placed, *plan, bases, firstVertex, static_cast<std::uint32_t>(scene.vertices.size()) - firstVertex);
+        }
     }
     if (scene.indices.empty())
         fail(path, "the scene has no triangles to draw " +
                        (skipped.primitiveModes.empty() ? std::string("(empty scene)") : "(skipped: " + skippedModes(skipped) + ")"));
     builder.finish();
+    if (deformation) deformation->finish(scene, std::move(animation->animation()));
     scene.cameras = convertCameras(path, model, flat.cameras, skipped.orthographicCameras);
     scene.lights = convertLights(path, model, flat.lights);
     computeBounds(scene);
 
     for (const std::string& line : unmodelledFeatures(model, skipped)) warnings.push_back(path + ": " + line);
+    if (animation) {
+        for (const std::string& line : animation->warnings()) warnings.push_back(path + ": " + line);
+        for (const std::string& line : deformation->warnings()) warnings.push_back(path + ": " + line);
+        if (const std::size_t n = movedCamerasAndLights(flat, *animation); n > 0)
+            warnings.push_back(path + ": " + counted(n, "camera or light", "cameras and lights") +
+                               " on animated nodes stay where the rest pose puts them (only meshes are animated)");
+    }
     for (const std::string& line : materials.warnings()) warnings.push_back(path + ": " + line);
     for (const std::string& line : decodeWarnings) warnings.push_back(path + ": " + line);
     if (!parsed.tinygltfWarnings.empty()) warnings.push_back(path + ": glTF parser: " + parsed.tinygltfWarnings);

@@ -10,36 +10,40 @@
 #include "scenes/gltf_common.h"
 
 namespace ml::gltf {
-namespace {
 
-glm::dmat4 localTransform(const std::string& path, const tinygltf::Node& node, std::size_t index) {
+NodeTransform nodeTransform(const std::string& path, const tinygltf::Node& node, std::size_t index) {
     const auto badLength = [&](const char* what, std::size_t got, const char* expected) {
         fail(path, named("nodes", index, node.name) + ": " + what + " has " + std::to_string(got) +
                        " numbers, expected " + expected);
     };
+    NodeTransform t;
     if (!node.matrix.empty()) {
         if (node.matrix.size() != 16) badLength("matrix", node.matrix.size(), "16");
-        return glm::make_mat4(node.matrix.data());  // glTF and glm are both column-major
+        t.matrix = glm::make_mat4(node.matrix.data());  // glTF and glm are both column-major
+        return t;
     }
     if (!node.translation.empty() && node.translation.size() != 3) badLength("translation", node.translation.size(), "3");
     if (!node.rotation.empty() && node.rotation.size() != 4) badLength("rotation", node.rotation.size(), "4");
     if (!node.scale.empty() && node.scale.size() != 3) badLength("scale", node.scale.size(), "3");
-
-    glm::dmat4 m(1.0);
-    if (!node.translation.empty()) m = glm::translate(m, glm::make_vec3(node.translation.data()));
+    if (!node.translation.empty()) t.translation = glm::make_vec3(node.translation.data());
     if (!node.rotation.empty()) {
         const auto& r = node.rotation;  // glTF stores x, y, z, w
         const glm::dquat q(r[3], r[0], r[1], r[2]);
         const double length = glm::length(q);
         if (!(length > 0.0) || !std::isfinite(length))
             fail(path, named("nodes", index, node.name) + ": rotation quaternion has zero or non-finite length");
-        m *= glm::mat4_cast(q / length);
+        t.rotation = q / length;
     }
-    if (!node.scale.empty()) m = glm::scale(m, glm::make_vec3(node.scale.data()));
-    return m;
+    if (!node.scale.empty()) t.scale = glm::make_vec3(node.scale.data());
+    return t;
 }
 
-}  // namespace
+glm::dmat4 NodeTransform::local() const {
+    if (matrix) return *matrix;
+    glm::dmat4 m = glm::translate(glm::dmat4(1.0), translation);
+    m *= glm::mat4_cast(rotation);
+    return glm::scale(m, scale);
+}
 
 FlatScene flattenNodes(const std::string& path, const tinygltf::Model& model) {
     if (model.scenes.empty()) fail(path, "no scene: the file defines no scenes");
@@ -88,7 +92,7 @@ FlatScene flattenNodes(const std::string& path, const tinygltf::Model& model) {
         marks[step.node] = Mark::onPath;
 
         const glm::dmat4 parentWorld = step.parent < 0 ? glm::dmat4(1.0) : world[static_cast<std::size_t>(step.parent)];
-        world[step.node] = parentWorld * localTransform(path, node, step.node);
+        world[step.node] = parentWorld * nodeTransform(path, node, step.node).local();
         if (node.mesh >= 0) {
             if (static_cast<std::size_t>(node.mesh) >= model.meshes.size())
                 fail(path, name + ": mesh index " + std::to_string(node.mesh) + " out of range (" +

@@ -3,10 +3,12 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
+#include <glm/gtc/quaternion.hpp>
 #include <tiny_gltf.h>
 
 namespace ml::gltf {
@@ -15,6 +17,8 @@ struct MeshInstance {
     std::size_t node;
     std::size_t mesh;
     glm::dmat4 world;
+    // EXT_mesh_gpu_instancing: this instance's TRS inside its node (world = node world x it).
+    glm::dmat4 instance{1.0};
 };
 
 struct CameraInstance {
@@ -28,6 +32,17 @@ struct LightInstance {
     std::size_t light;  // KHR_lights_punctual: checked against model.lights
     glm::dmat4 world;
 };
+
+// A node's local transform as the file gives it: a matrix, or translation, rotation (unit) and
+// scale. Each array's length is checked (one line naming the node).
+struct NodeTransform {
+    std::optional<glm::dmat4> matrix;
+    glm::dvec3 translation{0.0};
+    glm::dquat rotation{1.0, 0.0, 0.0, 0.0};
+    glm::dvec3 scale{1.0};
+    glm::dmat4 local() const;
+};
+NodeTransform nodeTransform(const std::string& path, const tinygltf::Node& node, std::size_t index);
 
 // What the default scene places, in node-walk order (depth first, children in their order).
 struct FlatScene {

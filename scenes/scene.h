@@ -3,18 +3,21 @@
 // Geometry is flattened to world space at load time: one vertex array, one index array, and a
 // list of draw ranges that each name a material. Optional vertex streams (tangents, a second UV
 // set, vertex colours) exist only when a material or primitive asks for them, so a scene that
-// uses none of them uploads and reads what it did before. Skins, morphs, animation and lights of
-// a glTF file are not modelled; the loader skips them with one warning each.
+// uses none of them uploads and reads what it did before. A glTF file's animation, skins and
+// morph targets come as Scene::animation (scenes/scene_animation.h), only where the file has them.
 #pragma once
 
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
+
+#include "scenes/scene_animation.h"
 
 namespace ml {
 
@@ -162,6 +165,9 @@ struct Scene {
     Bounds bounds;                           // of all vertex positions
     std::optional<CameraPose> suggestedView; // procedural scenes set one; a file's default view: renderer/camera/default_camera.h
     std::vector<std::string> extensionsUsed; // a glTF file's extensionsUsed, as it lists them (`manylights info`)
+    // A glTF file's clips, skins and morph targets, and the rest data of the vertices they move
+    // (those vertices are held posed at rest above); null for a static scene.
+    std::shared_ptr<const SceneAnimation> animation;
 
     std::size_t triangleCount() const { return indices.size() / 3; }
 };

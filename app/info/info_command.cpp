@@ -5,6 +5,7 @@
 #include <memory>
 #include <string>
 
+#include "app/animation_choice.h"
 #include "app/frame_options.h"
 #include "app/report.h"
 #include "glsl/include/bindings.h"
@@ -79,6 +80,21 @@ void printLightsAndCameras(const Scene& scene) {
     }
 }
 
+// The file's clips, skins and morph targets, and what render plays.
+void printAnimation(const Scene& scene, const SceneAnimationSettings& chosen) {
+    if (!scene.animation) {
+        std::printf("animation: none\n");
+        return;
+    }
+    const SceneAnimation& a = *scene.animation;
+    std::printf("animation: %s, %s, %s with morph targets; %zu of %zu vertices move\n",
+                plural(a.clips.size(), "clip", "clips").c_str(), plural(a.skins.size(), "skin", "skins").c_str(),
+                plural(a.morphTargetMeshes, "mesh", "meshes").c_str(), a.restPositions.size(), scene.vertices.size());
+    for (std::size_t i = 0; i < a.clips.size(); ++i) std::printf("  %s\n", describeClip(scene, i).c_str());
+    if (chosen.clip) std::printf("  plays clip %zu from %.4g s (--animation, --scene-time)\n", *chosen.clip, chosen.startSeconds);
+    else std::printf("  plays none: drawn at rest (--animation off)\n");
+}
+
 int runInfo(const FrameOptions& o) {
     // What render would do with the same flags: the same preparation, no GL.
     PreparedFrame frame = prepareFrame(o);
@@ -87,6 +103,7 @@ int runInfo(const FrameOptions& o) {
     printGeometry(scene);
     printMaterials(scene);
     printLightsAndCameras(scene);
+    printAnimation(scene, frame.settings.sceneAnimation);
     if (frame.warnings.empty()) std::printf("warnings: none\n");
     else std::printf("warnings: %zu\n", frame.warnings.size());
     for (const std::string& w : frame.warnings) std::printf("  %s\n", w.c_str());

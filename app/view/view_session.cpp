@@ -231,6 +231,8 @@ void ViewSession::handleKeys(const std::vector<int>& keys) {
             controller_.reset();
             break;
         case GLFW_KEY_F: frameScene(); break;
+        // Pauses and resumes time: the lights' drift and the file's animation clip alike.
+        case GLFW_KEY_P: settings_.animate = !settings_.animate; break;
         case GLFW_KEY_C:
             settings_.cameraMode = settings_.cameraMode == CameraMode::Fly ? CameraMode::Orbit : CameraMode::Fly;
             controller_.setMode(settings_.cameraMode);

@@ -94,6 +94,17 @@
 #define ML_SSBO_NORMAL_BIN_MASKS 31    // --normal-cones: per cluster, a bit per normal bin its visible samples fall in
 #define ML_SSBO_NORMAL_CONES 30        // --normal-cones: per (cluster, bin) list, the cone of its samples' normals
 
+// The vertex animation (glsl/animate_vertices.comp, renderer/scene/vertex_animation.h) runs
+// first in a frame, before the lights' animation binds their buffers, and every pass binds what
+// it reads before it runs, so its inputs share the lights' and the materials' points. It writes
+// ML_SSBO_VERTICES and ML_SSBO_VERTEX_TANGENTS.
+#define ML_SSBO_DEFORM_VERTICES 0      // per deformed vertex: rest position, normal, tangent, influences
+#define ML_SSBO_DEFORM_MESHES 1        // per deformed mesh: where its matrix, joints, weights and deltas are
+#define ML_SSBO_MORPH_DELTAS 2         // morph target deltas: position, normal, tangent per (target, vertex)
+#define ML_SSBO_ANIMATION_POSE 3       // this frame's mesh and joint matrices and morph weights
+#define ML_DEFORM_WORKGROUP 64
+#define ML_DEFORM_NO_SKIN 0xFFFFFFFFu  // DeformMesh::pose.y of a mesh without a skin
+
 // Texture units. A material's textures, one unit per slot (ML_SLOT_*): ML_TEX_MATERIAL + slot,
 // except base colour, which kept unit 0.
 #define ML_TEX_BASE_COLOR 0

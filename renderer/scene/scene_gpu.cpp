@@ -188,8 +188,14 @@ SceneGpu::SceneGpu(const Scene& scene, TriangleOrder order) : features_(ml::mate
         commands.push_back({d.indexCount, 1, d.firstIndex, 0, i});
         const DrawGroup g = groupOf(d);
         if (blended(d)) {
-            TransparentRange t{i, g.textureSet, g.doubleSided, {}};
+            TransparentRange t{i, g.textureSet, g.doubleSided, {}, {}, {}};
             for (std::uint32_t k = 0; k < d.indexCount; ++k) t.bounds.extend(scene.vertices[indices[d.firstIndex + k]].position);
+            if (scene.animation) {
+                t.vertices.assign(indices.begin() + d.firstIndex, indices.begin() + d.firstIndex + d.indexCount);
+                std::sort(t.vertices.begin(), t.vertices.end());
+                t.vertices.erase(std::unique(t.vertices.begin(), t.vertices.end()), t.vertices.end());
+                for (std::uint32_t v : t.vertices) t.loaded.push_back(scene.vertices[v].position);
+            }
             transparent_.push_back(t);
             continue;
         }
@@ -371,6 +377,19 @@ std::optional<glm::ivec4> SceneGpu::transparentScreenRect(const glm::mat4& viewP
 
 void SceneGpu::unbindSamplers() const {
     for (GLuint unit : kSlotUnits) glBindSampler(unit, 0);
+}
+
+void SceneGpu::refitTransparentBounds(const std::function<glm::vec3(std::uint32_t, const glm::vec3&)>& posed) {
+    for (TransparentRange& range : transparent_) {
+        if (range.vertices.empty()) continue;
+        range.bounds = Bounds{};
+        for (std::size_t i = 0; i < range.vertices.size(); ++i) range.bounds.extend(posed(range.vertices[i], range.loaded[i]));
+    }
+}
+
+void SceneGpu::bindVertexStreamsForWriting() const {
+    vertices_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_VERTICES);
+    if (tangents_) tangents_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_VERTEX_TANGENTS);
 }
 
 void SceneGpu::bindGeometryStorage() const {

@@ -3,6 +3,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <tuple>
@@ -90,6 +91,9 @@ public:
     // transparent range's projected bounding box; the whole target where a box reaches behind the
     // eye. Empty without transparent ranges or where they all project outside it.
     std::optional<glm::ivec4> transparentScreenRect(const glm::mat4& viewProj, int width, int height) const;
+    // An animated scene's transparent ranges move with their vertices: refits each range's box to
+    // posed(vertex, its loaded position) over its vertices (kept for an animated scene only).
+    void refitTransparentBounds(const std::function<glm::vec3(std::uint32_t, const glm::vec3&)>& posed);
     // Draw calls one pass issues with the current submission.
     std::size_t drawCallsPerPass() const;
     std::size_t drawRangeCount() const { return draws_.size(); }
@@ -98,6 +102,14 @@ public:
     // every raster pass's texture coordinates): vertices, indices, the material of every
     // triangle, the materials, and the optional vertex streams, at their ML_SSBO_* points.
     void bindGeometryStorage() const;
+    // The vertex animation (renderer/scene/vertex_animation.h) writes posed vertices in place:
+    // the vertices at ML_SSBO_VERTICES, the tangents (where the scene's shading reads them) at
+    // ML_SSBO_VERTEX_TANGENTS.
+    void bindVertexStreamsForWriting() const;
+    bool hasTangentStream() const { return static_cast<bool>(tangents_); }
+    // The vertex and tangent buffers as they are now (a GPU sync): the vertex animation's tests.
+    std::vector<Vertex> downloadVertices() const { return vertices_.downloadAll<Vertex>(); }
+    std::vector<glm::vec4> downloadTangents() const { return tangents_ ? tangents_.downloadAll<glm::vec4>() : std::vector<glm::vec4>{}; }
     // Texture sets: the distinct (texture, sampler) tuples over a material's slots. Materials name
     // theirs (GpuMaterial::info.z); -1 is "no texture". Binds a set's textures at ML_TEX_*.
     std::size_t textureSetCount() const { return textureSets_.size(); }
@@ -134,6 +146,9 @@ private:
         int textureSet = -1;
         bool doubleSided = false;
         Bounds bounds;
+        // An animated scene's only: the range's vertices and their loaded positions.
+        std::vector<std::uint32_t> vertices;
+        std::vector<glm::vec3> loaded;
     };
 
     void setCullState(bool doubleSided) const;

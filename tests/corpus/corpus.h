@@ -6,8 +6,15 @@
 #include <string>
 #include <vector>
 
+#include <cstdio>
+
+#include <gtest/gtest.h>
+
+#include "renderer/frame_renderer.h"
+#include "renderer/image/image_compare.h"
 #include "renderer/lights/light_set.h"
 #include "renderer/methods/shading_method.h"
+#include "tests/gpu/gpu_test.h"
 
 namespace ml::test {
 
@@ -28,6 +35,26 @@ inline std::vector<Light> ownAndGeneratedLights(const Scene& scene) {
     const std::vector<Light> generated = generateLights(lightVolume(scene.bounds), gen);
     lights.insert(lights.end(), generated.begin(), generated.end());
     return lights;
+}
+
+// Renders `frame` in every method but naive and holds each to the contract against `reference`
+// (naive's frame): at most `maxBadShare` of the pixels over 1/255. One line per method with the
+// max error; the images and a diff on failure, named `label` and the method.
+inline void expectEveryMethodHoldsTheContract(FrameRenderer& renderer, std::uint32_t frame, const ReferenceFrame& reference,
+                                              const std::string& label, double maxBadShare) {
+    for (MethodKind kind : kEveryMethod) {
+        if (kind == MethodKind::Naive) continue;
+        MethodSettings method;
+        method.kind = kind;
+        renderer.setMethod(method);
+        renderer.render(frame);
+        const RgbaImage ldr = renderer.readLdr();
+        const ImageDifference d = compareImages(ldr, reference.ldr);
+        const std::string line = label + " " + methodName(kind);
+        std::printf("%-70s max %3.0f/255  over 1/255 %.4f %%\n", line.c_str(), d.maxAbs * 255.0, d.badPixelShare * 100.0);
+        EXPECT_LE(d.badPixelShare, maxBadShare) << line << ": max " << d.maxAbs * 255.0 << "/255; images in "
+                                                << writeFailureImages(testNameOf(label + "_" + methodName(kind)), ldr, reference.ldr);
+    }
 }
 
 }  // namespace ml::test

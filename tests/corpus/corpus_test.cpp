@@ -90,20 +90,7 @@ TEST_P(CorpusFile, EveryMethodHoldsTheContractAgainstNaive) {
         s.animation = verticalDrift(lightVolume(scene.bounds), 0.5f);
         FrameRenderer renderer(scene, lights, s);
         const ReferenceFrame reference = renderReference(renderer, frame);
-        for (MethodKind kind : kEveryMethod) {
-            if (kind == MethodKind::Naive) continue;
-            MethodSettings method;
-            method.kind = kind;
-            renderer.setMethod(method);
-            renderer.render(frame);
-            const RgbaImage ldr = renderer.readLdr();
-            const ImageDifference d = compareImages(ldr, reference.ldr);
-            const std::string label = GetParam() + " " + camera.name + " " + methodName(kind);
-            std::printf("%-70s max %3.0f/255  over 1/255 %.4f %%\n", label.c_str(), d.maxAbs * 255.0, d.badPixelShare * 100.0);
-            EXPECT_LE(d.badPixelShare, kMaxBadShare)
-                << label << ": max " << d.maxAbs * 255.0 << "/255; images in "
-                << writeFailureImages(testNameOf(camera.name + "_" + methodName(kind)), ldr, reference.ldr);
-        }
+        expectEveryMethodHoldsTheContract(renderer, frame, reference, GetParam() + " " + camera.name, kMaxBadShare);
     }
 }
 
