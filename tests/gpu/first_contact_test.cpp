@@ -261,7 +261,7 @@ TEST(FirstContact, BenchFollowsACameraPathAndRenderTakesBenchWords) {
 
 TEST(FirstContact, BadValuesAreRefusedBeforeTheSceneLoads) {
     // The scene does not exist: an error about the flag shows it was read first.
-    for (const std::string& flag : {"--light-radius overlap:x", "--light-radius -1", "--exposure bright",
+    for (const std::string flag : {"--light-radius overlap:x", "--light-radius -1", "--exposure bright",
                                     "--light-placement walls", "--near sometimes"}) {
         std::string output;
         EXPECT_NE(runManylights("render --scene /nonexistent/scene.gltf " + flag, output), 0) << flag;
