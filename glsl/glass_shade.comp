@@ -28,6 +28,15 @@
 #define ML_ZBIN_LISTS_ONLY 1
 #include "include/cluster_lists.glsl"
 #endif
+// With per-cluster lists, a tile's fragments are lit from lists staged in shared memory once per
+// tile, as the opaque pixels are (include/list_rounds.glsl); the sums are those of the per-pixel loop.
+#if !ML_GLASS_ALL_LIGHTS && !defined(ML_ZBIN)
+#define ML_GLASS_LIST_ROUNDS 1
+#include "include/spot_cone.glsl"
+#include "include/list_rounds.glsl"
+#else
+#define ML_GLASS_LIST_ROUNDS 0
+#endif
 
 layout(local_size_x = ML_SCREEN_TILE, local_size_y = ML_SCREEN_TILE) in;
 layout(binding = ML_IMG_HDR, rgba32f) uniform image2D u_hdr;
@@ -88,9 +97,69 @@ vec4 shadeFragment(uint triangle, Material m, ivec2 p) {
 
 vec3 over(vec4 c, vec3 destination) { return c.rgb * c.a + destination * (1.0 - c.a); }
 
+#if ML_GLASS_LIST_ROUNDS
+// Steps `k` (`end` to start) to the pixel's next fragment to shade, back to front (they are
+// sorted nearest first); where the dispatch stores colours, to its texture set's alone. False
+// when none is left.
+bool nextFragment(uint begin, inout uint k) {
+    while (k > begin) {
+        --k;
+        if (u_storesColors == 0u) return true;
+        uint triangle = fragmentAt(k).y;
+        if (int(materials[triangleMaterial[triangle]].info.z) - 1 == u_textureSet) return true;
+    }
+    return false;
+}
+
+// Fragment k's surface, view direction and alpha, and the list it waits for.
+uint beginFragment(uint k, ivec2 p, out SurfacePoint s, out vec3 viewDir, out float alpha) {
+    uint triangle = fragmentAt(k).y;
+    s = triangleSurface(triangle, materials[triangleMaterial[triangle]], p, alpha);
+    viewDir = normalize(u_cameraPos.xyz - s.position);
+    float viewDepth = -(u_view * vec4(s.position, 1.0)).z;
+    return clusterListKey(clusterForFragment(vec2(p) + 0.5, viewDepth), s.normal);
+}
+#endif
+
 void main() {
     ivec2 p = ivec2(gl_GlobalInvocationID.xy);
-    if (any(greaterThanEqual(p, ivec2(u_viewport.xy)))) return;
+    bool inside = all(lessThan(p, ivec2(u_viewport.xy)));
+#if ML_GLASS_LIST_ROUNDS
+    // Every invocation takes part in every round (they hold barriers), with fragments or not.
+    uint begin = 0u, end = 0u;
+    if (inside) {
+        uint pixel = uint(p.y) * uint(u_viewport.x) + uint(p.x);
+        end = glassEnds[pixel];
+        begin = pixel == 0u ? 0u : glassEnds[pixel - 1u];
+        if (begin != end && u_sorts != 0u) sortFragments(begin, end);
+    }
+    vec4 frame = begin != end ? imageLoad(u_hdr, p) : vec4(0.0);
+    vec3 color = frame.rgb;
+    uint k = end;
+    bool shading = nextFragment(begin, k);
+    SurfacePoint s;
+    vec3 viewDir = vec3(0.0);
+    float alpha = 0.0;
+    uint pending = shading ? beginFragment(k, p, s, viewDir, alpha) : kNoList;
+    vec3 lightSum = vec3(0.0);
+    bool served;
+    while (serveListRound(pending, s, viewDir, lightSum, served)) {
+        if (!served) continue;
+        vec4 c = vec4(shadeUnclustered(s, viewDir) + lightSum, alpha);
+        if (u_storesColors != 0u) storeColor(k, c);
+        else color = over(c, color);
+        lightSum = vec3(0.0);
+        pending = kNoList;
+        if (nextFragment(begin, k)) pending = beginFragment(k, p, s, viewDir, alpha);
+    }
+    if (begin == end) return;
+    if (u_storesColors != 0u) {
+        if (u_blends == 0u) return;
+        for (uint j = end; j-- > begin;) color = over(colorAt(j), color);
+    }
+    imageStore(u_hdr, p, vec4(color, frame.a));
+#else
+    if (!inside) return;
     uint pixel = uint(p.y) * uint(u_viewport.x) + uint(p.x);
     uint end = glassEnds[pixel];
     uint begin = pixel == 0u ? 0u : glassEnds[pixel - 1u];
@@ -114,4 +183,5 @@ void main() {
     }
     // The frame's alpha stays as it was (1: the frame is opaque), as the forward blend leaves it.
     imageStore(u_hdr, p, vec4(color, frame.a));
+#endif
 }

@@ -1,0 +1,107 @@
+// Light lists served to a workgroup's pixels one list at a time, for the compute passes that
+// light many points of one screen tile (deferred_lighting.comp, glass_shade.comp). Each round
+// serves the smallest list key any invocation waits for: the box of the served points is taken,
+// the list staged in shared memory a batch of lights at a time (one light per invocation, read
+// once per workgroup instead of once per point) and only the lights whose sphere reaches that box
+// kept: a cluster is a whole screen tile deep in its slice, an 8x8 block of surface points far
+// smaller, so most of a long list falls away (Andersson 2011's tiled culling inside the
+// cluster's list). A light is dropped only where it adds exactly zero to every point (beyond its
+// radius, with a margin for rounding), and the rest are shaded in list order, so the sums are bit
+// for bit those of the per-point loop (shadeClusterLights). Needs cluster_lists (per-cluster
+// lists, not ML_ZBIN), lights, shading and spot_cone; every invocation of the workgroup must
+// call serveListRound alike (it holds barriers).
+const uint kLightBatch = uint(ML_SCREEN_TILE * ML_SCREEN_TILE);  // one light per invocation
+const uint kMaskWords = (kLightBatch + 31u) / 32u;
+const uint kNoList = 0xFFFFFFFFu;
+
+shared uint s_listKey;
+shared uint s_boundsMin[3], s_boundsMax[3];  // the box of the served pixels, as orderedBits
+shared Light s_lights[kLightBatch];
+#if ML_SPOT_LIGHTS
+shared vec4 s_cones[kLightBatch];
+#endif
+shared uint s_reaches[2][kMaskWords];  // staged lights that reach the box; two, by batch parity
+
+// A float's bits as a uint that orders as the float does, for min/max with integer atomics.
+uint orderedBits(float f) {
+    uint u = floatBitsToUint(f);
+    return (u & 0x80000000u) != 0u ? ~u : u | 0x80000000u;
+}
+float orderedFloat(uint u) { return uintBitsToFloat((u & 0x80000000u) != 0u ? u & 0x7FFFFFFFu : ~u); }
+
+// Could the light add anything to a point in the box? Conservative: the margin covers the
+// rounding of the shader's own distance, and a NaN light is kept (the loop then does what the
+// per-pixel loop does with it). A spot must also reach the box's bounding sphere with its cone.
+bool lightReachesBox(vec4 positionRadius, vec4 cone, vec3 lo, vec3 hi) {
+    vec3 d = positionRadius.xyz - clamp(positionRadius.xyz, lo, hi);
+    float reach = positionRadius.w * 1.001 + 1e-3;
+    if (dot(d, d) > reach * reach) return false;
+    return spotMayReachSphere(positionRadius.xyz, cone.xyz, cone.w, reach, 0.5 * (lo + hi), 0.5 * length(hi - lo) + 1e-3);
+}
+
+// One round. `pending`: the list key this invocation waits for (kNoList: none); `s`, `viewDir`:
+// its point. Returns false, serving nothing, when no invocation waits; else `served` says whether
+// this one was, and its lightSum has grown by the list's lights.
+bool serveListRound(uint pending, SurfacePoint s, vec3 viewDir, inout vec3 lightSum, out bool served) {
+    uint lane = gl_LocalInvocationIndex;
+    barrier();
+    if (lane == 0u) {
+        s_listKey = kNoList;
+        for (int a = 0; a < 3; ++a) {
+            s_boundsMin[a] = 0xFFFFFFFFu;
+            s_boundsMax[a] = 0u;
+        }
+    }
+    if (lane < kMaskWords) s_reaches[0][lane] = 0u;
+    barrier();
+    if (pending != kNoList) atomicMin(s_listKey, pending);
+    barrier();
+    uint listKey = s_listKey;
+    served = false;
+    if (listKey == kNoList) return false;
+    served = pending == listKey;
+    if (served) {
+        for (int a = 0; a < 3; ++a) {
+            atomicMin(s_boundsMin[a], orderedBits(s.position[a]));
+            atomicMax(s_boundsMax[a], orderedBits(s.position[a]));
+        }
+    }
+    barrier();
+    vec3 lo = vec3(orderedFloat(s_boundsMin[0]), orderedFloat(s_boundsMin[1]), orderedFloat(s_boundsMin[2]));
+    vec3 hi = vec3(orderedFloat(s_boundsMax[0]), orderedFloat(s_boundsMax[1]), orderedFloat(s_boundsMax[2]));
+    uvec2 range = clusterListRange(listKey);
+    uint parity = 0u;
+    for (uint base = 0u; base < range.y; base += kLightBatch) {
+        // The other parity's mask was last read before the previous batch's closing barrier.
+        if (lane < kMaskWords) s_reaches[parity ^ 1u][lane] = 0u;
+        if (base + lane < range.y) {
+            uint index = lightIndices[range.x + base + lane];
+            Light l = lights[index];
+            vec4 cone = lightCone(index);
+            s_lights[lane] = l;
+#if ML_SPOT_LIGHTS
+            s_cones[lane] = cone;
+#endif
+            if (lightReachesBox(l.positionRadius, cone, lo, hi)) atomicOr(s_reaches[parity][lane / 32u], 1u << (lane % 32u));
+        }
+        barrier();
+        if (served) {
+            for (uint w = 0u; w < kMaskWords; ++w) {
+                uint bits = s_reaches[parity][w];
+                while (bits != 0u) {
+                    uint i = w * 32u + uint(findLSB(bits));
+                    bits &= bits - 1u;
+#if ML_SPOT_LIGHTS
+                    vec4 cone = s_cones[i];
+#else
+                    vec4 cone = lightCone(0u);  // a point's: the set has no spots
+#endif
+                    lightSum += shadeLight(s, viewDir, s_lights[i].positionRadius, s_lights[i].colorCosInner, cone);
+                }
+            }
+        }
+        barrier();
+        parity ^= 1u;
+    }
+    return true;
+}
