@@ -13,8 +13,8 @@ namespace ml {
 namespace {
 
 // Which fill rule this GPU's rasterizer applies, in GL's y-up window coordinates: 0 owns top and
-// left edges, 1 bottom and left ones. Found once by drawing a triangle whose horizontal edges
-// run through pixel centres and reading back which of them it covered.
+// left edges, 1 bottom and left ones. Found once a process (one GPU) by drawing a rectangle whose
+// horizontal edges run through pixel centres and reading back which of them it covered.
 int hardwareEdgeRule() {
     static const int rule = [] {
         GLuint texture = 0, fbo = 0, vao = 0;
@@ -37,8 +37,7 @@ int hardwareEdgeRule() {
         probe.use();
         glBindVertexArray(vao);
         glDrawArrays(GL_TRIANGLES, 0, 6);
-        std::uint8_t pixels[16] = {};
-        glPixelStorei(GL_PACK_ALIGNMENT, 1);
+        std::uint8_t pixels[16] = {};  // 4-byte rows: the default pack alignment holds
         glGetTextureImage(texture, 0, GL_RED, GL_UNSIGNED_BYTE, sizeof pixels, pixels);
         glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(previousFbo));
         glDeleteVertexArrays(1, &vao);
@@ -86,9 +85,10 @@ bool ComputeRaster::hasPackedAtomics() { return supported() && gl::hasExtension(
 
 VisibilityRaster ComputeRaster::resolve(VisibilityRaster choice) {
     switch (choice) {
-    // The hardware raster until the compute raster is both faster and as exact on the scenes as
-    // they ship: on the H100 it is faster on the atrium but not on Sponza, and it resolves depth
-    // ties between coplanar surfaces unlike the hardware naive is drawn with (docs/benchmarks.md).
+    // The hardware raster until the compute raster is as exact as it is fast: on the H100 it is
+    // faster on every camera measured, but it resolves depth ties between coplanar surfaces
+    // unlike the hardware naive is drawn with, past the accuracy contract on two of Sponza's
+    // cameras (docs/bench/nvidia-h100/compute-raster/).
     case VisibilityRaster::Auto: return VisibilityRaster::Hardware;
     case VisibilityRaster::Hardware: return choice;
     case VisibilityRaster::Compute:
