@@ -52,7 +52,7 @@ struct MethodSettings {
     // Bytes the transparent pass's capture may take (renderer/passes/glass_fragments.h); 0: this
     // GPU's storage-buffer limit. Tests lower it to see a frame refused.
     std::size_t transparentCaptureBudget = 0;
-    // Visibility: --vis-raster (auto: compute where the GPU has 64-bit atomics).
+    // Visibility: --vis-raster (auto: the hardware raster for now; ComputeRaster::resolve says why).
     VisibilityRaster visibilityRaster = VisibilityRaster::Auto;
 };
 
