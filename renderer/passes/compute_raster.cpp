@@ -224,7 +224,6 @@ void ComputeRaster::rasterPass(const FrameContext& ctx, int pass) {
     glMemoryBarrier(kComputeToCompute);
     hardwareList_[pass].use();
     hardwareList_[pass].set("u_cullBackFaces", ctx.scene.backfaceCulling() ? 1u : 0u);
-
     glDisable(GL_CULL_FACE);
     glBindVertexArray(emptyVao_.id());
     glBindBuffer(GL_DRAW_INDIRECT_BUFFER, work_.id());
