@@ -1,4 +1,7 @@
 #version 450 core
+#if ML_FIXED_LIGHT_SUM  // include/light_sum.glsl
+#extension GL_ARB_gpu_shader_int64 : require
+#endif
 // Clustered deferred lighting as a compute pass (--resolve compute). On GPUs where few SMs run
 // graphics work this is far faster than the fragment resolve (design.md).
 //
@@ -38,11 +41,11 @@ void main() {
     bool surface = inside && resolveSurface(p, px);
     // The list this pixel still waits for; every invocation takes part in every round (barriers).
     uint pending = surface && viewShadesLights() ? clusterListKey(px.cluster, px.surface.normal) : kNoList;
-    vec3 lightSum = vec3(0.0);
+    LightSum lightSum = noLight();
     bool served;
     while (serveListRound(pending, px.surface, px.viewDir, lightSum, served))
         if (served) pending = kNoList;
     if (!inside) return;
-    imageStore(u_hdr, p, surface ? finishPixel(px, lightSum) : kBackground);
+    imageStore(u_hdr, p, surface ? finishPixel(px, lightSumValue(lightSum)) : kBackground);
 }
 #endif

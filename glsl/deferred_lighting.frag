@@ -1,4 +1,7 @@
 #version 450 core
+#if ML_FIXED_LIGHT_SUM  // include/light_sum.glsl
+#extension GL_ARB_gpu_shader_int64 : require
+#endif
 // Clustered deferred lighting as a full-screen fragment pass (--resolve fragment).
 #include "include/bindings.h"
 #include "include/frame_uniforms.glsl"

@@ -1,4 +1,7 @@
 #version 450 core
+#if ML_FIXED_LIGHT_SUM  // include/light_sum.glsl
+#extension GL_ARB_gpu_shader_int64 : require
+#endif
 // Clustered forward (Forward+): after the depth pre-pass, each visible fragment finds its
 // cluster (tile from the pixel, slice from view depth) and loops over that cluster's lights.
 // With ML_TRANSPARENT it is the transparent pass of every clustered method: shaded colour and
@@ -32,7 +35,7 @@ bool clusterListSkipped(uint cluster) { return false; }
 #endif
 
 vec3 shadeLights(SurfacePoint s, vec3 viewDir, uint cluster, float viewDepth) {
-    if (clusterListSkipped(cluster)) return addEveryLight(s, viewDir, vec3(0.0));
+    if (clusterListSkipped(cluster)) return shadeEveryLight(s, viewDir);
     return shadeClusterLights(s, viewDir, cluster, viewDepth);
 }
 

@@ -1,4 +1,7 @@
 #version 450 core
+#if ML_FIXED_LIGHT_SUM  // include/light_sum.glsl
+#extension GL_ARB_gpu_shader_int64 : require
+#endif
 // The transparent pass's shading (renderer/passes/transparent_pass.h): per pixel, its captured
 // fragments (glass_capture.frag) sorted by depth, each surface rebuilt from its triangle as the
 // visibility resolve rebuilds one (include/triangle_surface.glsl), shaded with the method's
@@ -20,6 +23,8 @@
 #include "include/sun_lights.glsl"
 #include "include/material.glsl"
 #include "include/triangle_surface.glsl"
+// Here, not only inside the #if below: each include is resolved once per shader, where it first appears.
+#include "include/light_sum.glsl"
 #if ML_GLASS_ALL_LIGHTS
 #include "include/every_light.glsl"
 #else
@@ -87,7 +92,7 @@ vec4 shadeFragment(uint triangle, Material m, ivec2 p) {
     SurfacePoint s = triangleSurface(triangle, m, p, alpha);
     vec3 viewDir = normalize(u_cameraPos.xyz - s.position);
 #if ML_GLASS_ALL_LIGHTS
-    return vec4(addEveryLight(s, viewDir, shadeUnclustered(s, viewDir)), alpha);
+    return vec4(shadeUnclustered(s, viewDir) + shadeEveryLight(s, viewDir), alpha);
 #else
     float viewDepth = -(u_view * vec4(s.position, 1.0)).z;
     uint cluster = clusterForFragment(vec2(p) + 0.5, viewDepth);
@@ -141,14 +146,14 @@ void main() {
     vec3 viewDir = vec3(0.0);
     float alpha = 0.0;
     uint pending = shading ? beginFragment(k, p, s, viewDir, alpha) : kNoList;
-    vec3 lightSum = vec3(0.0);
+    LightSum lightSum = noLight();
     bool served;
     while (serveListRound(pending, s, viewDir, lightSum, served)) {
         if (!served) continue;
-        vec4 c = vec4(shadeUnclustered(s, viewDir) + lightSum, alpha);
+        vec4 c = vec4(shadeUnclustered(s, viewDir) + lightSumValue(lightSum), alpha);
         if (u_storesColors != 0u) storeColor(k, c);
         else color = over(c, color);
-        lightSum = vec3(0.0);
+        lightSum = noLight();
         pending = kNoList;
         if (nextFragment(begin, k)) pending = beginFragment(k, p, s, viewDir, alpha);
     }

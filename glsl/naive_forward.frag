@@ -1,4 +1,7 @@
 #version 450 core
+#if ML_FIXED_LIGHT_SUM  // include/light_sum.glsl
+#extension GL_ARB_gpu_shader_int64 : require
+#endif
 // Naive forward: every fragment loops over every light. The exact reference. With ML_TRANSPARENT
 // it shades the transparent pass and writes the surface's alpha for blending.
 #include "include/bindings.h"
@@ -16,5 +19,5 @@ void main() {
     float alpha;
     SurfacePoint s = fragmentSurfaceAndAlpha(alpha);
     vec3 viewDir = normalize(u_cameraPos.xyz - s.position);
-    o_color = vec4(addEveryLight(s, viewDir, shadeUnclustered(s, viewDir)), ML_TRANSPARENT != 0 ? alpha : 1.0);
+    o_color = vec4(shadeUnclustered(s, viewDir) + shadeEveryLight(s, viewDir), ML_TRANSPARENT != 0 ? alpha : 1.0);
 }

@@ -60,6 +60,7 @@ std::string frameKeyOf(const FrameOptions& o, double radius) {
     k["exposure"] = o.exposure;
     k["specular"] = o.specular;  // the naive reference must shade with the same model
     k["brdf"] = o.brdf;
+    k["light_sum"] = o.lightSum;
     k["light_cutoff"] = o.lightCutoff ? nlohmann::json(*o.lightCutoff) : nlohmann::json();
     k["cutoff"] = o.cutoff;
     k["bloom"] = o.bloom;        // and get the same post-process
@@ -98,6 +99,7 @@ BenchRow configColumns(const BenchPoint& p, int index, std::uint32_t frame, cons
     row["drift_speed"] = o.driftSpeed;
     row["specular"] = o.specular;
     row["brdf"] = o.brdf;
+    row["light_sum"] = o.lightSum;  // as asked; the point's run replaces it with what ran
     row["light_cutoff"] = o.lightCutoff ? nlohmann::ordered_json(*o.lightCutoff) : nlohmann::ordered_json();
     row["cutoff"] = o.cutoff;
     row["accumulate"] = p.accumulate;
@@ -241,6 +243,7 @@ void BenchRunner::measureInto(BenchRow& row, const BenchPoint& point) {
         MethodSettings naiveSettings;
         naiveSettings.kind = MethodKind::Naive;
         naiveSettings.msaa = f.settings.method.msaa;
+        naiveSettings.clustering.lightSum = f.settings.method.clustering.lightSum;
         renderer_->setMethod(naiveSettings);
         renderer_->render(first);
         reference = &references_.insert(referenceKey, ReferenceImages{renderer_->readHdr(), renderer_->readLdr(), appliedExposure()});
@@ -250,6 +253,7 @@ void BenchRunner::measureInto(BenchRow& row, const BenchPoint& point) {
     renderer_->setDrawSubmission(f.settings.draw);
     renderer_->render(first);  // applies it, so the scene reports its draw calls
     row["draw_calls"] = renderer_->scene().drawCallsPerPass();
+    row["light_sum"] = lightSumName(renderer_->settings().method.clustering.lightSum);
     if (const auto* visibility = dynamic_cast<const VisibilityBuffer*>(&renderer_->method()))
         row["vis_raster"] = visibilityRasterName(visibility->raster());
 

@@ -160,6 +160,12 @@ const std::vector<AxisDef>& axisDefs() {
              (void)parseBrdf(asText(v));
              p.frame.brdf = v.get<std::string>();
          }},
+        {{"light_sum", "--light-sum", "how a point adds up its lights: auto, fixed (64-bit integers, lists unsorted), float (lists sorted)"},
+         ValueKind::Text, Applies::Always,
+         [](BenchPoint& p, const json& v) {
+             (void)parseLightSum(asText(v));
+             p.frame.lightSum = v.get<std::string>();
+         }},
         {{"light_cutoff", "--light-cutoff", "E > 0: generated lights reach as far as max(colour) / d^2 exceeds E, glTF's falloff"},
          ValueKind::Number, Applies::Always,
          [](BenchPoint& p, const json& v) {
@@ -396,6 +402,7 @@ std::string describePoint(const BenchPoint& p) {
     if (o.nearPlane) s += ", near " + formatNumber(*o.nearPlane);
     if (o.farPlane) s += ", far " + formatNumber(*o.farPlane);
     if (o.transparency != "on") s += ", transparency " + o.transparency;
+    if (o.lightSum != FrameOptions{}.lightSum) s += ", " + o.lightSum + " light sum";
     if (p.clustered) {
         s += ", grid " + std::to_string(o.tilesX) + " across x " + std::to_string(o.slices) + " " + o.slicing + ", " + o.assign;
         if (p.capped) s += " cap " + std::to_string(o.maxPerCluster);

@@ -20,6 +20,8 @@ uint clusterListKey(uint cluster, vec3 worldNormal) {
 #endif
 }
 
+#include "include/light_sum.glsl"
+
 #ifdef ML_ZBIN
 #include "include/zbin.glsl"
 
@@ -30,8 +32,8 @@ uint zbinTileOf(uint cluster) { return cluster % (grid.dims.x * grid.dims.y); }
 vec3 shadeClusterLights(SurfacePoint s, vec3 viewDir, uint cluster, float viewDepth) {
     uvec2 range = zbinRanges[zbinForDepth(viewDepth)];
     uint tile = zbinTileOf(cluster);
-    vec3 color = vec3(0.0);
-    if (range.x > range.y) return color;
+    LightSum sum = noLight();
+    if (range.x > range.y) return lightSumValue(sum);
     for (uint w = range.x >> 5; w <= range.y >> 5; ++w) {
         uint bits = zbinWordBits(tile, range, w);
         while (bits != 0u) {
@@ -39,10 +41,10 @@ vec3 shadeClusterLights(SurfacePoint s, vec3 viewDir, uint cluster, float viewDe
             bits &= bits - 1u;
             uint index = zbinSortedLights[i];
             Light l = lights[index];
-            color += shadeLight(s, viewDir, l.positionRadius, l.colorCosInner, lightCone(index));
+            addLight(sum, shadeLight(s, viewDir, l.positionRadius, l.colorCosInner, lightCone(index)));
         }
     }
-    return color;
+    return lightSumValue(sum);
 }
 
 // Lights a pixel shades (--view light-count): the set bits within its bin's range.
@@ -68,13 +70,13 @@ uvec2 clusterListRange(uint cluster) {
 // viewDepth is unused here: the cluster (and normal bin) already say which list applies.
 vec3 shadeClusterLights(SurfacePoint s, vec3 viewDir, uint cluster, float viewDepth) {
     uvec2 range = clusterListRange(clusterListKey(cluster, s.normal));
-    vec3 color = vec3(0.0);
+    LightSum sum = noLight();
     for (uint k = 0u; k < range.y; ++k) {
         uint index = lightIndices[range.x + k];
         Light l = lights[index];
-        color += shadeLight(s, viewDir, l.positionRadius, l.colorCosInner, lightCone(index));
+        addLight(sum, shadeLight(s, viewDir, l.positionRadius, l.colorCosInner, lightCone(index)));
     }
-    return color;
+    return lightSumValue(sum);
 }
 
 uint clusterLightCount(uint cluster, vec3 worldNormal, float viewDepth) { return clusterCounts[clusterListKey(cluster, worldNormal)]; }

@@ -1,11 +1,14 @@
-// Every light of the frame, in index order, added to `color`: naive's loop, and Forward+'s for a
+// The sum of every light of the frame, in index order: naive's loop, and Forward+'s for a
 // fragment whose cluster list was skipped (glsl/forward_plus.frag, --msaa with --active-only).
 // Needs lights.glsl and shading.glsl.
-vec3 addEveryLight(SurfacePoint s, vec3 viewDir, vec3 color) {
+#include "include/light_sum.glsl"
+
+vec3 shadeEveryLight(SurfacePoint s, vec3 viewDir) {
     uint n = lightCount();
+    LightSum sum = noLight();
     for (uint i = 0u; i < n; ++i) {
         Light l = lights[i];
-        color += shadeLight(s, viewDir, l.positionRadius, l.colorCosInner, lightCone(i));
+        addLight(sum, shadeLight(s, viewDir, l.positionRadius, l.colorCosInner, lightCone(i)));
     }
-    return color;
+    return lightSumValue(sum);
 }

@@ -42,7 +42,7 @@ bool lightReachesBox(vec4 positionRadius, vec4 cone, vec3 lo, vec3 hi) {
 // One round. `pending`: the list key this invocation waits for (kNoList: none); `s`, `viewDir`:
 // its point. Returns false, serving nothing, when no invocation waits; else `served` says whether
 // this one was, and its lightSum has grown by the list's lights.
-bool serveListRound(uint pending, SurfacePoint s, vec3 viewDir, inout vec3 lightSum, out bool served) {
+bool serveListRound(uint pending, SurfacePoint s, vec3 viewDir, inout LightSum lightSum, out bool served) {
     uint lane = gl_LocalInvocationIndex;
     barrier();
     if (lane == 0u) {
@@ -96,7 +96,7 @@ bool serveListRound(uint pending, SurfacePoint s, vec3 viewDir, inout vec3 light
 #else
                     vec4 cone = lightCone(0u);  // a point's: the set has no spots
 #endif
-                    lightSum += shadeLight(s, viewDir, s_lights[i].positionRadius, s_lights[i].colorCosInner, cone);
+                    addLight(lightSum, shadeLight(s, viewDir, s_lights[i].positionRadius, s_lights[i].colorCosInner, cone));
                 }
             }
         }

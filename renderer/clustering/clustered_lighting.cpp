@@ -228,7 +228,7 @@ void ClusteredLighting::build(const FrameContext& ctx, const GBuffer* gbuffer) {
     counters_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_ASSIGN_STATS);
     if (settings_.assign == AssignMode::Capped) buildCapped(ctx);
     else buildExact(ctx);
-    sortLists(ctx);
+    if (settings_.lightSum == LightSum::Float) sortLists(ctx);
 }
 
 void ClusteredLighting::sortLists(const FrameContext& ctx) {
@@ -573,8 +573,13 @@ std::pair<std::string, std::string> depthSamplesDefine(const ClusteringSettings&
     return {"ML_MSAA_SAMPLES", std::to_string(settings.depthSamples)};
 }
 
+shaders::Defines lightShadingDefines(const ClusteringSettings& settings) {
+    return {spotLightsDefine(settings.spotLights), lightSumDefine(settings.lightSum)};
+}
+
 shaders::Defines lightListDefines(const ClusteringSettings& settings) {
-    shaders::Defines defines{spotLightsDefine(settings.spotLights), depthSamplesDefine(settings)};
+    shaders::Defines defines = lightShadingDefines(settings);
+    defines.push_back(depthSamplesDefine(settings));
     if (settings.assign == AssignMode::ZBin) defines.emplace_back("ML_ZBIN", "1");
     if (settings.normalCones) defines.emplace_back("ML_NORMAL_CONES", "1");
     return defines;

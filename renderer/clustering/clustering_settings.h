@@ -7,6 +7,7 @@
 #include "renderer/clustering/cluster_grid.h"
 #include "renderer/debug_view.h"
 #include "renderer/gl/shader_sources.h"
+#include "renderer/lights/light_sum.h"
 
 namespace ml {
 
@@ -41,11 +42,17 @@ struct ClusteringSettings {
     // Whether the light set holds spots. FrameRenderer sets it from its lights; without spots
     // every program that reads lights compiles its spot paths out (ML_SPOT_LIGHTS 0).
     bool spotLights = true;
+    // --light-sum, for every method's shading (naive's too); createMethod resolves Auto. With
+    // Fixed the lists are not sorted (glsl/include/light_sum.glsl says why they need not be).
+    LightSum lightSum = LightSum::Auto;
     // Samples per pixel of the depth the passes read (--msaa, Forward+): each compiles with
     // ML_MSAA_SAMPLES and reads every sample, so the lists hold for every shaded sample.
     std::uint32_t depthSamples = 1;
 };
 
+// Defines of every program that shades point and spot lights, naive's included: ML_SPOT_LIGHTS
+// and ML_FIXED_LIGHT_SUM.
+shaders::Defines lightShadingDefines(const ClusteringSettings& settings);
 // Defines of the shading programs that read the lists (cluster_lists.glsl picks its light loop,
 // and with --normal-cones its list by the normal's bin).
 shaders::Defines lightListDefines(const ClusteringSettings& settings);

@@ -60,12 +60,16 @@ int validMsaa(long long samples) {
     return static_cast<int>(samples);
 }
 
-std::unique_ptr<ShadingMethod> createMethod(const MethodSettings& settings, std::uint32_t materialFeatures) {
+bool lightsInCompute(MethodKind kind) { return kind == MethodKind::Deferred || kind == MethodKind::Visibility; }
+
+std::unique_ptr<ShadingMethod> createMethod(const MethodSettings& asked, std::uint32_t materialFeatures) {
+    MethodSettings settings = asked;
+    settings.clustering.lightSum = resolveLightSum(asked.clustering.lightSum, lightsInCompute(asked.kind));
     if (const char* refusal = msaaRefusal(settings.kind); refusal && settings.msaa > 1)
         throw std::invalid_argument("--msaa " + std::to_string(settings.msaa) + ": " + refusal);
     const TransparencySettings transparency{settings.msaa, settings.transparentCaptureBudget};
     switch (settings.kind) {
-    case MethodKind::Naive: return std::make_unique<NaiveForward>(materialFeatures, settings.clustering.spotLights, transparency);
+    case MethodKind::Naive: return std::make_unique<NaiveForward>(materialFeatures, settings.clustering, transparency);
     case MethodKind::ForwardPlus: {
         // Forward+ shades before any normal is known: no normal bins (the flag is refused by
         // `render` and greyed out in `view`; here it is ignored).

@@ -7,10 +7,10 @@
 
 namespace ml {
 
-NaiveForward::NaiveForward(std::uint32_t materialFeatures, bool spotLights, const TransparencySettings& transparency)
+NaiveForward::NaiveForward(std::uint32_t materialFeatures, const ClusteringSettings& lights, const TransparencySettings& transparency)
     : program_("naive_forward", {{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "naive_forward.frag"}}, materialFeatures,
-               RasterProgram::Reads::Material, {spotLightsDefine(spotLights)}),
-      transparent_(TransparentPass::overAllLights("naive.transparent", materialFeatures, spotLights, transparency)) {}
+               RasterProgram::Reads::Material, lightShadingDefines(lights)),
+      transparent_(TransparentPass::overAllLights("naive.transparent", materialFeatures, lights, transparency)) {}
 
 void NaiveForward::render(const FrameContext& ctx) {
     const int width = ctx.targets.width(), height = ctx.targets.height();

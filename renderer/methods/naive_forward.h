@@ -17,7 +17,7 @@ inline constexpr double kNaivePixelLightsPerDraw = 1e9;
 
 class NaiveForward final : public ShadingMethod {
 public:
-    NaiveForward(std::uint32_t materialFeatures, bool spotLights, const TransparencySettings& transparency = {});
+    NaiveForward(std::uint32_t materialFeatures, const ClusteringSettings& lights, const TransparencySettings& transparency = {});
     std::string name() const override { return "naive"; }
     void render(const FrameContext& ctx) override;
     const GlassFragments* transparentCapture() const override { return transparent_.capture(); }

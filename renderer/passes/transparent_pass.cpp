@@ -31,9 +31,9 @@ TransparentPass::TransparentPass(std::string timerName, std::uint32_t materialFe
                          {{GL_COMPUTE_SHADER, "glass_shade.comp"}}, shadeDefines);
 }
 
-TransparentPass TransparentPass::overAllLights(std::string timerName, std::uint32_t materialFeatures, bool spotLights,
+TransparentPass TransparentPass::overAllLights(std::string timerName, std::uint32_t materialFeatures, const ClusteringSettings& lights,
                                                const TransparencySettings& transparency) {
-    return TransparentPass(std::move(timerName), materialFeatures, transparency, "naive_forward.frag", {spotLightsDefine(spotLights)});
+    return TransparentPass(std::move(timerName), materialFeatures, transparency, "naive_forward.frag", lightShadingDefines(lights));
 }
 
 TransparentPass TransparentPass::overClusterLists(std::string timerName, std::uint32_t materialFeatures,

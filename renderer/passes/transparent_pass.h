@@ -51,8 +51,8 @@ struct TransparencySettings {
 
 class TransparentPass {
 public:
-    // Naive's pass: every fragment loops over every light.
-    static TransparentPass overAllLights(std::string timerName, std::uint32_t materialFeatures, bool spotLights,
+    // Naive's pass: every fragment loops over every light. `lights`: spots and the light sum alone.
+    static TransparentPass overAllLights(std::string timerName, std::uint32_t materialFeatures, const ClusteringSettings& lights,
                                          const TransparencySettings& transparency);
     // A clustered method's pass: each fragment loops over its cluster's list.
     static TransparentPass overClusterLists(std::string timerName, std::uint32_t materialFeatures, const ClusteringSettings& settings,
