@@ -73,6 +73,9 @@ public:
     // The same at any animation time (the live view's clock runs at the real frame rate), the
     // stochastic ranges drawn with `drawSeed`.
     std::vector<PassTime> renderAt(float seconds, std::uint32_t drawSeed = 0);
+    // The last frame's context (its scene, lights, uniforms and targets) timed by `timer`: for
+    // passes run outside a frame (`raster-floors`).
+    FrameContext frameContext(PassTimer& timer) { return FrameContext{scene_, lights_, frameUniformBuffer_, uniforms_, targets_, timer}; }
 
     RgbaImage readLdr() const;
     FloatImage readHdr() const;

@@ -70,14 +70,16 @@ int runRasterFloors(const RasterFloorsOptions& o) {
         const OverdrawStatistics od = overdrawStatistics(overdraw.readCounts());
 
         PassTimer timer(true, session.info.software ? TimingClock::WallClockAfterFinish : TimingClock::GpuQueries);
+        const FrameContext ctx = renderer.frameContext(timer);
         std::map<std::string, std::vector<double>> samples;
         std::optional<int> clock;
         for (int i = 0; i < o.warmup + o.timedFrames; ++i) {
             if (i == o.warmup && !session.info.software) clock = querySmClockMhz();
             timer.beginFrame();
             for (const RasterFloors::Probe probe : RasterFloors::probes()) {
+                if (!floors.supports(probe)) continue;
                 auto pass = timer.pass(RasterFloors::name(probe));
-                floors.run(probe, renderer.scene(), renderer.targets());
+                floors.run(probe, ctx);
             }
             const std::vector<PassTime> times = timer.endFrame();
             if (i >= o.warmup)
@@ -85,13 +87,20 @@ int runRasterFloors(const RasterFloorsOptions& o) {
         }
         if (!session.info.software)
             if (const auto end = querySmClockMhz()) clock = clock ? std::min(*clock, *end) : *end;
-        for (const RasterFloors::Probe probe : RasterFloors::probes()) {
-            const SampleSpread s = spreadOf(samples[RasterFloors::name(probe)]);
+        // Each probe, then the compute raster's own steps (timed inside it) as scene-compute.STEP.
+        std::vector<std::pair<std::string, std::string>> rows;  // (probe column, sample name)
+        for (const RasterFloors::Probe probe : RasterFloors::probes())
+            if (floors.supports(probe)) rows.emplace_back(RasterFloors::name(probe), RasterFloors::name(probe));
+        const std::string stepPrefix = "visibility.raster-";
+        for (const auto& [name, times] : samples)
+            if (name.starts_with(stepPrefix)) rows.emplace_back(std::string("scene-compute.") + name.substr(stepPrefix.size()), name);
+        for (const auto& [probe, sampleName] : rows) {
+            const SampleSpread s = spreadOf(samples[sampleName]);
             std::fprintf(out, "%s,%g,%s,\"%s\",%d,%d,%zu,%zu,%zu,%.4f,%s,%.4f,%.4f,%.4f,%s,\"%s\"\n", frame.scene.name.c_str(),
                          o.frame.detail, triangleOrderName(settings.triangleOrder),
                          camera.empty() ? "default" : camera.c_str(), settings.width, settings.height,
                          renderer.scene().triangleCount(), renderer.scene().drawCallsPerPass(), od.coveredPixels,
-                         od.meanPerCoveredPixel(), RasterFloors::name(probe), s.median, s.p10, s.p90,
+                         od.meanPerCoveredPixel(), probe.c_str(), s.median, s.p10, s.p90,
                          clock ? std::to_string(*clock).c_str() : "", session.info.renderer.c_str());
         }
         std::fflush(out);
@@ -111,7 +120,8 @@ void addRasterFloorsCommand(CLI::App& app, int& exitCode) {
     options->frame.size = "2560x1440";
     CLI::App* cmd = app.add_subcommand("raster-floors",
                                        "time the visibility raster's floors (clears, a full-screen triangle, the scene with depth "
-                                       "alone and without rasterization) and count its overdraw, per camera, as CSV");
+                                       "alone and without rasterization, the compute raster and its steps) and count its overdraw, "
+                                       "per camera, as CSV");
     addFrameOptions(*cmd, options->frame);
     cmd->get_option("--camera")->description("cameras separated by ';' (px,py,pz,tx,ty,tz,fovy_deg or default), or a named "
                                              "set: " + cameraSetNames());

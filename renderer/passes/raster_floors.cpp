@@ -7,7 +7,8 @@ namespace ml {
 const std::vector<RasterFloors::Probe>& RasterFloors::probes() {
     static const std::vector<Probe> all = {Probe::ClearDepth,      Probe::ClearIds, Probe::ClearIdsCompute,
                                            Probe::Fullscreen,      Probe::FullscreenDepth, Probe::Scene,
-                                           Probe::SceneRopIds,     Probe::SceneDepthOnly,  Probe::SceneNoRaster};
+                                           Probe::SceneRopIds,     Probe::SceneDepthOnly,  Probe::SceneNoRaster,
+                                           Probe::SceneCompute};
     return all;
 }
 
@@ -22,6 +23,7 @@ const char* RasterFloors::name(Probe probe) {
     case Probe::SceneNoRaster: return "scene-no-raster";
     case Probe::ClearIdsCompute: return "clear-ids-compute";
     case Probe::SceneRopIds: return "scene-rop-ids";
+    case Probe::SceneCompute: return "scene-compute";
     }
     return "?";
 }
@@ -36,7 +38,9 @@ RasterFloors::RasterFloors(std::uint32_t materialFeatures)
       fullscreenIds_("raster-floors.fullscreen", {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "raster_floor_id.frag"}}),
       fullscreenDepth_("raster-floors.fullscreen-depth",
                        {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "raster_floor_depth.frag"}}),
-      clearIds_(gl::Program::compute("visibility_clear_ids.comp")) {
+      clearIds_(gl::Program::compute("visibility_clear_ids.comp")),
+      computeRaster_(ComputeRaster::supported() ? std::make_unique<ComputeRaster>(materialFeatures, ComputeRaster::hasPackedAtomics())
+                                                : nullptr) {
     GLuint vao = 0;
     glCreateVertexArrays(1, &vao);
     emptyVao_ = gl::Handle<gl::VertexArrayDeleter>(vao);
@@ -49,13 +53,21 @@ void RasterFloors::prepareTargets(const FrameTargets& targets) {
     depthFbo_ = gl::Framebuffer("raster-floors.depth", {}, &targets.depth());
 }
 
-void RasterFloors::run(Probe probe, const SceneGpu& scene, const FrameTargets& targets) {
-    prepareTargets(targets);
+void RasterFloors::run(Probe probe, const FrameContext& ctx) {
+    const SceneGpu& scene = ctx.scene;
+    prepareTargets(ctx.targets);
     if (probe == Probe::ClearIdsCompute) {
         clearIds_.use();
         glBindImageTexture(ML_IMG_VISIBILITY_IDS, ids_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32UI);
         glDispatchCompute(gl::groupsFor(stamp_.width(), ML_SCREEN_TILE), gl::groupsFor(stamp_.height(), ML_SCREEN_TILE), 1);
         glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+        return;
+    }
+    if (probe == Probe::SceneCompute) {
+        if (!computeRaster_) return;
+        // Its steps are timed inside (visibility.raster-setup, -tiles, -hardware, -finish).
+        computeRaster_->run(ctx, ids_);
+        ctx.targets.setComputedDepth(nullptr);
         return;
     }
     // The scene probe draws its opaque ranges into depth alone (ids by atomics), the rest as it says.
@@ -76,7 +88,8 @@ void RasterFloors::run(Probe probe, const SceneGpu& scene, const FrameTargets& t
     switch (probe) {
     case Probe::ClearDepth:
     case Probe::ClearIds:
-    case Probe::ClearIdsCompute: break;
+    case Probe::ClearIdsCompute:
+    case Probe::SceneCompute: break;
     case Probe::Fullscreen:
     case Probe::FullscreenDepth:
         (probe == Probe::Fullscreen ? fullscreenIds_ : fullscreenDepth_).use();
