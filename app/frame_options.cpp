@@ -156,9 +156,9 @@ void addFrameOptions(CLI::App& cmd, FrameOptions& o) {
     cmd.add_option("--bloom-strength", o.bloomStrength, "how much of the blurred bright part is added back")->capture_default_str();
     cmd.add_option("--specular", o.specular, "on: the BRDF's specular term; off: Lambert only (every method and the reference alike)")->capture_default_str();
     cmd.add_option("--brdf", o.brdf, "ggx (glTF's metallic-roughness BRDF, appendix B) or blinn-phong (the seeds' normalized Blinn-Phong, no 1/pi)")->capture_default_str();
-    cmd.add_option("--light-sum", o.lightSum, "how a point adds up its lights, in every method: fixed (64-bit integers, the same bits in any "
-                   "order, so the light lists are not sorted), float (float sums, lists sorted by light index), auto (fixed where "
-                   "the GPU has GL_ARB_gpu_shader_int64)")->capture_default_str();
+    cmd.add_option("--light-sum", o.lightSum, "how a point adds up its lights, in every method: float (lists sorted by light index, "
+                   "so sums run in naive's order), or fixed (64-bit integers, the same bits in any order: the lists go unsorted; "
+                   "needs GL_ARB_gpu_shader_int64; pays at millions of lights)")->capture_default_str();
     cmd.add_option("--light-cutoff", o.lightCutoff, "E > 0 in output units: each generated light, and each scene light without a range, reaches as far as its "
                    "inverse square max(colour) / d^2 exceeds E; lights fall off as glTF says (clamp(1 - (d/r)^4, 0, 1) / max(d, 0.01)^2)");
     cmd.add_option("--cutoff", o.cutoff, "hard (glTF's window at each light's radius), stochastic (ranges drawn per frame by Russian roulette, "

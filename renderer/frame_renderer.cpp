@@ -36,7 +36,6 @@ void FrameRenderer::resize(int width, int height) {
 
 MethodSettings FrameRenderer::forLights(MethodSettings method) const {
     method.clustering.spotLights = lights_.hasSpots();
-    method.clustering.lightSum = resolveLightSum(method.clustering.lightSum, lightsInCompute(method.kind));
     return method;
 }
 

@@ -99,7 +99,7 @@ BenchRow configColumns(const BenchPoint& p, int index, std::uint32_t frame, cons
     row["drift_speed"] = o.driftSpeed;
     row["specular"] = o.specular;
     row["brdf"] = o.brdf;
-    row["light_sum"] = o.lightSum;  // as asked; the point's run replaces it with what ran
+    row["light_sum"] = o.lightSum;
     row["light_cutoff"] = o.lightCutoff ? nlohmann::ordered_json(*o.lightCutoff) : nlohmann::ordered_json();
     row["cutoff"] = o.cutoff;
     row["accumulate"] = p.accumulate;
@@ -253,7 +253,6 @@ void BenchRunner::measureInto(BenchRow& row, const BenchPoint& point) {
     renderer_->setDrawSubmission(f.settings.draw);
     renderer_->render(first);  // applies it, so the scene reports its draw calls
     row["draw_calls"] = renderer_->scene().drawCallsPerPass();
-    row["light_sum"] = lightSumName(renderer_->settings().method.clustering.lightSum);
     if (const auto* visibility = dynamic_cast<const VisibilityBuffer*>(&renderer_->method()))
         row["vis_raster"] = visibilityRasterName(visibility->raster());
 

@@ -160,7 +160,7 @@ const std::vector<AxisDef>& axisDefs() {
              (void)parseBrdf(asText(v));
              p.frame.brdf = v.get<std::string>();
          }},
-        {{"light_sum", "--light-sum", "how a point adds up its lights: auto, fixed (64-bit integers, lists unsorted), float (lists sorted)"},
+        {{"light_sum", "--light-sum", "how a point adds up its lights: float (lists sorted), fixed (64-bit integers, lists unsorted)"},
          ValueKind::Text, Applies::Always,
          [](BenchPoint& p, const json& v) {
              (void)parseLightSum(asText(v));

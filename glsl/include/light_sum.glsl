@@ -12,10 +12,19 @@
 #define LightSum i64vec3
 const float kLightSumUnits = 4294967296.0;  // 2^32 units to 1
 const float kLightSumMaxTerm = 1048576.0;   // 2^20
+const float kTwoTo26 = 67108864.0;
 LightSum noLight() { return i64vec3(0); }
-void addLight(inout LightSum sum, vec3 contribution) {
-    sum += i64vec3(clamp(contribution, 0.0, kLightSumMaxTerm) * kLightSumUnits + 0.5);
+// A contribution as a count of units, rounded to nearest, through two 32-bit conversions: a float
+// to int64 conversion in NVIDIA's driver (580, H100) kept at most 2^31 units (half a unit of
+// radiance), which darkened the highlights. v < 2^52, so its whole 2^26s fit 32 bits, and the
+// rest is exact (a multiple of v's ulp below 2^26) before it is rounded.
+i64vec3 lightUnits(vec3 contribution) {
+    vec3 v = clamp(contribution, 0.0, kLightSumMaxTerm) * kLightSumUnits;  // exact: a power of two
+    vec3 high = floor(v * (1.0 / kTwoTo26));
+    vec3 low = floor(v - high * kTwoTo26 + 0.5);
+    return (i64vec3(uvec3(high)) << 26) + i64vec3(uvec3(low));
 }
+void addLight(inout LightSum sum, vec3 contribution) { sum += lightUnits(contribution); }
 vec3 lightSumValue(LightSum sum) { return vec3(sum) * (1.0 / kLightSumUnits); }
 #else
 #define LightSum vec3

@@ -42,9 +42,9 @@ struct ClusteringSettings {
     // Whether the light set holds spots. FrameRenderer sets it from its lights; without spots
     // every program that reads lights compiles its spot paths out (ML_SPOT_LIGHTS 0).
     bool spotLights = true;
-    // --light-sum, for every method's shading (naive's too); createMethod resolves Auto. With
-    // Fixed the lists are not sorted (glsl/include/light_sum.glsl says why they need not be).
-    LightSum lightSum = LightSum::Auto;
+    // --light-sum, for every method's shading (naive's too). With Fixed the lists are not sorted
+    // (glsl/include/light_sum.glsl says why they need not be).
+    LightSum lightSum = LightSum::Float;
     // Samples per pixel of the depth the passes read (--msaa, Forward+): each compiles with
     // ML_MSAA_SAMPLES and reads every sample, so the lists hold for every shaded sample.
     std::uint32_t depthSamples = 1;

@@ -7,24 +7,23 @@
 
 namespace ml {
 
+// The fixed sum spends a conversion and three 64-bit adds on every light a point shades, and
+// saves the sort of every list. On an H100 (docs/bench/nvidia-h100/light-sum) that paid only at
+// 4,194,304 lights (3840x2160: 8.02-8.94 ms a frame against 8.64-9.65); at 1,048,576 it broke
+// even, and at 65,536, for Forward+ (whose fragments shade every light of their lists) and for
+// the gas station's glass it cost more than the sort. So float is the default.
 enum class LightSum {
-    Auto,   // fixed where the lights are shaded in a compute pass and the GPU has 64-bit integers, else float
-    Fixed,  // 64-bit fixed point: the same bits in any order, so the lists are not sorted
     Float,  // float: order changes the last bits, so every list is sorted by light index (assign.sort)
+    Fixed,  // 64-bit fixed point: the same bits in any order, so the lists are not sorted
 };
 LightSum parseLightSum(const std::string& text);  // throws std::invalid_argument naming --light-sum
 const char* lightSumName(LightSum sum);
 
-// Auto made Fixed or Float for a method and the current GL context. The fixed sum costs each
-// light's shading a conversion and three 64-bit adds and saves the sort of every list; on an H100
-// (docs/bench/nvidia-h100/light-sum) that paid where a compute pass lights the frame (deferred,
-// the visibility buffer: 0.15-0.34 ms less a frame at 1M lights, 1.0-1.3 ms at 4M, even at 65,536)
-// and cost Forward+, whose fragments shade every light of their lists, 15-25 % more a frame. So
-// Auto is Fixed for `computeLighting` methods alone. Throws std::invalid_argument for Fixed on a
-// GPU without 64-bit integers.
-LightSum resolveLightSum(LightSum sum, bool computeLighting);
+// Throws std::invalid_argument, naming the flag, for Fixed on a GPU without 64-bit integers
+// (GL_ARB_gpu_shader_int64).
+void checkLightSumSupported(LightSum sum);
 
-// ML_FIXED_LIGHT_SUM for the programs that shade lights; `sum` resolved (Auto throws std::logic_error).
+// ML_FIXED_LIGHT_SUM for the programs that shade lights.
 std::pair<std::string, std::string> lightSumDefine(LightSum sum);
 
 }  // namespace ml

@@ -60,11 +60,8 @@ int validMsaa(long long samples) {
     return static_cast<int>(samples);
 }
 
-bool lightsInCompute(MethodKind kind) { return kind == MethodKind::Deferred || kind == MethodKind::Visibility; }
-
-std::unique_ptr<ShadingMethod> createMethod(const MethodSettings& asked, std::uint32_t materialFeatures) {
-    MethodSettings settings = asked;
-    settings.clustering.lightSum = resolveLightSum(asked.clustering.lightSum, lightsInCompute(asked.kind));
+std::unique_ptr<ShadingMethod> createMethod(const MethodSettings& settings, std::uint32_t materialFeatures) {
+    checkLightSumSupported(settings.clustering.lightSum);
     if (const char* refusal = msaaRefusal(settings.kind); refusal && settings.msaa > 1)
         throw std::invalid_argument("--msaa " + std::to_string(settings.msaa) + ": " + refusal);
     const TransparencySettings transparency{settings.msaa, settings.transparentCaptureBudget};

@@ -68,12 +68,7 @@ const std::vector<std::string>& methodNames();
 MethodKind parseMethod(const std::string& text);
 std::string methodName(MethodKind kind);
 
-// Whether the method lights its frame in a compute pass over the lists (deferred, visibility):
-// where --light-sum auto is the fixed sum (renderer/lights/light_sum.h).
-bool lightsInCompute(MethodKind kind);
-
-// materialFeatures: SceneGpu::materialFeatures() of the scene the method will draw. Resolves
-// --light-sum auto for the method.
+// materialFeatures: SceneGpu::materialFeatures() of the scene the method will draw.
 std::unique_ptr<ShadingMethod> createMethod(const MethodSettings& settings, std::uint32_t materialFeatures);
 
 }  // namespace ml
