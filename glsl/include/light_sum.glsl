@@ -4,9 +4,9 @@
 // same bits from run to run and as naive's loop. With ML_FIXED_LIGHT_SUM each contribution is
 // rounded once, on its own, to a 64-bit integer count of 2^-32 and the integers add exactly, so
 // every order gives the same sum, bit for bit, and the lists need no sort. A contribution keeps
-// its 24 mantissa bits from 2^-8 up and rounds to 2^-32 below; one light adds at most 2^20 (a
-// radiance no display shows: the HDR frame's tonemap and bloom saturate long before), so a sum
-// reaches the int64's 2^31 only past 2048 such lights. The file that includes this enables
+// its 24 mantissa bits from 2^-8 up and rounds to 2^-32 below; one light adds at most 2^20 (the
+// tonemap shows such a pixel white either way, though --bloom spreads a clamped one less), so a
+// sum reaches the int64's 2^31 only past 2048 such lights. The file that includes this enables
 // GL_ARB_gpu_shader_int64 under ML_FIXED_LIGHT_SUM (an #extension must precede the code).
 #if ML_FIXED_LIGHT_SUM
 #define LightSum i64vec3
