@@ -8,7 +8,9 @@
 //   ML_EXACT_COUNT   (per candidate)  the --cull test and a spot's cone (include/light_cluster_test.glsl); count per list
 //   [prefix sum of counts: list offsets]
 //   ML_EXACT_FILL    (per candidate)  the same test; write the light into the list
-// A candidate finds its light by binary search over the candidate offsets.
+// A workgroup takes ML_ASSIGN_CANDIDATE_RUN rounds of consecutive candidates, one an invocation;
+// an invocation finds its first candidate's light by binary search over the candidate offsets,
+// and each later one's by stepping forward from there.
 // Per cluster (--assign per-cluster, seed 003): after ML_EXACT_RANGES, one invocation per
 // cluster loops over every light (a workgroup stages them through shared memory), keeping those
 // whose block holds the cluster and that pass the same test:
@@ -27,6 +29,10 @@
 
 #ifndef ML_WORKGROUP
 #define ML_WORKGROUP ML_ASSIGN_WORKGROUP
+#endif
+// A scratch build may set the round count (docs/bench/nvidia-h100/assign-runs measured 1 to 16).
+#ifndef ML_CANDIDATE_RUN
+#define ML_CANDIDATE_RUN ML_ASSIGN_CANDIDATE_RUN
 #endif
 layout(local_size_x = ML_WORKGROUP) in;
 
@@ -91,7 +97,8 @@ void main() {
     // At least one group (it finds nothing to do when there are no candidates); beyond the
     // device's limit in x, the rest goes to y.
     if (totals[6] != 0u) totals[2] = 0u;  // wrapped: test nothing; the host reports it
-    uint groups = max((totals[2] + ML_WORKGROUP - 1u) / ML_WORKGROUP, 1u);
+    const uint span = ML_WORKGROUP * ML_CANDIDATE_RUN;  // candidates a workgroup takes
+    uint groups = max(totals[2] / span + uint(totals[2] % span != 0u), 1u);
     uint x = min(groups, u_maxGroupsX);
     dispatchArgs = uvec4(x, (groups + x - 1u) / x, 1u, 0u);
 }
@@ -187,26 +194,61 @@ void assignPairs() {
     }
 }
 #else
-void assignPairs() {
-    uint k = (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * ML_WORKGROUP + gl_LocalInvocationID.x;
-    if (k >= totals[2]) return;
-    // The light whose candidates hold k: the last offset <= k (zero-candidate lights share
-    // their successor's offset and are skipped by taking the last).
-    uint lo = 0u, hi = lightCount();
+// The light whose candidates hold candidate k: the last light in [lo, hi) whose candidates start
+// at or before k, given that lo's do (candidateOffsets[lo] <= k). Lights without candidates
+// share their successor's offset and are skipped by taking the last.
+uint lastLightStartingBy(uint k, uint lo, uint hi) {
+    ++lo;
     while (lo < hi) {
         uint mid = (lo + hi) >> 1;
         if (candidateOffsets[mid] <= k) lo = mid + 1u;
         else hi = mid;
     }
-    uint light = lo - 1u;
-    uint local = k - candidateOffsets[light];
-    uvec4 range = lightRanges[light];
-    uint nx = range.w & 0xFFFFu, ny = range.w >> 16;
-    uvec3 c = range.xyz + uvec3(local % nx, (local / nx) % ny, local / (nx * ny));
-    uint cluster = clusterIndex(c);
-    if (clusterSkipped(cluster)) return;
-    vec4 v = lightView[light];
-    if (lightReachesCluster(cluster, c, light, v.xyz, v.w)) addPair(cluster, light);
+    return lo - 1u;
+}
+
+// The same, forward from a light at or before it: an invocation's next candidate lies
+// ML_WORKGROUP further on, in the same light's block or a few lights later, so the bracket
+// grows from `from` by doubling steps (one read when the light stays) before the binary search.
+uint lightHoldingFrom(uint k, uint from) {
+    uint count = lightCount();
+    uint lo = from, hi = count, step = 1u;
+    while (step < count - lo) {
+        uint probe = lo + step;
+        if (candidateOffsets[probe] > k) {
+            hi = probe;
+            break;
+        }
+        lo = probe;
+        step <<= 1;
+    }
+    return lastLightStartingBy(k, lo, hi);
+}
+
+void assignPairs() {
+    // A workgroup takes ML_WORKGROUP x ML_CANDIDATE_RUN consecutive candidates in
+    // ML_CANDIDATE_RUN steps; in each step neighbouring invocations take neighbouring candidates,
+    // so they test neighbouring clusters of a light and their atomics share cache lines.
+    const uint span = ML_WORKGROUP * ML_CANDIDATE_RUN;
+    uint group = gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x;
+    uint total = totals[2];
+    if (total == 0u || group > (total - 1u) / span || gl_LocalInvocationID.x >= total - group * span) return;
+    uint k = group * span + gl_LocalInvocationID.x;
+    uint light = lastLightStartingBy(k, 0u, lightCount());
+    for (uint step = 0u;; ++step) {
+        uint local = k - candidateOffsets[light];
+        uvec4 range = lightRanges[light];
+        uint nx = range.w & 0xFFFFu, ny = range.w >> 16;
+        uvec3 c = range.xyz + uvec3(local % nx, (local / nx) % ny, local / (nx * ny));
+        uint cluster = clusterIndex(c);
+        if (!clusterSkipped(cluster)) {
+            vec4 v = lightView[light];
+            if (lightReachesCluster(cluster, c, light, v.xyz, v.w)) addPair(cluster, light);
+        }
+        if (step + 1u == ML_CANDIDATE_RUN || total - k <= ML_WORKGROUP) break;
+        k += ML_WORKGROUP;
+        light = lightHoldingFrom(k, light);
+    }
 }
 #endif
 

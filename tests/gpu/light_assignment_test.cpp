@@ -178,6 +178,43 @@ INSTANTIATE_TEST_SUITE_P(Grids, LightAssignment,
                           assignModeName(c.assign) + (c.activeOnly ? "_active_only" : "") + (c.spotShare > 0.0f ? "_spots" : ""));
     });
 
+// The exact count and fill take ML_ASSIGN_CANDIDATE_RUN candidates an invocation, stepping from
+// one light's block to the next; lights that reach no cluster have no candidates and are skipped
+// a few at a time, or by a binary search past a longer run of them. Lights are moved out of view
+// in runs of 1 to 30 so that runs end inside blocks, blocks inside runs, and both steps are taken;
+// the lists must equal the per-cluster assignment's, which walks every light for each cluster.
+TEST_F(GpuTest, ExactListsMatchPerClusterListsAcrossRunsOfLightsOutOfView) {
+    TestScene t = testScene("atrium", 400, 17, 0.7f, 0.25f);
+    const Camera camera = smallFrame(t.scene, 200, 120).camera;
+    const glm::vec3 behind = -1.0e3f * glm::normalize(camera.target - camera.eye);
+    std::size_t moved = 0;
+    for (std::size_t i = 0; i < t.lights.size(); ++i) {
+        const std::size_t phase = i % 61;
+        if (phase >= 31 || phase % 5 == 2 || phase == 9 || phase == 10) {
+            t.lights[i].position = camera.eye + behind;  // behind the camera: no slice, no candidate
+            ++moved;
+        }
+    }
+    std::vector<std::vector<std::uint32_t>> lists[2];
+    for (const AssignMode assign : {AssignMode::Exact, AssignMode::PerCluster}) {
+        FrameSettings s = smallFrame(t.scene, 200, 120);
+        s.method.kind = MethodKind::Deferred;
+        s.method.clustering.grid = ClusterGridConfig{24, 16, Slicing::Fitted, 64};
+        s.method.clustering.assign = assign;
+        s.method.clustering.lightSum = LightSum::Float;  // sorted lists: equal sets compare equal
+        FrameRenderer renderer(t.scene, t.lights, s);
+        renderer.render(0);
+        lists[assign == AssignMode::Exact ? 0 : 1] = renderer.method().clustering()->downloadLists();
+    }
+    std::size_t references = 0;
+    for (const auto& list : lists[0]) references += list.size();
+    std::printf("%zu of %zu lights out of view; %zu references\n", moved, t.lights.size(), references);
+    EXPECT_GT(references, 1000u);
+    ASSERT_EQ(lists[0].size(), lists[1].size());
+    for (std::size_t cluster = 0; cluster < lists[0].size(); ++cluster)
+        ASSERT_EQ(lists[0][cluster], lists[1][cluster]) << "cluster " << cluster;
+}
+
 // The list sort on each of its paths: short lists by rank sort (up to ML_SORT_RANK_MAX) and
 // bitonic (up to ML_SORT_SHORT_MAX), long ones bitonic in shared memory (up to
 // ML_SORT_SHARED_CAPACITY) and in the buffer beyond; the edges included; exact and capped. Two clusters (tile columns),
