@@ -38,6 +38,7 @@
 #define ML_SSBO_CANDIDATE_OFFSETS 18   // exact assignment: prefix sum of candidates per light
 #define ML_SSBO_DISPATCH 19        // exact assignment: indirect dispatch arguments of the test passes
 #define ML_SSBO_SORT_WORK 16       // list sort: the lists of two or more entries and their dispatches (after assignment)
+#define ML_SSBO_SORT_SCRATCH 17    // list sort: lists longer than shared memory, merged, before they are copied back
 // The visibility resolve's tile lists (renderer/methods/visibility_buffer.h); free in that pass.
 #define ML_SSBO_RESOLVE_TILES 16       // per texture set slot, the screen tiles holding its pixels
 #define ML_SSBO_RESOLVE_DISPATCH 17    // per slot, the indirect dispatch of its resolve: tiles, 1, 1
@@ -177,7 +178,7 @@
 // hold a long list's threads and shared memory: lists up to ML_SORT_SHORT_MAX entries sort in
 // workgroups of ML_SORT_SHORT_WORKGROUP (a rank sort up to ML_SORT_RANK_MAX, bitonic beyond);
 // longer ones in workgroups of ML_SORT_LONG_WORKGROUP, bitonic in shared memory up to
-// ML_SORT_SHARED_CAPACITY (16 KiB), in place in the buffer beyond.
+// ML_SORT_SHARED_CAPACITY (16 KiB), beyond that in chunks of it, merged by rank.
 #define ML_SORT_SHORT_WORKGROUP 64
 #define ML_SORT_RANK_MAX 128
 #define ML_SORT_SHORT_MAX 256

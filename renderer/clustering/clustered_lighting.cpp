@@ -82,10 +82,6 @@ ClusteredLighting::ClusteredLighting(const ClusteringSettings& settings, std::ui
                           {{"ML_WORKGROUP", std::to_string(settings.grid.workgroup)},
                            {"ML_CULL", cullDefine(settings.cull)},
                            spotLightsDefine(settings.spotLights)})),
-      sortClassify_(gl::Program::compute("sort_cluster_lists.comp", {{"ML_SORT_CLASSIFY", "1"}})),
-      sortArgs_(gl::Program::compute("sort_cluster_lists.comp", {{"ML_SORT_ARGS", "1"}})),
-      sortShort_(gl::Program::compute("sort_cluster_lists.comp")),
-      sortLong_(gl::Program::compute("sort_cluster_lists.comp", {{"ML_SORT_LONG", "1"}})),
       transparentSamples_(transparentSamplesProgram(settings, materialFeatures)),
       gridBuffer_("clusters.grid", sizeof(ClusterGridGpu)),
       counters_("clusters.counters", 32),
@@ -101,7 +97,6 @@ ClusteredLighting::ClusteredLighting(const ClusteringSettings& settings, std::ui
     glGetIntegeri_v(GL_MAX_COMPUTE_WORK_GROUP_COUNT, 0, &maxGroupsX);
     maxGroupsX_ = static_cast<std::uint32_t>(std::max(maxGroupsX, 1));
     dispatch_.set("u_maxGroupsX", maxGroupsX_);
-    sortArgs_.set("u_maxGroupsX", maxGroupsX_);
     GLint maxInvocations = 0;
     glGetIntegerv(GL_MAX_COMPUTE_WORK_GROUP_INVOCATIONS, &maxInvocations);
     if (settings.grid.workgroup > static_cast<std::uint32_t>(maxInvocations))
@@ -234,36 +229,10 @@ void ClusteredLighting::build(const FrameContext& ctx, const GBuffer* gbuffer) {
 void ClusteredLighting::sortLists(const FrameContext& ctx) {
     auto pass = ctx.timer.pass("assign.sort");
     // Capped lists are one per cluster; exact ones one per cluster and normal bin.
-    const std::uint32_t lists = grid_.clusterCount() * (settings_.assign == AssignMode::Capped ? 1u : listsPerCluster());
-    checkListFits((kSortWorkLists + 2 * std::size_t(lists)) * 4, "the sort's work lists");
-    sortWork_.ensure((kSortWorkLists + 2 * std::size_t(lists)) * 4);
-    const std::uint32_t noLists[2] = {0, 0};
-    sortWork_.buffer().upload(noLists, sizeof noLists, kSortWorkLengths * 4);
-    glMemoryBarrier(kComputeToCompute);
-    counts_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_CLUSTER_COUNTS);
-    offsets_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_CLUSTER_OFFSETS);
-    indices_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_LIGHT_INDICES);
-    sortWork_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_SORT_WORK);
-    // Only lists of two or more entries get a workgroup: they are listed, then dispatched
-    // indirectly (glsl/sort_cluster_lists.comp says why). The short and the long program take
-    // disjoint lists, so they need no barrier between them.
-    const std::uint32_t classifyGroups = gl::groupsFor(lists, 64);
-    const std::uint32_t groupsX = std::min(classifyGroups, maxGroupsX_);
-    sortClassify_.use();
-    sortClassify_.set("u_listCount", lists);
-    glDispatchCompute(groupsX, (classifyGroups + groupsX - 1) / groupsX, 1);
-    glMemoryBarrier(kComputeToCompute);
-    sortArgs_.use();
-    glDispatchCompute(1, 1, 1);
-    glMemoryBarrier(GL_COMMAND_BARRIER_BIT | kComputeToCompute);
-    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, sortWork_.buffer().id());
-    for (const auto& [program, argsOffset] : {std::pair{&sortShort_, 0}, std::pair{&sortLong_, 12}}) {
-        program->use();
-        program->set("u_listCount", lists);
-        glDispatchComputeIndirect(argsOffset);
-    }
-    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
-    glMemoryBarrier(kComputeToCompute);
+    const bool capped = settings_.assign == AssignMode::Capped;
+    const std::uint32_t lists = grid_.clusterCount() * (capped ? 1u : listsPerCluster());
+    checkListFits(ListSort::workBytes(lists), "the sort's work lists");
+    sort_.sort(counts_.buffer(), offsets_.buffer(), indices_.buffer(), lists, capped ? settings_.maxPerCluster : 0u);
 }
 
 void ClusteredLighting::markNormalBins(const FrameContext& ctx, const GBuffer& gbuffer) {

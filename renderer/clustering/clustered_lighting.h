@@ -34,6 +34,7 @@
 #include "renderer/clustering/cluster_grid.h"
 #include "renderer/clustering/cluster_statistics.h"
 #include "renderer/clustering/clustering_settings.h"
+#include "renderer/clustering/list_sort.h"
 #include "renderer/clustering/prefix_sum.h"
 #include "renderer/clustering/zbin_assignment.h"
 #include "renderer/gl/buffer.h"
@@ -99,8 +100,9 @@ private:
     std::uint64_t listEntries_ = 0;
     std::uint32_t maxGroupsX_ = 65535;
 
-    gl::Program depthRange_, bounds_, active_, normalBins_, ranges_, dispatch_, count_, fill_, capped_, sortClassify_, sortArgs_, sortShort_, sortLong_;
+    gl::Program depthRange_, bounds_, active_, normalBins_, ranges_, dispatch_, count_, fill_, capped_;
     PrefixSum scan_;
+    ListSort sort_;
     RasterProgram transparentSamples_;  // only with transparency and --active-only or --normal-cones
 
     gl::Buffer gridBuffer_;
@@ -117,10 +119,6 @@ private:
     gl::GrowableBuffer normalBinMasks_{"clusters.normal-bin-masks"};  // 4 B per cluster
     gl::GrowableBuffer normalCones_{"clusters.normal-cones"};         // 16 B per (cluster, bin) list
     gl::GrowableBuffer indices_{"clusters.light-indices"};
-    // The sort's work lists (glsl/sort_cluster_lists.comp): two indirect dispatches, two lengths,
-    // then up to two lists' worth of list indices.
-    static constexpr std::size_t kSortWorkLengths = 6, kSortWorkLists = 8;
-    gl::GrowableBuffer sortWork_{"clusters.sort-work"};
     std::unique_ptr<ZBinAssignment> zbin_;  // --assign zbin only
 };
 

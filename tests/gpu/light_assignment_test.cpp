@@ -217,8 +217,9 @@ TEST_F(GpuTest, ExactListsMatchPerClusterListsAcrossRunsOfLightsOutOfView) {
 
 // The list sort on each of its paths: short lists by rank sort (up to ML_SORT_RANK_MAX) and
 // bitonic (up to ML_SORT_SHORT_MAX), long ones bitonic in shared memory (up to
-// ML_SORT_SHARED_CAPACITY) and in the buffer beyond; the edges included; exact and capped. Two clusters (tile columns),
-// lights covering both.
+// ML_SORT_SHARED_CAPACITY) and beyond that in chunks merged by rank (5000 lights: lists of two
+// chunks; 9500: three, the last partial); the edges included; exact and capped. Two clusters
+// (tile columns), lights covering most of both.
 struct LongListCase {
     AssignMode assign;
     std::uint32_t lights;
@@ -238,14 +239,23 @@ TEST_P(LongLists, AreCompleteAndSorted) {
     FrameRenderer renderer(t.scene, t.lights, s);
     renderer.render(0);
     const auto lists = renderer.method().clustering()->downloadLists();
+    // The same lists unsorted (fixed sums skip the sort), sorted here: what the sort must give.
+    s.method.clustering.lightSum = LightSum::Fixed;
+    FrameRenderer unsorted(t.scene, t.lights, s);
+    unsorted.render(0);
+    auto expected = unsorted.method().clustering()->downloadLists();
     ASSERT_EQ(lists.size(), 2u);
-    for (const auto& list : lists) {
+    ASSERT_EQ(expected.size(), 2u);
+    for (std::size_t i = 0; i < lists.size(); ++i) {
+        const auto& list = lists[i];
         std::printf("list of %zu lights\n", list.size());
         if (c.lights > ML_SORT_SHARED_CAPACITY) {
-            EXPECT_GT(list.size(), std::size_t(ML_SORT_SHARED_CAPACITY));
+            EXPECT_GT(list.size(), std::size_t(c.lights > 9000 ? 2 * ML_SORT_SHARED_CAPACITY : ML_SORT_SHARED_CAPACITY));
         }
         EXPECT_TRUE(std::is_sorted(list.begin(), list.end()));
         EXPECT_EQ(std::adjacent_find(list.begin(), list.end()), list.end()) << "duplicate light";
+        std::sort(expected[i].begin(), expected[i].end());
+        EXPECT_EQ(list, expected[i]) << "list " << i << ": not the fill's entries";
     }
 }
 
@@ -254,7 +264,8 @@ INSTANTIATE_TEST_SUITE_P(Sort, LongLists,
                       LongListCase{AssignMode::Exact, 100}, LongListCase{AssignMode::Exact, ML_SORT_RANK_MAX + 1},
                       LongListCase{AssignMode::Exact, ML_SORT_SHORT_MAX}, LongListCase{AssignMode::Exact, ML_SORT_SHORT_MAX + 1},
                       LongListCase{AssignMode::Exact, ML_SORT_SHARED_CAPACITY},
-                      LongListCase{AssignMode::Capped, 1500}),
+                      LongListCase{AssignMode::Exact, 9500},
+                      LongListCase{AssignMode::Capped, 1500}, LongListCase{AssignMode::Capped, 5000}),
     [](const auto& info) { return std::string(assignModeName(info.param.assign)) + "_" + std::to_string(info.param.lights) + "_lights"; });
 
 }  // namespace
