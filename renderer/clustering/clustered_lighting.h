@@ -25,6 +25,7 @@
 // Memory per cluster: count, offset, fill cursor, active flag (4 B each) and an AABB (32 B):
 // 48 B, so 32 x 18 x 24 clusters take 648 KiB. Exact lists take 4 B per light reference;
 // capped lists take clusters x cap x 4 B whatever the frame needs (42x24x12 x 2048: 99 MiB).
+// With float sums the sort (list_sort.h) keeps a scratch buffer as large as the lists.
 #pragma once
 
 #include <memory>
