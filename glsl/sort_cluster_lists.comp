@@ -118,10 +118,12 @@ uint smallerIn(uint chunkFirst, uint chunkSize, uint x) {
 // appears once per list, so no two entries share a place), through the scratch buffer and back.
 // A bitonic network in the buffer took 1.0-1.2 ms on the gas station's lists of up to 14,650
 // lights at a million (H100), one workgroup and a barrier for each of its 105 steps.
+uint chunkLength(uint n, uint chunk) { return min(uint(ML_SORT_CAPACITY), n - chunk * ML_SORT_CAPACITY); }
+
 void chunkSortAndMerge(uint first, uint n) {
     uint chunks = (n + ML_SORT_CAPACITY - 1u) / ML_SORT_CAPACITY;
     for (uint c = 0u; c < chunks; ++c) {
-        bitonicSortShared(first + c * ML_SORT_CAPACITY, min(uint(ML_SORT_CAPACITY), n - c * ML_SORT_CAPACITY));
+        bitonicSortShared(first + c * ML_SORT_CAPACITY, chunkLength(n, c));
         barrier();  // the next chunk refills s_list
     }
     memoryBarrierBuffer();
@@ -131,7 +133,7 @@ void chunkSortAndMerge(uint first, uint n) {
         uint x = lightIndices[first + e];
         uint place = e - own * ML_SORT_CAPACITY;
         for (uint c = 0u; c < chunks; ++c) {
-            if (c != own) place += smallerIn(first + c * ML_SORT_CAPACITY, min(uint(ML_SORT_CAPACITY), n - c * ML_SORT_CAPACITY), x);
+            if (c != own) place += smallerIn(first + c * ML_SORT_CAPACITY, chunkLength(n, c), x);
         }
         sortScratch[first + place] = x;
     }

@@ -93,10 +93,7 @@ ClusteredLighting::ClusteredLighting(const ClusteringSettings& settings, std::ui
     GLint64 maxBlock = 0;
     glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &maxBlock);
     maxStorageBlock_ = static_cast<std::size_t>(maxBlock);
-    GLint maxGroupsX = 0;
-    glGetIntegeri_v(GL_MAX_COMPUTE_WORK_GROUP_COUNT, 0, &maxGroupsX);
-    maxGroupsX_ = static_cast<std::uint32_t>(std::max(maxGroupsX, 1));
-    dispatch_.set("u_maxGroupsX", maxGroupsX_);
+    dispatch_.set("u_maxGroupsX", gl::maxWorkGroupsX());
     GLint maxInvocations = 0;
     glGetIntegerv(GL_MAX_COMPUTE_WORK_GROUP_INVOCATIONS, &maxInvocations);
     if (settings.grid.workgroup > static_cast<std::uint32_t>(maxInvocations))

@@ -99,7 +99,6 @@ private:
     ClusterGrid grid_;
     std::size_t maxStorageBlock_ = 0;
     std::uint64_t listEntries_ = 0;
-    std::uint32_t maxGroupsX_ = 65535;
 
     gl::Program depthRange_, bounds_, active_, normalBins_, ranges_, dispatch_, count_, fill_, capped_;
     PrefixSum scan_;

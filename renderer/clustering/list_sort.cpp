@@ -15,10 +15,8 @@ ListSort::ListSort()
     : classify_(gl::Program::compute("sort_cluster_lists.comp", {{"ML_SORT_CLASSIFY", "1"}})),
       args_(gl::Program::compute("sort_cluster_lists.comp", {{"ML_SORT_ARGS", "1"}})),
       short_(gl::Program::compute("sort_cluster_lists.comp")),
-      long_(gl::Program::compute("sort_cluster_lists.comp", {{"ML_SORT_LONG", "1"}})) {
-    GLint maxGroupsX = 0;
-    glGetIntegeri_v(GL_MAX_COMPUTE_WORK_GROUP_COUNT, 0, &maxGroupsX);
-    maxGroupsX_ = static_cast<std::uint32_t>(std::max(maxGroupsX, 1));
+      long_(gl::Program::compute("sort_cluster_lists.comp", {{"ML_SORT_LONG", "1"}})),
+      maxGroupsX_(gl::maxWorkGroupsX()) {
     args_.set("u_maxGroupsX", maxGroupsX_);
 }
 

@@ -35,7 +35,7 @@ private:
     static constexpr std::size_t kWorkLengths = 6, kWorkLists = 8;
 
     gl::Program classify_, args_, short_, long_;
-    std::uint32_t maxGroupsX_ = 65535;
+    std::uint32_t maxGroupsX_;  // the device's limit on workgroups in x
     gl::GrowableBuffer work_{"clusters.sort-work"};
     gl::GrowableBuffer scratch_{"clusters.sort-scratch"};
 };

@@ -1,6 +1,8 @@
 // A linked GLSL program built from embedded shaders (glsl/), labelled with the shader names.
 #pragma once
 
+#include <algorithm>
+#include <cstdint>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -51,6 +53,14 @@ private:
 // Dispatch enough workgroups of `groupSize` to cover `count` items.
 inline GLuint groupsFor(std::size_t count, std::size_t groupSize) {
     return static_cast<GLuint>((count + groupSize - 1) / groupSize);
+}
+
+// The device's limit on compute workgroups along x (GL_MAX_COMPUTE_WORK_GROUP_COUNT); a dispatch
+// past it goes on in y.
+inline std::uint32_t maxWorkGroupsX() {
+    GLint groups = 0;
+    glGetIntegeri_v(GL_MAX_COMPUTE_WORK_GROUP_COUNT, 0, &groups);
+    return static_cast<std::uint32_t>(std::max(groups, 1));
 }
 
 }  // namespace ml::gl

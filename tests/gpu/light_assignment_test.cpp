@@ -178,10 +178,10 @@ INSTANTIATE_TEST_SUITE_P(Grids, LightAssignment,
                           assignModeName(c.assign) + (c.activeOnly ? "_active_only" : "") + (c.spotShare > 0.0f ? "_spots" : ""));
     });
 
-// The exact count and fill take ML_ASSIGN_CANDIDATE_RUN candidates an invocation, stepping from
-// one light's block to the next; lights that reach no cluster have no candidates and are skipped
-// a few at a time, or by a binary search past a longer run of them. Lights are moved out of view
-// in runs of 1 to 30 so that runs end inside blocks, blocks inside runs, and both steps are taken;
+// The exact count and fill take ML_ASSIGN_CANDIDATE_RUN rounds of candidates a workgroup; an
+// invocation finds each later round's light forward from the last, by a doubling bracket and a
+// binary search inside it, past lights that reach no cluster (they have no candidates). Lights
+// are moved out of view in runs of 1 to 30 so that brackets span such runs and stop inside them;
 // the lists must equal the per-cluster assignment's, which walks every light for each cluster.
 TEST_F(GpuTest, ExactListsMatchPerClusterListsAcrossRunsOfLightsOutOfView) {
     TestScene t = testScene("atrium", 400, 17, 0.7f, 0.25f);
