@@ -5,6 +5,7 @@
 #include <string>
 
 #include "renderer/hash.h"
+#include "renderer/lights/spatial_order.h"
 #include "renderer/scene/surface_samples.h"
 
 namespace ml {
@@ -45,6 +46,7 @@ void placeOnSurfaces(std::vector<Light>& lights, const Scene& scene, std::uint32
 std::vector<Light> generateLights(const Scene& scene, const LightGeneration& generation, LightPlacement placement) {
     std::vector<Light> lights = generateLights(lightVolume(scene.bounds), generation);
     if (placement == LightPlacement::Surfaces) placeOnSurfaces(lights, scene, generation.seed);
+    sortLightsSpatially(lights, lightVolume(scene.bounds));
     return lights;
 }
 

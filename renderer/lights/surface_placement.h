@@ -31,7 +31,8 @@ LightPlacement parseLightPlacement(const std::string& text);
 // triangles of any area leaves them where they are).
 void placeOnSurfaces(std::vector<Light>& lights, const Scene& scene, std::uint32_t seed);
 
-// generateLights in the scene's light volume, then placed as asked.
+// generateLights in the scene's light volume, placed as asked, then in Morton order of their
+// places (renderer/lights/spatial_order.h): what render, view and bench light a frame with.
 std::vector<Light> generateLights(const Scene& scene, const LightGeneration& generation, LightPlacement placement);
 
 }  // namespace ml
