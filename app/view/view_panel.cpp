@@ -8,6 +8,7 @@
 #include "app/view/render_scale.h"
 #include "renderer/clustering/cluster_grid.h"
 #include "renderer/debug_view.h"
+#include "renderer/lights/light_sum.h"
 
 namespace ml::app {
 
@@ -197,6 +198,15 @@ void shadingSection(ViewSettings& s, const ViewStatistics& stats, PanelEdits& ed
         s.brdf = brdf == 0 ? Brdf::Ggx : Brdf::BlinnPhong;
         edits.brdf = true;
     }
+    // Every method adds its lights this way, naive included: float over lists sorted by light
+    // index, or 64-bit fixed point over unsorted lists (renderer/lights/light_sum.h).
+    int lightSum = s.method.clustering.lightSum == LightSum::Fixed ? 1 : 0;
+    if (comboOf("light sum", lightSum, {lightSumName(LightSum::Float), lightSumName(LightSum::Fixed)})) {
+        s.method.clustering.lightSum = lightSum == 1 ? LightSum::Fixed : LightSum::Float;
+        edits.method = true;
+    }
+    ImGui::SameLine();
+    ImGui::TextColored(kDim, s.method.clustering.lightSum == LightSum::Fixed ? "(64-bit, lists unsorted)" : "(lists sorted)");
     ImGui::Checkbox("specular", &s.specular);
     ImGui::Checkbox("bloom", &s.bloom.enabled);
     ImGui::BeginDisabled(!s.bloom.enabled);

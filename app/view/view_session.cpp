@@ -18,6 +18,7 @@
 #include "renderer/camera/default_camera.h"
 #include "renderer/clustering/clustered_lighting.h"
 #include "renderer/gl/debug_output.h"
+#include "renderer/lights/light_sum.h"
 
 namespace ml::app {
 
@@ -342,9 +343,16 @@ void ViewSession::applyPanelScript(const std::string& script) {
             }
             settings_.lightCutoff = *check.lightCutoff;
             edits.lights = true;
+        } else if (key == "light-sum") {
+            try {
+                settings_.method.clustering.lightSum = parseLightSum(value);
+            } catch (const std::invalid_argument& e) {
+                throw std::invalid_argument("--panel '" + item + "': " + e.what());
+            }
+            edits.method = true;
         } else {
             throw std::invalid_argument("--panel '" + item + "': expected brdf=ggx|blinn-phong, "
-                                        "cutoff=radius|hard|stochastic|none or light-cutoff=E");
+                                        "cutoff=radius|hard|stochastic|none, light-cutoff=E or light-sum=float|fixed");
         }
     }
     applyEdits(edits);

@@ -104,6 +104,31 @@ TEST(ViewCommand, PanelBrdfAndCutoffGiveTheFrameRenderGives) {
     EXPECT_NE(refused.find("--cutoff none: needs --method naive"), std::string::npos) << refused;
 }
 
+// The panel's light sum, set by --panel: every method, naive included, then adds its lights in
+// 64-bit fixed point over unsorted lists, and the frame is the one `render --light-sum fixed` gives.
+// The two sums differ in the float output's last bits, which the 8-bit screenshot rarely shows, so
+// the pass times (--time) show the switch: the clustered methods' lists are no longer sorted.
+TEST(ViewCommand, PanelLightSumGivesTheFrameRenderGives) {
+    REQUIRE_XVFB();
+    const std::string dir = testOutputDir().string();
+    for (const char* method : {"naive", "visibility"}) {
+        const std::string common = std::string("--scene boxes --detail 0.5 --size 160x90 --lights 64 --seed 3 --frames 3 --method ") + method;
+        std::string output;
+        const std::string view = dir + "/panel_fixed_" + method + ".png", render = dir + "/render_fixed_" + method + ".png";
+        ASSERT_EQ(runViewUnderXvfb(common + " --time --panel light-sum=fixed --screenshot " + view, output), 0) << output;
+        EXPECT_EQ(output.find("assign.sort"), std::string::npos) << method << ": fixed sums need no sort\n" << output;
+        ASSERT_EQ(runManylights("render " + common + " --light-sum fixed --out " + render, output), 0) << output;
+        EXPECT_EQ(compareImages(readPng(view), readPng(render)).maxAbs, 0.0) << method << ": images in " << dir;
+    }
+    std::string sorted;
+    ASSERT_EQ(runViewUnderXvfb("--scene boxes --detail 0.5 --size 160x90 --lights 64 --frames 3 --method visibility --time --panel light-sum=float", sorted), 0)
+        << sorted;
+    EXPECT_NE(sorted.find("assign.sort"), std::string::npos) << "float sums sort the lists\n" << sorted;
+    std::string refused;
+    EXPECT_NE(runViewUnderXvfb("--scene boxes --detail 0.5 --size 160x90 --frames 1 --panel light-sum=double", refused), 0);
+    EXPECT_NE(refused.find("--panel 'light-sum=double'"), std::string::npos) << refused;
+}
+
 TEST(ViewCommand, MsaaForAOneSampleMethodIsRefusedBeforeAWindowOpens) {
     std::string output;
     EXPECT_NE(runManylights("view --scene boxes --detail 0.25 --method visibility --msaa 4", output, "",
