@@ -1,24 +1,15 @@
-import numpy as np, sys, collections
-d=sys.argv[1]; W,H=640,360
-f32=np.float32
-def ulpdiff(a,b):
-    ai=a.view(np.int32).astype(np.int64); bi=b.view(np.int32).astype(np.int64); return bi-ai
+# The hardware's depth against the exact plane and float32 forms, through snapped or raw
+# vertices, NDC by division or by a reciprocal; and gl_FragCoord.z against the depth buffer.
+import collections, sys
+import numpy as np
+from probe_data import f32, ulpdiff, covered_pixels, window_positions
+d=sys.argv[1]
 res=collections.defaultdict(lambda: collections.Counter()); total=0
 fz_eq=0
 for b in range(8):
-    clip=np.fromfile(f'{d}/b{b}.clip',np.float32).reshape(-1,3,4)
-    ids=np.fromfile(f'{d}/b{b}.ids',np.uint32).reshape(H,W)
-    D=np.fromfile(f'{d}/b{b}.depth',np.float32).reshape(H,W)
-    FZ=np.fromfile(f'{d}/b{b}.fragz',np.uint32).reshape(H,W).view(np.float32)
-    yy,xx=np.nonzero(ids); t=ids[yy,xx].astype(np.int64)-1
-    D=D[yy,xx]; FZ=FZ[yy,xx]; total+=len(t); fz_eq+=(FZ.view(np.uint32)==D.view(np.uint32)).sum()
-    c=clip[t]  # n,3,4
-    px=(xx+0.5).astype(np.float64); py=(yy+0.5).astype(np.float64)
-    half=np.array([W/2,H/2],np.float32)
+    c,px,py,D,FZ=covered_pixels(d,b); total+=len(D); fz_eq+=(FZ.view(np.uint32)==D.view(np.uint32)).sum()
     for divname in ('div','rcp'):
-        if divname=='div': ndc=(c[:,:,:3]/c[:,:,3:4]).astype(f32)
-        else: ndc=(c[:,:,:3]*(f32(1)/c[:,:,3:4]).astype(f32)).astype(f32)
-        win=(ndc[:,:,:2]*half).astype(f32)+half   # two roundings
+        ndc,win=window_positions(c,divname)
         zw=(ndc[:,:,2]*f32(0.5)+f32(0.5)).astype(f32)
         sn=np.round(win.astype(np.float64)*256)  # roundEven via np.round (banker's)
         for snapname,V in (('snap',sn/256.0),('raw',win.astype(np.float64))):

@@ -1,31 +1,20 @@
-import numpy as np, sys, collections, itertools
-d=sys.argv[1]; W,H=640,360
-f32=np.float32
-def ulpdiff(a,b): return b.view(np.int32).astype(np.int64)-a.view(np.int32).astype(np.int64)
-def rnd(x, mode):
-    r=x.astype(f32); r64=r.astype(np.float64)
-    if mode=='near': return r
-    if mode=='down': m=r64>x; r[m]=np.nextafter(r[m],f32(-np.inf)); return r
-    if mode=='up': m=r64<x; r[m]=np.nextafter(r[m],f32(np.inf)); return r
-    if mode=='trunc':
-        m=np.abs(r64)>np.abs(x); r[m]=np.nextafter(r[m],f32(0)); return r
+# 72 float32 plane-equation forms against the hardware's depth: gradients rounded to nearest,
+# down or truncated; the reference vertex; fused or separate evaluation in each rounding.
+import collections, sys
+import numpy as np
+from probe_data import f32, ulpdiff, rounded as rnd, covered_pixels, window_positions, snapped
+d=sys.argv[1]
 res=collections.defaultdict(collections.Counter); total=0
 for b in range(4):
-    clip=np.fromfile(f'{d}/b{b}.clip',np.float32).reshape(-1,3,4)
-    ids=np.fromfile(f'{d}/b{b}.ids',np.uint32).reshape(H,W)
-    D=np.fromfile(f'{d}/b{b}.depth',np.float32).reshape(H,W)
-    yy,xx=np.nonzero(ids); t=ids[yy,xx].astype(np.int64)-1; D=D[yy,xx]; total+=len(t)
-    c=clip[t]; px=xx+0.5; py=yy+0.5
-    half=np.array([W/2,H/2],np.float32)
-    ndc=(c[:,:,:3]/c[:,:,3:4]).astype(f32)
-    win=(ndc[:,:,:2]*half).astype(f32)+half
-    V=np.round(win.astype(np.float64)*256)/256
+    c,px,py,D,_=covered_pixels(d,b); total+=len(D)
+    ndc,win=window_positions(c)
+    V=snapped(win)
     zw=(ndc[:,:,2]*f32(0.5)+f32(0.5)).astype(f32).astype(np.float64)
     x=V[:,:,0]; y=V[:,:,1]
     area=(x[:,1]-x[:,0])*(y[:,2]-y[:,0])-(x[:,2]-x[:,0])*(y[:,1]-y[:,0])
     A=((zw[:,1]-zw[:,0])*(y[:,2]-y[:,0])-(zw[:,2]-zw[:,0])*(y[:,1]-y[:,0]))/area
     B=((zw[:,2]-zw[:,0])*(x[:,1]-x[:,0])-(zw[:,1]-zw[:,0])*(x[:,2]-x[:,0]))/area
-    n=len(t); ar=np.arange(n)
+    n=len(D); ar=np.arange(n)
     refs={'v0':np.zeros(n,int),'v1':np.ones(n,int),'v2':np.full(n,2),
           'minz':np.argmin(zw,1),'maxz':np.argmax(zw,1),'topleft':np.lexsort((x.T,-y.T))[0] if False else np.argmin(x*1e6-y,1)}
     for gm in ('near','down','trunc'):
