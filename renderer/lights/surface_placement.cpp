@@ -44,9 +44,10 @@ void placeOnSurfaces(std::vector<Light>& lights, const Scene& scene, std::uint32
 }
 
 std::vector<Light> generateLights(const Scene& scene, const LightGeneration& generation, LightPlacement placement) {
-    std::vector<Light> lights = generateLights(lightVolume(scene.bounds), generation);
+    const Bounds volume = lightVolume(scene.bounds);
+    std::vector<Light> lights = generateLights(volume, generation);
     if (placement == LightPlacement::Surfaces) placeOnSurfaces(lights, scene, generation.seed);
-    sortLightsSpatially(lights, lightVolume(scene.bounds));
+    sortLightsSpatially(lights, volume);
     return lights;
 }
 
