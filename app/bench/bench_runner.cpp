@@ -264,16 +264,10 @@ void BenchRunner::measureInto(BenchRow& row, const BenchPoint& point) {
     // Warm-up: shader compilation (llvmpipe compiles on first draw) and first-use allocation.
     for (int i = 0; i < run_.warmupFrames; ++i) renderFrame(first + static_cast<std::uint32_t>(i));
 
-    // The SM clock after the warm-up (the GPU has left its idle clock) and after the timed frames;
-    // the lower of the two is the column, so a clock drop during the point shows.
-    std::optional<int> smClock;
-    auto sampleSmClock = [&] {
-        if (info_.software) return;  // no nvidia-smi on llvmpipe; keeps CI free of process starts
-        glFinish();
-        const std::optional<int> mhz = querySmClockMhz();
-        if (mhz) smClock = smClock ? std::min(*smClock, *mhz) : *mhz;
-    };
-    sampleSmClock();
+    // The SM clock, read while the timed frames run; the lowest read is the column, so a clock
+    // drop during the point shows. Not on llvmpipe: no NVIDIA clock there.
+    SmClockSampler smClockSampler;
+    if (!info_.software) smClockSampler.start();
 
     // Timed frames, the lights moving on by one animation step each.
     std::vector<double> totals, walls;
@@ -301,7 +295,7 @@ void BenchRunner::measureInto(BenchRow& row, const BenchPoint& point) {
         totals = walls;
         addNote(row, "the GPU timer queries gave no interval for some pass (seconds long): frame_ms is the wall clock");
     }
-    sampleSmClock();
+    const std::optional<int> smClock = info_.software ? std::nullopt : smClockSampler.stop();
     row["sm_clock_mhz"] = smClock ? nlohmann::ordered_json(*smClock) : nlohmann::ordered_json();
     const SampleSpread frame = spreadOf(totals);
     row["frame_ms"] = frame.median;

@@ -72,9 +72,9 @@ int runRasterFloors(const RasterFloorsOptions& o) {
         PassTimer timer(true, session.info.software ? TimingClock::WallClockAfterFinish : TimingClock::GpuQueries);
         const FrameContext ctx = renderer.frameContext(timer);
         std::map<std::string, std::vector<double>> samples;
-        std::optional<int> clock;
+        SmClockSampler clockSampler;  // read while the timed frames run (app/bench/sm_clock.h)
         for (int i = 0; i < o.warmup + o.timedFrames; ++i) {
-            if (i == o.warmup && !session.info.software) clock = querySmClockMhz();
+            if (i == o.warmup && !session.info.software) clockSampler.start();
             timer.beginFrame();
             for (const RasterFloors::Probe probe : RasterFloors::probes()) {
                 if (!floors.supports(probe)) continue;
@@ -85,8 +85,7 @@ int runRasterFloors(const RasterFloorsOptions& o) {
             if (i >= o.warmup)
                 for (const PassTime& t : times) samples[t.name].push_back(t.milliseconds);
         }
-        if (!session.info.software)
-            if (const auto end = querySmClockMhz()) clock = clock ? std::min(*clock, *end) : *end;
+        const std::optional<int> clock = session.info.software ? std::nullopt : clockSampler.stop();
         // Each probe, then the compute raster's own steps (timed inside it) as scene-compute.STEP.
         std::vector<std::pair<std::string, std::string>> rows;  // (probe column, sample name)
         for (const RasterFloors::Probe probe : RasterFloors::probes())

@@ -1,11 +1,42 @@
 #include "app/bench/sm_clock.h"
 
+#include <dlfcn.h>
+
+#include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <string>
 
 namespace ml::app {
+namespace {
 
-std::optional<int> querySmClockMhz() {
+// The four NVML entry points used, declared here: the driver ships the library, Debian main
+// ships no header for it (nvml.h: nvmlReturn_t 0 is NVML_SUCCESS, NVML_CLOCK_SM is 1).
+struct Nvml {
+    using Device = void*;
+    int (*init)() = nullptr;
+    int (*deviceByIndex)(unsigned, Device*) = nullptr;
+    int (*clockInfo)(Device, int, unsigned*) = nullptr;
+    Device gpu0 = nullptr;
+
+    static const Nvml* open() {
+        static const Nvml* nvml = [] () -> const Nvml* {
+            void* lib = dlopen("libnvidia-ml.so.1", RTLD_NOW | RTLD_LOCAL);
+            if (!lib) return nullptr;  // kept open for the process's life
+            static Nvml n;
+            n.init = reinterpret_cast<int (*)()>(dlsym(lib, "nvmlInit_v2"));
+            n.deviceByIndex = reinterpret_cast<int (*)(unsigned, Device*)>(dlsym(lib, "nvmlDeviceGetHandleByIndex_v2"));
+            n.clockInfo = reinterpret_cast<int (*)(Device, int, unsigned*)>(dlsym(lib, "nvmlDeviceGetClockInfo"));
+            if (!n.init || !n.deviceByIndex || !n.clockInfo || n.init() != 0 || n.deviceByIndex(0, &n.gpu0) != 0) return nullptr;
+            return &n;
+        }();
+        return nvml;
+    }
+};
+
+constexpr int kNvmlClockSm = 1;
+
+std::optional<int> nvidiaSmiSmClockMhz() {
     // stderr goes away with the shell's "command not found" where nvidia-smi is absent.
     FILE* pipe = popen("nvidia-smi --query-gpu=clocks.sm --format=csv,noheader,nounits -i 0 2>/dev/null", "r");
     if (!pipe) return std::nullopt;
@@ -21,6 +52,48 @@ std::optional<int> querySmClockMhz() {
     } catch (const std::exception&) {
         return std::nullopt;  // "[N/A]" and the like
     }
+}
+
+}  // namespace
+
+std::optional<int> querySmClockMhz() {
+    if (const Nvml* nvml = Nvml::open()) {
+        unsigned mhz = 0;
+        if (nvml->clockInfo(nvml->gpu0, kNvmlClockSm, &mhz) == 0 && mhz > 0) return static_cast<int>(mhz);
+        return std::nullopt;
+    }
+    return nvidiaSmiSmClockMhz();
+}
+
+SmClockSampler::~SmClockSampler() {
+    if (thread_.joinable()) stop();
+}
+
+void SmClockSampler::start() {
+    if (thread_.joinable()) stop();
+    lowest_.reset();
+    lateRead_.reset();
+    running_ = true;
+    thread_ = std::thread([this] {
+        while (true) {
+            const std::optional<int> mhz = querySmClockMhz();
+            const bool ended = !running_;
+            if (!mhz) return;  // nothing to read here (no NVIDIA GPU): no process starts every millisecond
+            if (!ended) {
+                lowest_ = lowest_ ? std::min(*lowest_, *mhz) : *mhz;
+            } else {
+                if (!lowest_) lateRead_ = mhz;
+                return;
+            }
+            std::this_thread::sleep_for(std::chrono::milliseconds(1));
+        }
+    });
+}
+
+std::optional<int> SmClockSampler::stop() {
+    running_ = false;
+    if (thread_.joinable()) thread_.join();
+    return lowest_ ? lowest_ : lateRead_;
 }
 
 }  // namespace ml::app
