@@ -1,27 +1,48 @@
 #!/usr/bin/env bash
-# Every GPU test binary on the H100 (nvidia-h100-x1), built from this commit (.devbin with
-# ml_gpu_tests, ml_corpus_tests and ml_fullsize_tests), and a check of bench's SM clock column
-# (read while the timed frames run) at the points whose clock the old reading caught idle.
-# Carry .devbin.txz, .gl and .corpus-all (../shared's corpus/ and compressed/). Everything lands
-# in $OUT/gpu-tests.tgz.
+# The GPU test binaries and the accuracy routine on the H100 (nvidia-h100-x1), built from this
+# commit (.devbin with ml_gpu_tests, ml_corpus_tests, ml_fullsize_tests), in two calls, since the
+# corpus and the tree do not travel together (64 MiB a call):
+#   run.sh amd      carry .devbin.txz .gl .corpus-amd (corpus/amd): ml_gpu_tests; the corpus
+#                   and full-size tiers' AMD frames; tools/gpu-accuracy on the built-in scenes,
+#                   Sponza and the gas station; bench's SM clock at four million lights
+#   run.sh khronos  carry .devbin.txz .gl .corpus-kh (khronos.txz: corpus/khronos, playcanvas,
+#                   compressed): the rest of both tiers and of the accuracy routine
+# Everything lands in $OUT/gpu-tests-PART.tgz.
 set -u
+PART=$1
 FINAL=$OUT
-OUT=/tmp/results/gpu-tests
+OUT=/tmp/results/gpu-tests-$PART
 mkdir -p $OUT/images
 [ -d .devbin ] || tar xJf .devbin.txz
 nvidia-smi --query-gpu=name,driver_version,clocks.sm,clocks.max.sm --format=csv > $OUT/gpu.txt
+CORPUS=$PWD/.corpus-$PART/corpus
+if [ $PART = khronos ]; then (cd .corpus-kh && tar xJf khronos.txz); fi
 # The paths the test binaries were built with: the executable and ../shared.
 mkdir -p /work/main/build-test /work/shared
 ln -sf $PWD/.devbin/manylights /work/main/build-test/manylights
-ln -sfn $PWD/.corpus-all/corpus /work/shared/corpus
-ln -sfn $PWD/.corpus-all/compressed /work/shared/compressed
+ln -sfn $CORPUS /work/shared/corpus
+[ $PART = khronos ] && ln -sfn $PWD/.corpus-kh/compressed /work/shared/compressed
 export LD_LIBRARY_PATH=$PWD/.devbin/lib ML_TEST_TMP=$OUT/images
-pack() { tar czf $FINAL/gpu-tests.tgz -C /tmp/results gpu-tests; }
-for t in ml_gpu_tests ml_corpus_tests ml_fullsize_tests; do
-  timeout 200 .devbin/$t 2>&1 | grep -v "^\[ RUN\|^\[--" > $OUT/$t.txt
-  echo "$t exit ${PIPESTATUS[0]}" >> $OUT/exits.txt
+pack() { tar czf $FINAL/gpu-tests-$PART.tgz -C /tmp/results gpu-tests-$PART; }
+gtest() {  # binary, filter
+  timeout 240 .devbin/$1 --gtest_filter="$2" 2>&1 | grep -v "^\[ RUN\|^\[--" > $OUT/$1.txt
+  echo "$1 exit ${PIPESTATUS[0]}" >> $OUT/exits.txt
   pack
-done
-B=".devbin/manylights bench --backend egl --warmup 5 --timed-frames 30 --method visibility --camera atrium-set --radius overlap:32"
-$B --lights 4194304 --size 3840x2160 --vis-raster compute --out $OUT --name clock-4m > $OUT/clock-4m.log 2>&1
+}
+if [ $PART = amd ]; then
+  gtest ml_gpu_tests '*'
+  gtest ml_corpus_tests '*sponza*:*Sponza*:*gas*:*Gas*'
+  gtest ml_fullsize_tests '*Sponza*:*GasStation*'
+  timeout 240 python3 tools/gpu-accuracy --manylights .devbin/manylights --corpus $CORPUS --out $OUT/accuracy > $OUT/accuracy.log 2>&1
+  echo "gpu-accuracy exit $?" >> $OUT/exits.txt
+  pack
+  B=".devbin/manylights bench --backend egl --warmup 5 --timed-frames 30 --method visibility --camera atrium-set --radius overlap:32"
+  $B --lights 4194304 --size 3840x2160 --vis-raster compute --out $OUT --name clock-4m > $OUT/clock-4m.log 2>&1
+else
+  gtest ml_corpus_tests '-*sponza*:*Sponza*:*gas*:*Gas*'
+  gtest ml_fullsize_tests '-*Sponza*:*GasStation*'
+  STEMS=$(find $CORPUS -name '*.gltf' -o -name '*.glb' | xargs -n1 basename | sed 's/\.gl[tb]f\?$//' | sort -u | paste -sd,)
+  timeout 420 python3 tools/gpu-accuracy --manylights .devbin/manylights --corpus $CORPUS --only "$STEMS" --out $OUT/accuracy > $OUT/accuracy.log 2>&1
+  echo "gpu-accuracy exit $?" >> $OUT/exits.txt
+fi
 pack
