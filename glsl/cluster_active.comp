@@ -9,6 +9,9 @@
 layout(local_size_x = ML_SCREEN_TILE, local_size_y = ML_SCREEN_TILE) in;
 layout(std430, binding = ML_SSBO_CLUSTER_ACTIVE) writeonly buffer ClusterActive { uint clusterActive[]; };
 
+// A depth this many float steps away from the stored one still marks (see main).
+const uint kDepthSteps = 4u;
+
 void main() {
     ivec2 p = ivec2(gl_GlobalInvocationID.xy);
     if (any(greaterThanEqual(p, depthSize()))) return;
@@ -16,6 +19,18 @@ void main() {
     // tile is the pixel centre's, as a fragment finds it from gl_FragCoord.
     for (int s = 0; s < ML_MSAA_SAMPLES; ++s) {
         float d = depthSample(p, s);
-        if (d < 1.0) clusterActive[clusterForFragment(vec2(p) + 0.5, viewDepthFromWindowDepth(d))] = 1u;
+        if (d >= 1.0) continue;
+        // Forward+ finds a fragment's slice from its interpolated world position, not from this
+        // stored depth: the two differ by the depth's rounding, a few of its float steps, which
+        // far from the camera is up to 1e-4 of the view depth. A fragment on a slice boundary
+        // then picked the unmarked neighbour and shaded with an empty list (14/255 off naive on
+        // the atrium at 128 log slices). So both ends of that interval are marked, with the
+        // relative nudge of the other sample markers (normal bins, transparent samples) on top;
+        // slices are far thicker than the interval, so no cluster lies between the two.
+        uint bits = floatBitsToUint(d);
+        float near = viewDepthFromWindowDepth(uintBitsToFloat(bits - min(bits, kDepthSteps))) * (1.0 - 1e-5);
+        float far = viewDepthFromWindowDepth(uintBitsToFloat(bits + kDepthSteps)) * (1.0 + 1e-5);
+        clusterActive[clusterForFragment(vec2(p) + 0.5, near)] = 1u;
+        clusterActive[clusterForFragment(vec2(p) + 0.5, far)] = 1u;
     }
 }

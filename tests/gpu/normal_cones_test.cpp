@@ -1,7 +1,11 @@
 // --normal-cones (Olsson et al. 2012): lists per (cluster, view-space normal bin) for the methods
 // that know a normal before they light (deferred, visibility). The test that drops a light from
-// a bin is conservative, so the images stay within the accuracy contract against naive; on the
-// atrium the bins remove light-cluster pairs. Forward+ ignores the setting.
+// a bin is conservative: a dropped light faces away from every sample of the bin and adds
+// exactly zero, so the frame is the one without the cones to the bit, in every G-buffer layout;
+// in the exact layout (the default) it is within the accuracy contract against naive too (the
+// lossy layouts are not: on an H100 the standard and packed ones were 3/255 off naive on two
+// pixels of the atrium, with and without the cones). On the atrium the bins remove
+// light-cluster pairs. Forward+ ignores the setting.
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -34,7 +38,7 @@ TEST_P(NormalCones, DeferredAndVisibilityMatchNaiveAndRemovePairs) {
         CullMode cull;
         const char* name;
         // The bins decode the normal as the lighting does, in every layout (include/gbuffer_fetch.glsl).
-        GBufferFormat gbuffer = GBufferFormat::Standard;
+        GBufferFormat gbuffer = GBufferFormat::Exact;
     };
     const Variant variants[] = {{MethodKind::Deferred, Resolve::Compute, AssignMode::Exact, CullMode::Aabb, "deferred/compute"},
                                 {MethodKind::Deferred, Resolve::Fragment, AssignMode::Exact, CullMode::Aabb, "deferred/fragment"},
@@ -44,7 +48,9 @@ TEST_P(NormalCones, DeferredAndVisibilityMatchNaiveAndRemovePairs) {
                                 {MethodKind::Deferred, Resolve::Compute, AssignMode::Exact, CullMode::Aabb, "deferred/compute packed",
                                  GBufferFormat::Packed},
                                 {MethodKind::Visibility, Resolve::Compute, AssignMode::Exact, CullMode::Aabb, "visibility packed",
-                                 GBufferFormat::Packed}};
+                                 GBufferFormat::Packed},
+                                {MethodKind::Visibility, Resolve::Compute, AssignMode::Exact, CullMode::Aabb, "visibility standard",
+                                 GBufferFormat::Standard}};
     for (const Variant& v : variants) {
         for (std::uint32_t tilesX : {16u, 40u}) {
             MethodSettings m;
@@ -54,11 +60,15 @@ TEST_P(NormalCones, DeferredAndVisibilityMatchNaiveAndRemovePairs) {
             m.clustering.grid = ClusterGridConfig{tilesX, 12, Slicing::Fitted, 64};
             m.clustering.assign = v.assign;
             m.clustering.cull = v.cull;
+            renderer.setMethod(m);
+            renderer.render(frame);
+            const FloatImage withoutCones = renderer.readHdr();
             m.clustering.normalCones = true;
             renderer.setMethod(m);
             renderer.render(frame);
             const std::string label = std::string(v.name) + " " + std::to_string(tilesX) + " across, normal cones";
-            expectWithinContract(renderer, reference, label, std::string(c.scene) + "-" + label);
+            EXPECT_TRUE(renderer.readHdr().pixels == withoutCones.pixels) << label << ": the cones changed the frame";
+            if (v.gbuffer == GBufferFormat::Exact) expectWithinContract(renderer, reference, label, std::string(c.scene) + "-" + label);
             const ClusterStatistics stats = renderer.method().clustering()->statistics();
             const std::uint64_t removed = stats.normalConePairs - stats.normalConePairsKept;
             std::printf("%-50s pairs %llu, removed %llu (%.1f %%)\n", "", static_cast<unsigned long long>(stats.normalConePairs),

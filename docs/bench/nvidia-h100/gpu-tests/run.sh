@@ -6,7 +6,9 @@
 #                   and full-size tiers' AMD frames; tools/gpu-accuracy on the built-in scenes,
 #                   Sponza and the gas station; bench's SM clock at four million lights
 #   run.sh khronos  carry .devbin.txz .gl .corpus-kh (khronos.txz: corpus/khronos, playcanvas,
-#                   compressed): the rest of both tiers and of the accuracy routine
+#                   compressed): the GPU tests the first call found failing, again (after their
+#                   fixes) or with the files they need; the rest of both tiers and of the
+#                   accuracy routine; Forward+ --active-only against naive (active-only.sh)
 # Everything lands in $OUT/gpu-tests-PART.tgz.
 set -u
 PART=$1
@@ -36,11 +38,14 @@ if [ $PART = amd ]; then
   timeout 240 python3 tools/gpu-accuracy --manylights .devbin/manylights --corpus $CORPUS --out $OUT/accuracy > $OUT/accuracy.log 2>&1
   echo "gpu-accuracy exit $?" >> $OUT/exits.txt
   pack
-  B=".devbin/manylights bench --backend egl --warmup 5 --timed-frames 30 --method visibility --camera atrium-set --radius overlap:32"
+  B=".devbin/manylights bench --backend egl --warmup 5 --timed-frames 30 --method visibility --camera atrium-set --light-radius overlap:32"
   $B --lights 4194304 --size 3840x2160 --vis-raster compute --out $OUT --name clock-4m > $OUT/clock-4m.log 2>&1
 else
+  gtest ml_gpu_tests '*NormalCones*:*ActiveOnly*:Msaa.*:VisibilityIds.*:FirstContact.*'
+  mv $OUT/ml_gpu_tests.txt $OUT/ml_gpu_tests-rerun.txt
   gtest ml_corpus_tests '-*sponza*:*Sponza*:*gas*:*Gas*'
   gtest ml_fullsize_tests '-*Sponza*:*GasStation*'
+  bash docs/bench/nvidia-h100/gpu-tests/active-only.sh $OUT; pack
   STEMS=$(find $CORPUS -name '*.gltf' -o -name '*.glb' | xargs -n1 basename | sed 's/\.gl[tb]f\?$//' | sort -u | paste -sd,)
   timeout 420 python3 tools/gpu-accuracy --manylights .devbin/manylights --corpus $CORPUS --only "$STEMS" --out $OUT/accuracy > $OUT/accuracy.log 2>&1
   echo "gpu-accuracy exit $?" >> $OUT/exits.txt
