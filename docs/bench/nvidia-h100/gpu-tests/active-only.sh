@@ -8,8 +8,8 @@ set -u
 D=$1
 mkdir -p $D/diffs
 M="env LD_LIBRARY_PATH=.devbin/lib .devbin/manylights"
-for size in 160x90 640x360 1280x720; do
-  for seed in 1 2 3 4 5 6; do
+for size in 160x90 1280x720; do
+  for seed in 1 2 4 5; do
     for frame in 0 45; do
       C="--scene atrium --lights 256 --seed $seed --size $size --frames $frame --drift-speed 0 --exposure 0 --backend egl"
       $M render $C --method naive --out /tmp/n.png > /dev/null 2>&1

@@ -47,7 +47,7 @@ else
   gtest ml_fullsize_tests '-*Sponza*:*GasStation*'
   bash docs/bench/nvidia-h100/gpu-tests/active-only.sh $OUT; pack
   STEMS=$(find $CORPUS -name '*.gltf' -o -name '*.glb' | xargs -n1 basename | sed 's/\.gl[tb]f\?$//' | sort -u | paste -sd,)
-  timeout 420 python3 tools/gpu-accuracy --manylights .devbin/manylights --corpus $CORPUS --only "$STEMS" --out $OUT/accuracy > $OUT/accuracy.log 2>&1
+  timeout 300 python3 tools/gpu-accuracy --manylights .devbin/manylights --corpus $CORPUS --only "$STEMS" --out $OUT/accuracy > $OUT/accuracy.log 2>&1
   echo "gpu-accuracy exit $?" >> $OUT/exits.txt
 fi
 pack
