@@ -9,7 +9,7 @@
 #                   compressed): the GPU tests the first call found failing, again (after their
 #                   fixes) or with the files they need; the rest of both tiers and of the
 #                   accuracy routine; Forward+ --active-only against naive (active-only.sh)
-# Everything lands in $OUT/gpu-tests-PART.tgz.
+# Everything lands in $OUT/gpu-tests-PART.tgz and $OUT/pictures-PART.tgz.
 set -u
 PART=$1
 FINAL=$OUT
@@ -25,7 +25,12 @@ ln -sf $PWD/.devbin/manylights /work/main/build-test/manylights
 ln -sfn $CORPUS /work/shared/corpus
 [ $PART = khronos ] && ln -sfn $PWD/.corpus-kh/compressed /work/shared/compressed
 export LD_LIBRARY_PATH=$PWD/.devbin/lib ML_TEST_TMP=$OUT/images
-pack() { tar czf $FINAL/gpu-tests-$PART.tgz -C /tmp/results gpu-tests-$PART; }
+# Text in one archive, pictures (failing tests' images, the worst frames) in another: at most
+# 16 MiB a file comes back.
+pack() {
+  tar czf $FINAL/gpu-tests-$PART.tgz -C /tmp/results --exclude=images --exclude=worst --exclude=diffs gpu-tests-$PART
+  tar czf $FINAL/pictures-$PART.tgz -C /tmp/results --exclude='*.csv' --exclude='*.json' --exclude='*.txt' --exclude='*.log' gpu-tests-$PART
+}
 gtest() {  # binary, filter
   timeout 240 .devbin/$1 --gtest_filter="$2" 2>&1 | grep -v "^\[ RUN\|^\[--" > $OUT/$1.txt
   echo "$1 exit ${PIPESTATUS[0]}" >> $OUT/exits.txt
