@@ -17,7 +17,7 @@ OUT=/tmp/results/gpu-tests-$PART
 mkdir -p $OUT/images
 [ -d .devbin ] || tar xJf .devbin.txz
 nvidia-smi --query-gpu=name,driver_version,clocks.sm,clocks.max.sm --format=csv > $OUT/gpu.txt
-CORPUS=$PWD/.corpus-$PART/corpus
+CORPUS=$PWD/.corpus-${PART:0:2}/corpus; [ $PART = amd ] && CORPUS=$PWD/.corpus-amd/corpus
 if [ $PART = khronos ]; then (cd .corpus-kh && tar xJf khronos.txz); fi
 # The paths the test binaries were built with: the executable and ../shared.
 mkdir -p /work/main/build-test /work/shared
