@@ -137,6 +137,7 @@ BenchRow configColumns(const BenchPoint& p, int index, std::uint32_t frame, cons
     row["timed_frames"] = run.timedFrames;
     row["clock"] = clockColumnValue(clock);
     row["sm_clock_mhz"] = nullptr;  // measured with the timed frames
+    row["sm_clock_mhz_min"] = nullptr;
     row["renderer"] = info.renderer;
     return row;
 }
@@ -264,8 +265,8 @@ void BenchRunner::measureInto(BenchRow& row, const BenchPoint& point) {
     // Warm-up: shader compilation (llvmpipe compiles on first draw) and first-use allocation.
     for (int i = 0; i < run_.warmupFrames; ++i) renderFrame(first + static_cast<std::uint32_t>(i));
 
-    // The SM clock, read while the timed frames run; the lowest read is the column, so a clock
-    // drop during the point shows. Not on llvmpipe: no NVIDIA clock there.
+    // The SM clock, read while the timed frames run (median and lowest read). Not on llvmpipe:
+    // no NVIDIA clock there.
     SmClockSampler smClockSampler;
     if (!info_.software) smClockSampler.start();
 
@@ -295,8 +296,9 @@ void BenchRunner::measureInto(BenchRow& row, const BenchPoint& point) {
         totals = walls;
         addNote(row, "the GPU timer queries gave no interval for some pass (seconds long): frame_ms is the wall clock");
     }
-    const std::optional<int> smClock = info_.software ? std::nullopt : smClockSampler.stop();
-    row["sm_clock_mhz"] = smClock ? nlohmann::ordered_json(*smClock) : nlohmann::ordered_json();
+    const std::optional<SmClockReading> smClock = info_.software ? std::nullopt : smClockSampler.stop();
+    row["sm_clock_mhz"] = smClock ? nlohmann::ordered_json(smClock->medianMhz) : nlohmann::ordered_json();
+    row["sm_clock_mhz_min"] = smClock ? nlohmann::ordered_json(smClock->lowestMhz) : nlohmann::ordered_json();
     const SampleSpread frame = spreadOf(totals);
     row["frame_ms"] = frame.median;
     row["frame_ms_p10"] = frame.p10;

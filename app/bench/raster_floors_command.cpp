@@ -85,7 +85,8 @@ int runRasterFloors(const RasterFloorsOptions& o) {
             if (i >= o.warmup)
                 for (const PassTime& t : times) samples[t.name].push_back(t.milliseconds);
         }
-        const std::optional<int> clock = session.info.software ? std::nullopt : clockSampler.stop();
+        const std::optional<SmClockReading> reading = session.info.software ? std::nullopt : clockSampler.stop();
+        const std::string clock = reading ? std::to_string(reading->medianMhz) : "";
         // Each probe, then the compute raster's own steps (timed inside it) as scene-compute.STEP.
         std::vector<std::pair<std::string, std::string>> rows;  // (probe column, sample name)
         for (const RasterFloors::Probe probe : RasterFloors::probes())
@@ -100,7 +101,7 @@ int runRasterFloors(const RasterFloorsOptions& o) {
                          camera.empty() ? "default" : camera.c_str(), settings.width, settings.height,
                          renderer.scene().triangleCount(), renderer.scene().drawCallsPerPass(), od.coveredPixels,
                          od.meanPerCoveredPixel(), probe.c_str(), s.median, s.p10, s.p90,
-                         clock ? std::to_string(*clock).c_str() : "", session.info.renderer.c_str());
+                         clock.c_str(), session.info.renderer.c_str());
         }
         std::fflush(out);
     }

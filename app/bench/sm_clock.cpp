@@ -71,7 +71,7 @@ SmClockSampler::~SmClockSampler() {
 
 void SmClockSampler::start() {
     if (thread_.joinable()) stop();
-    lowest_.reset();
+    reads_.clear();
     lateRead_.reset();
     running_ = true;
     thread_ = std::thread([this] {
@@ -79,21 +79,26 @@ void SmClockSampler::start() {
             const std::optional<int> mhz = querySmClockMhz();
             const bool ended = !running_;
             if (!mhz) return;  // nothing to read here (no NVIDIA GPU): no process starts every millisecond
-            if (!ended) {
-                lowest_ = lowest_ ? std::min(*lowest_, *mhz) : *mhz;
-            } else {
-                if (!lowest_) lateRead_ = mhz;
+            if (ended) {
+                if (reads_.empty()) lateRead_ = mhz;
                 return;
             }
+            reads_.push_back(*mhz);
             std::this_thread::sleep_for(std::chrono::milliseconds(1));
         }
     });
 }
 
-std::optional<int> SmClockSampler::stop() {
+std::optional<SmClockReading> SmClockSampler::stop() {
     running_ = false;
     if (thread_.joinable()) thread_.join();
-    return lowest_ ? lowest_ : lateRead_;
+    if (reads_.empty()) {
+        if (!lateRead_) return std::nullopt;
+        return SmClockReading{*lateRead_, *lateRead_};
+    }
+    std::vector<int> sorted = reads_;
+    std::sort(sorted.begin(), sorted.end());
+    return SmClockReading{sorted[sorted.size() / 2], sorted.front()};
 }
 
 }  // namespace ml::app

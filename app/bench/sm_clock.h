@@ -6,6 +6,7 @@
 #include <atomic>
 #include <optional>
 #include <thread>
+#include <vector>
 
 namespace ml::app {
 
@@ -14,10 +15,16 @@ namespace ml::app {
 // fallback, costs a process start (~0.1 s).
 std::optional<int> querySmClockMhz();
 
-// The lowest SM clock read while some frames run. A clock read after glFinish can catch the GPU
-// already back at its idle clock (an H100 read 345-600 MHz after four-million-light points whose
-// frame times matched 1980 MHz runs), so the clock is read on a thread while the GPU works,
-// every millisecond or so, and a read that ends after stop() is kept only if none ended before.
+// The SM clock read while some frames run: a read after glFinish can catch the GPU already back
+// at its idle clock, so the clock is read on a thread while the GPU works, about every
+// millisecond. The median of the reads is the clock most frames ran at (compare it with the
+// median frame time); the lowest shows a drop that some frames met (an H100 at four million
+// lights dipped to 345 MHz for a few frames of a point whose median frame ran at 1980).
+struct SmClockReading {
+    int medianMhz = 0;
+    int lowestMhz = 0;
+};
+
 class SmClockSampler {
 public:
     SmClockSampler() = default;
@@ -26,13 +33,14 @@ public:
     ~SmClockSampler();
 
     void start();
-    // The lowest clock read while running; nullopt where no clock can be read.
-    std::optional<int> stop();
+    // The reads that ended while running (or, where none did, the first that ended after);
+    // nullopt where no clock can be read.
+    std::optional<SmClockReading> stop();
 
 private:
     std::thread thread_;
     std::atomic<bool> running_{false};
-    std::optional<int> lowest_;       // reads that ended while running
+    std::vector<int> reads_;          // reads that ended while running
     std::optional<int> lateRead_;     // the first read that ended after stop()
 };
 

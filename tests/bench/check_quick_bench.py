@@ -22,7 +22,7 @@ import time
 
 REQUIRED = ["method", "lights", "radius", "width", "height", "tiles_x", "tiles_y", "slices", "slicing", "assign",
             "gbuffer", "resolve", "workgroup", "frame_ms", "frame_ms_p10", "frame_ms_p90", "max_abs_err", "rmse",
-            "psnr_db", "bad_pixel_share", "dropped_lights", "renderer", "sm_clock_mhz"]
+            "psnr_db", "bad_pixel_share", "dropped_lights", "renderer", "sm_clock_mhz", "sm_clock_mhz_min"]
 CHARTS = ["frame_time_vs_lights", "time_vs_error", "pass_breakdown", "workgroup", "tiles_by_cap", "cluster_occupancy",
           "slicing", "memory"]
 
@@ -64,8 +64,9 @@ def check_csv(path):
         pass_sum = sum(num(r[c]) or 0.0 for c in passes)
         check(pass_sum > 0, "point %s: no pass time" % r["point"])
         check(r["renderer"] != "", "point %s: empty renderer" % r["point"])
-        check(r["sm_clock_mhz"] == "", "point %s: an SM clock (%s) on llvmpipe, which has no nvidia-smi"
-              % (r["point"], r["sm_clock_mhz"]))
+        for column in ("sm_clock_mhz", "sm_clock_mhz_min"):
+            check(r[column] == "", "point %s: an SM clock (%s: %s) on llvmpipe, which has no NVIDIA clock"
+                  % (r["point"], column, r[column]))
         check(int(r["width"]) > 0 and int(r["height"]) > 0 and num(r["radius"]) > 0, "point %s: bad size or radius" % r["point"])
 
     # Accuracy: exact methods match naive; capped lists that drop light references do not.
