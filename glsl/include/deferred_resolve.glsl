@@ -20,7 +20,7 @@ bool resolveSurface(ivec2 p, out ResolvedPixel px) {
     GBufferTexel texel = fetchGBuffer(p);
 #if ML_GBUFFER_STORES_POSITION
     // Shaded at the stored point; the cluster still comes from depth, as the grid was built.
-    px.surface.position = u_cameraPos.xyz + mat3(u_invView) * gbufferViewPosition(texel, vec2(p) + 0.5);
+    px.surface.position = gbufferPosition(texel, vec2(p) + 0.5);
 #else
     px.surface.position = u_cameraPos.xyz + mat3(u_invView) * viewPos.xyz;
 #endif

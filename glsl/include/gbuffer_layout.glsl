@@ -92,8 +92,9 @@ vec3 unpackRgb9e5(uint v) {
 // Does the layout hold the position (else it comes back from depth)?
 #define ML_GBUFFER_STORES_POSITION (ML_GBUFFER_FORMAT == ML_GBUFFER_EXACT)
 
-// The stored point in view space, on the ray through window position windowPos.
-vec3 gbufferViewPosition(GBufferTexel t, vec2 windowPos) { return pixelRayView(windowPos) * t.target[0].x; }
+// The stored point in world space, on the ray through window position windowPos: the surface's
+// position to the bit (pixel_ray.glsl).
+vec3 gbufferPosition(GBufferTexel t, vec2 windowPos) { return pixelRayPoint(windowPos, t.target[0].x); }
 
 GBufferTexel encodeGBuffer(SurfacePoint s) {
     GBufferTexel t;
@@ -101,7 +102,7 @@ GBufferTexel encodeGBuffer(SurfacePoint s) {
     t.bits = uvec4(0u);
 #if ML_GBUFFER_FORMAT == ML_GBUFFER_EXACT || ML_GBUFFER_FORMAT == ML_GBUFFER_STANDARD
 #if ML_GBUFFER_FORMAT == ML_GBUFFER_EXACT
-    t.target[0] = vec4(length(s.position - u_cameraPos.xyz), octEncode(s.normal), s.occlusion);
+    t.target[0] = vec4(s.rayDistance, octEncode(s.normal), s.occlusion);
 #else
     t.target[0] = vec4(s.normal, s.occlusion);
 #endif

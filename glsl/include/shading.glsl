@@ -63,6 +63,7 @@ float lightFalloff(float d, float radius, float intensity) {
 
 struct SurfacePoint {
     vec3 position;   // world space
+    float rayDistance;  // from the eye along the pixel-centre ray to position (triangle_surface.glsl)
     vec3 normal;     // world space, unit length, after any normal map
     // The material at this point, after its textures: what the G-buffer stores.
     vec3 baseColor;  // linear

@@ -30,23 +30,18 @@ vec2 vertexUv(uint v) { return vec2(vertexData[8u * v + 6u], vertexData[8u * v +
 
 #include "include/pixel_ray.glsl"
 
-// World-space ray through a window position.
-void pixelRay(vec2 windowPos, out vec3 origin, out vec3 direction) {
-    origin = u_cameraPos.xyz;
-    direction = normalize(mat3(u_invView) * pixelRayView(windowPos));
-}
-
-// Barycentrics (b1, b2) of the ray's hit on the triangle's plane (Moller-Trumbore, unclipped).
-vec2 rayBarycentrics(vec3 origin, vec3 direction, vec3 p0, vec3 p1, vec3 p2) {
+// Barycentrics (b1, b2) of the ray's hit on the triangle's plane and the distance t along the
+// (unit) ray to it (Moller-Trumbore, unclipped).
+vec3 rayHit(vec3 origin, vec3 direction, vec3 p0, vec3 p1, vec3 p2) {
     vec3 e1 = p1 - p0, e2 = p2 - p0;
     vec3 pv = cross(direction, e2);
     float det = dot(e1, pv);
-    if (abs(det) < 1e-20) return vec2(1.0 / 3.0);
+    if (abs(det) < 1e-20) return vec3(1.0 / 3.0, 1.0 / 3.0, dot(p0 - origin, direction));
     float inv = 1.0 / det;
     vec3 tv = origin - p0;
     vec3 qv = cross(tv, e1);
-    precise vec2 b = vec2(dot(tv, pv), dot(direction, qv)) * inv;
-    return b;
+    precise vec3 bt = vec3(dot(tv, pv), dot(direction, qv), dot(e2, qv)) * inv;
+    return bt;
 }
 
 // A vertex attribute at the pixel centre (w) and its differences across the pixel's 2x2 quad
@@ -70,6 +65,7 @@ struct TriangleHit {
     vec3 p0, p1, p2;
     vec3 w;
     vec3 wq[3];
+    float t;  // distance along the pixel-centre ray
 };
 
 TriangleHit triangleHit(uint triangle, ivec2 p, bool gradients) {
@@ -82,14 +78,15 @@ TriangleHit triangleHit(uint triangle, ivec2 p, bool gradients) {
     h.p2 = vertexPosition(h.i2);
     vec3 origin, direction;
     pixelRay(vec2(p) + 0.5, origin, direction);
-    vec2 b = rayBarycentrics(origin, direction, h.p0, h.p1, h.p2);
-    h.w = vec3(1.0 - b.x - b.y, b.x, b.y);
+    vec3 bt = rayHit(origin, direction, h.p0, h.p1, h.p2);
+    h.w = vec3(1.0 - bt.x - bt.y, bt.x, bt.y);
+    h.t = bt.z;
     h.wq = vec3[3](h.w, h.w, h.w);
     if (gradients) {
         vec2 quad = vec2(p & ~1) + 0.5;
         for (int k = 0; k < 3; ++k) {
             pixelRay(quad + vec2(k == 1 ? 1.0 : 0.0, k == 2 ? 1.0 : 0.0), origin, direction);
-            vec2 bq = rayBarycentrics(origin, direction, h.p0, h.p1, h.p2);
+            vec2 bq = rayHit(origin, direction, h.p0, h.p1, h.p2).xy;
             h.wq[k] = vec3(1.0 - bq.x - bq.y, bq.x, bq.y);
         }
     }
@@ -128,7 +125,8 @@ float triangleAlpha(uint triangle, Material m, ivec2 p) {
 }
 
 // The surface of `triangle` (material m) seen through pixel p, and its base colour's alpha.
-// The position is the vertices' interpolation at the pixel centre, as a rasterizer's varying.
+// The position is the ray's hit (pixel_ray.glsl's pixelRayPoint, which the exact G-buffer layout
+// rebuilds to the bit); the rest is the vertices' interpolation there, as a rasterizer's varyings.
 SurfacePoint triangleSurface(uint triangle, Material m, ivec2 p, out float alpha) {
     TriangleHit h = triangleHit(triangle, p, m.info.z != 0u);
     vec3 w = h.w;
@@ -139,8 +137,10 @@ SurfacePoint triangleSurface(uint triangle, Material m, ivec2 p, out float alpha
     tangent = w.x * vertexTangent[h.i0] + w.y * vertexTangent[h.i1] + w.z * vertexTangent[h.i2];
 #endif
     vec3 normal = w.x * vertexNormal(h.i0) + w.y * vertexNormal(h.i1) + w.z * vertexNormal(h.i2);
-    vec3 position = w.x * h.p0 + w.y * h.p1 + w.z * h.p2;
+    vec3 position = pixelRayPoint(vec2(p) + 0.5, h.t);
     vec4 base = materialBaseColor(m, c, color);
     alpha = clamp(base.a, 0.0, 1.0);
-    return surfaceFromMaterial(m, position, normal, tangent, base, c);
+    SurfacePoint s = surfaceFromMaterial(m, position, normal, tangent, base, c);
+    s.rayDistance = h.t;
+    return s;
 }
