@@ -296,7 +296,7 @@ void BenchRunner::measureInto(BenchRow& row, const BenchPoint& point) {
         totals = walls;
         addNote(row, "the GPU timer queries gave no interval for some pass (seconds long): frame_ms is the wall clock");
     }
-    const std::optional<SmClockReading> smClock = info_.software ? std::nullopt : smClockSampler.stop();
+    const std::optional<SmClockReading> smClock = smClockSampler.stop();  // nullopt where never started
     row["sm_clock_mhz"] = smClock ? nlohmann::ordered_json(smClock->medianMhz) : nlohmann::ordered_json();
     row["sm_clock_mhz_min"] = smClock ? nlohmann::ordered_json(smClock->lowestMhz) : nlohmann::ordered_json();
     const SampleSpread frame = spreadOf(totals);

@@ -85,7 +85,7 @@ int runRasterFloors(const RasterFloorsOptions& o) {
             if (i >= o.warmup)
                 for (const PassTime& t : times) samples[t.name].push_back(t.milliseconds);
         }
-        const std::optional<SmClockReading> reading = session.info.software ? std::nullopt : clockSampler.stop();
+        const std::optional<SmClockReading> reading = clockSampler.stop();  // nullopt where never started
         const std::string clock = reading ? std::to_string(reading->medianMhz) : "";
         // Each probe, then the compute raster's own steps (timed inside it) as scene-compute.STEP.
         std::vector<std::pair<std::string, std::string>> rows;  // (probe column, sample name)

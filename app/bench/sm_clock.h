@@ -34,7 +34,7 @@ public:
 
     void start();
     // The reads that ended while running (or, where none did, the first that ended after);
-    // nullopt where no clock can be read.
+    // nullopt where no clock can be read or start() never ran.
     std::optional<SmClockReading> stop();
 
 private:
