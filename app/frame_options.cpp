@@ -97,7 +97,7 @@ void addFrameOptions(CLI::App& cmd, FrameOptions& o) {
     grid->add_option("--cull", o.cull, "light-vs-cluster test: aabb (sphere vs the cluster's AABB), sphere (vs its frustum planes), cone (seed 001's spherical-sliced cone)")->capture_default_str();
     grid->add_flag("--normal-cones", o.normalCones, "deferred and visibility: lists per (cluster, view-space normal bin), skipping lights behind every surface of a cluster (Olsson et al. 2012)");
     grid->add_option("--vis-raster", o.visRaster,
-                     "visibility's raster: auto (hardware for now), hardware, compute (by compute shaders; 64-bit atomics where "
+                     "visibility's raster: auto (hardware), hardware, compute (by compute shaders; 64-bit atomics where "
                      "the GPU has them), compute-two-pass (32-bit atomics, as without them)")
         ->capture_default_str();
     grid->add_option("--resolve", o.resolve, "deferred lighting pass: compute or fragment")->capture_default_str();

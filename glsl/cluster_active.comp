@@ -4,6 +4,7 @@
 #include "include/bindings.h"
 #include "include/frame_uniforms.glsl"
 #include "include/cluster_grid.glsl"
+#include "include/window_depth.glsl"
 #include "include/depth_samples.glsl"
 
 layout(local_size_x = ML_SCREEN_TILE, local_size_y = ML_SCREEN_TILE) in;
@@ -19,17 +20,18 @@ void main() {
     // tile is the pixel centre's, as a fragment finds it from gl_FragCoord.
     for (int s = 0; s < ML_MSAA_SAMPLES; ++s) {
         float d = depthSample(p, s);
-        if (d >= 1.0) continue;
+        if (isBackgroundDepth(d)) continue;
         // Forward+ finds a fragment's slice from its interpolated world position, not from this
-        // stored depth: the two differ by the depth's rounding, a few of its float steps, which
-        // far from the camera is up to 1e-4 of the view depth. A fragment on a slice boundary
+        // stored depth: the two differ by the depth's rounding, a few of its float steps (with
+        // the depth not yet reversed, up to 1e-4 of the view depth far from the camera). A fragment on a slice boundary
         // then picked the unmarked neighbour and shaded with an empty list (14/255 off naive on
         // the atrium at 128 log slices). So both ends of that interval are marked, with the
         // relative nudge of the other sample markers (normal bins, transparent samples) on top;
         // slices are far thicker than the interval, so no cluster lies between the two.
         uint bits = floatBitsToUint(d);
-        float near = viewDepthFromWindowDepth(uintBitsToFloat(bits - min(bits, kDepthSteps))) * (1.0 - 1e-5);
-        float far = viewDepthFromWindowDepth(uintBitsToFloat(bits + kDepthSteps)) * (1.0 + 1e-5);
+        float a = viewDepthFromWindowDepth(uintBitsToFloat(bits - min(bits, kDepthSteps)));
+        float b = viewDepthFromWindowDepth(uintBitsToFloat(bits + kDepthSteps));
+        float near = min(a, b) * (1.0 - 1e-5), far = max(a, b) * (1.0 + 1e-5);
         clusterActive[clusterForFragment(vec2(p) + 0.5, near)] = 1u;
         clusterActive[clusterForFragment(vec2(p) + 0.5, far)] = 1u;
     }

@@ -6,6 +6,7 @@
 #include "include/frame_uniforms.glsl"
 #define ML_CLUSTER_GRID_WRITABLE
 #include "include/cluster_grid.glsl"
+#include "include/window_depth.glsl"
 #include "include/depth_samples.glsl"
 
 layout(local_size_x = ML_SCREEN_TILE, local_size_y = ML_SCREEN_TILE) in;
@@ -43,7 +44,7 @@ void main() {
             if (any(greaterThanEqual(p, size))) continue;
             for (int s = 0; s < ML_MSAA_SAMPLES; ++s) {
                 float d = depthSample(p, s);
-                if (d < 1.0) {
+                if (!isBackgroundDepth(d)) {
                     uint bits = floatBitsToUint(viewDepthFromWindowDepth(d));
                     lo = min(lo, bits);
                     hi = max(hi, bits);

@@ -9,6 +9,7 @@
 #include "include/bindings.h"
 #include "include/frame_uniforms.glsl"
 #include "include/cluster_grid.glsl"
+#include "include/window_depth.glsl"
 #include "include/normal_bins.glsl"
 #include "include/normal_bin_marking.glsl"
 #include "include/shading.glsl"
@@ -21,10 +22,8 @@ void main() {
     ivec2 p = ivec2(gl_GlobalInvocationID.xy);
     if (any(greaterThanEqual(p, ivec2(u_viewport.xy)))) return;
     float depth = texelFetch(u_depth, p, 0).r;
-    if (depth >= 1.0) return;
-    vec2 ndc = (vec2(p) + 0.5) * u_viewport.zw * 2.0 - 1.0;
-    vec4 viewPos = u_invProj * vec4(ndc, depth * 2.0 - 1.0, 1.0);
-    viewPos /= viewPos.w;
+    if (isBackgroundDepth(depth)) return;
+    vec3 viewPos = viewPositionAtWindow(vec2(p) + 0.5, depth);
     SurfacePoint s;  // the normal decoded as the resolve decodes it, in every --gbuffer layout
     s.position = vec3(0.0);  // decodeGBuffer fills the rest; the bins need no position
     decodeGBuffer(fetchGBuffer(p), s);

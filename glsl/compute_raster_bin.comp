@@ -10,6 +10,7 @@
 #endif
 #include "include/bindings.h"
 #include "include/frame_uniforms.glsl"
+#include "include/window_depth.glsl"
 #include "include/compute_raster.glsl"
 
 layout(local_size_x = 64) in;

@@ -1,13 +1,14 @@
 #version 450 core
 // The compute raster's last pass (renderer/passes/compute_raster.h): each pixel's nearest
 // triangle to the visibility buffer's id target (index + 1; 0 background) and its depth to an
-// R32F target (1 where nothing was drawn), and the store reset for the next frame.
+// R32F target (0 where nothing was drawn), and the store reset for the next frame.
 #extension GL_ARB_gpu_shader_int64 : require
 #if ML_RASTER_ATOMIC64
 #extension GL_NV_shader_atomic_int64 : require
 #endif
 #include "include/bindings.h"
 #include "include/frame_uniforms.glsl"
+#include "include/window_depth.glsl"
 #include "include/compute_raster.glsl"
 
 layout(local_size_x = ML_SCREEN_TILE, local_size_y = ML_SCREEN_TILE) in;
@@ -21,13 +22,13 @@ void main() {
 #if ML_RASTER_ATOMIC64
     uvec2 word = unpackUint2x32(depthIds[at]);
     depthIds[at] = ~0ul;
-    uint triangle = word.x, depthBits = word.y;
+    uint triangle = word.x, key = word.y;
 #else
-    uint depthBits = depthIds[at], triangle = depthIds[rasterPixelCount() + at];
+    uint key = depthIds[at], triangle = depthIds[rasterPixelCount() + at];
     depthIds[at] = ~0u;
     depthIds[rasterPixelCount() + at] = ~0u;
 #endif
-    bool drawn = depthBits != ~0u;
+    bool drawn = key != ~0u;
     imageStore(u_ids, p, uvec4(drawn ? triangle + 1u : 0u));
-    imageStore(u_depth, p, vec4(drawn ? uintBitsToFloat(depthBits) : 1.0));
+    imageStore(u_depth, p, vec4(rasterKeyDepth(key)));  // the background's key gives depth 0
 }

@@ -7,6 +7,7 @@
 #endif
 #include "include/bindings.h"
 #include "include/frame_uniforms.glsl"
+#include "include/window_depth.glsl"
 #include "include/compute_raster.glsl"
 
 layout(local_size_x = ML_RASTER_TILE, local_size_y = ML_RASTER_TILE) in;

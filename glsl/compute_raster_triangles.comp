@@ -12,6 +12,7 @@
 #endif
 #include "include/bindings.h"
 #include "include/frame_uniforms.glsl"
+#include "include/window_depth.glsl"
 #include "include/compute_raster.glsl"
 
 layout(local_size_x = ML_RASTER_WORKGROUP) in;
@@ -106,7 +107,7 @@ void main() {
     // Wholly outside one clip plane: nothing to draw (and nothing for the hardware either).
     if ((c0.x > c0.w && c1.x > c1.w && c2.x > c2.w) || (c0.x < -c0.w && c1.x < -c1.w && c2.x < -c2.w) ||
         (c0.y > c0.w && c1.y > c1.w && c2.y > c2.w) || (c0.y < -c0.w && c1.y < -c1.w && c2.y < -c2.w) ||
-        (c0.z > c0.w && c1.z > c1.w && c2.z > c2.w) || (c0.z < -c0.w && c1.z < -c1.w && c2.z < -c2.w))
+        (c0.z > c0.w && c1.z > c1.w && c2.z > c2.w) || (c0.z < 0.0 && c1.z < 0.0 && c2.z < 0.0))
         return;
     if (c0.w <= 0.0 || c1.w <= 0.0 || c2.w <= 0.0) {
         // Where the GPU clips at the viewport, to the hardware (see below); else unclipped, as
@@ -156,7 +157,7 @@ void main() {
                 int e1 = -c.x * (py - c.y) + c.y * (px - c.x);
                 if (e0 + bias0 <= 0 || e1 + bias1 <= 0 || e2 + bias2 <= 0) continue;
                 float depth = rasterDepth(t, float(e0), float(e1), float(e2));
-                if (depth >= 0.0 && depth < 1.0) rasterStore(ivec2(x, y), depth, triangle);
+                if (isVisibleDepth(depth)) rasterStore(ivec2(x, y), depth, triangle);
             }
         }
         return;

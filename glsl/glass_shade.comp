@@ -74,7 +74,8 @@ void storeColor(uint k, vec4 c) {
     glassWords[w + 3u] = bits.w;
 }
 
-bool nearerThan(uvec2 a, uvec2 b) { return a.x < b.x || (a.x == b.x && a.y < b.y); }
+// Reversed depth (include/window_depth.glsl): the nearer fragment has the greater depth, and bits.
+bool nearerThan(uvec2 a, uvec2 b) { return a.x > b.x || (a.x == b.x && a.y < b.y); }
 
 // Insertion sort: a pixel holds a few fragments, mostly captured near-sorted already.
 void sortFragments(uint begin, uint end) {

@@ -28,6 +28,7 @@
 #include "include/scene_fragment.glsl"
 
 #if ML_COMPUTE_RASTER
+#include "include/window_depth.glsl"
 #include "include/compute_raster.glsl"
 #if ML_RASTER_HARDWARE_LIST
 uniform uint u_cullBackFaces;
@@ -52,7 +53,7 @@ void main() {
     // The hardware's own depth: the compute raster's plane at the pixel (which would make ties
     // with compute-rastered surfaces resolve alike) matched the hardware raster's ids worse on
     // Sponza, on llvmpipe and on the H100, since the hardware computes its depth its own way.
-    if (gl_FragCoord.z < 1.0) rasterStore(ivec2(gl_FragCoord.xy), gl_FragCoord.z, fragmentTriangle());
+    if (isVisibleDepth(gl_FragCoord.z)) rasterStore(ivec2(gl_FragCoord.xy), gl_FragCoord.z, fragmentTriangle());
 #else
     uint id = v_firstTriangle + uint(gl_PrimitiveID) + 1u;
 #if ML_ALPHA_TEST

@@ -13,6 +13,7 @@
 #include "include/frame_uniforms.glsl"
 #include "include/lights.glsl"
 #include "include/cluster_grid.glsl"
+#include "include/window_depth.glsl"
 #include "include/spot_cone.glsl"
 #define ML_ZBIN_WRITABLE
 #include "include/zbin.glsl"
@@ -73,12 +74,8 @@ void main() {
 }
 
 #elif defined(ML_ZBIN_TILE_MASKS)
-// View-space direction through a pixel-space point (on the plane z = -1 after dividing).
-vec3 viewRay(vec2 px) {
-    vec2 ndc = px * u_viewport.zw * 2.0 - 1.0;
-    vec4 v = u_invProj * vec4(ndc, -1.0, 1.0);
-    return v.xyz / v.w;
-}
+// View-space direction through a pixel-space point (its point on the near plane).
+vec3 viewRay(vec2 px) { return viewPositionAtWindow(px, 1.0); }
 
 // Does a spot's sector reach the inner side of every plane (through the eye, unit normals
 // pointing in)? Its support along each normal, with slack. Always true for a point light.
@@ -137,7 +134,7 @@ void main() {
     if (all(lessThan(p, ivec2(u_viewport.xy)))) {
         for (int i = 0; i < ML_MSAA_SAMPLES; ++i) {
             float depth = depthSample(p, i);
-            if (depth >= 1.0) continue;
+            if (isBackgroundDepth(depth)) continue;
             float viewDepth = viewDepthFromWindowDepth(depth);
             uvec2 t = tileForPixel(vec2(p) + 0.5);
             uvec2 range = zbinRanges[zbinForDepth(viewDepth)];

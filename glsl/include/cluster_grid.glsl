@@ -56,9 +56,3 @@ vec4 clusterTileNdc(uvec2 tile) {
     vec2 p1 = min(vec2(tile + 1u) * grid.tile.x, u_viewport.xy);
     return vec4(p0, p1) / u_viewport.xyxy * 2.0 - 1.0;
 }
-
-// Positive view-space distance of a depth-buffer value (window depth in [0, 1]).
-float viewDepthFromWindowDepth(float windowDepth) {
-    vec4 v = u_invProj * vec4(0.0, 0.0, windowDepth * 2.0 - 1.0, 1.0);
-    return -v.z / v.w;
-}

@@ -7,15 +7,18 @@
 // covered where its centre lies strictly inside all three edges, or on an edge the fill rule
 // owns (ML_RASTER_EDGE_RULE: 0 top-left, 1 bottom-left, in GL's y-up window coordinates), so two
 // triangles that share an edge cover each pixel on it once. Depth is the window depth's plane
-// at the pixel centre, clipped to [0, 1) as the near and far planes and the depth clear would.
+// at the pixel centre, clipped to (0, 1] as the far and near planes and the depth clear would
+// (the depth is reversed: include/window_depth.glsl).
 //
 // The store keeps, per pixel, the nearest depth and on equal depths the smallest triangle id,
-// which is the first drawn: what GL_LESS in draw order keeps. Where the GPU has 64-bit atomics
-// (ML_RASTER_ATOMIC64) depth and id are one word, resolved by one atomicMin; otherwise two
-// passes: the depth's bits first (ML_RASTER_PASS 0), then the id where the depth matches
-// (ML_RASTER_PASS 1). Non-negative floats order as their bits, so both compare as integers.
-// Needs frame_uniforms.glsl; the file must enable GL_ARB_gpu_shader_int64 (and with
-// ML_RASTER_ATOMIC64, GL_NV_shader_atomic_int64).
+// which is the first drawn: what the depth test (GL_GREATER) in draw order keeps. It holds each
+// depth as a key that grows with distance: the depth's bits inverted (non-negative floats order
+// as their bits), so the nearest is the smallest key, and the reset value, every bit set, is the
+// key of the background's depth 0. Where the GPU has 64-bit atomics (ML_RASTER_ATOMIC64) key and
+// id are one word, resolved by one atomicMin; otherwise two passes: the key first
+// (ML_RASTER_PASS 0), then the id where the key matches (ML_RASTER_PASS 1).
+// Needs frame_uniforms.glsl and window_depth.glsl; the file must enable
+// GL_ARB_gpu_shader_int64 (and with ML_RASTER_ATOMIC64, GL_NV_shader_atomic_int64).
 
 // The program sets these (renderer/passes/compute_raster.cpp); the defaults let the build validate it.
 #ifndef ML_SUBPIXEL_BITS
@@ -43,17 +46,21 @@ layout(std430, binding = ML_SSBO_RASTER_DEPTH_IDS) coherent buffer RasterDepthId
 
 uint rasterPixelCount() { return uint(u_viewport.x) * uint(u_viewport.y); }
 
+// A depth's key in the store (smaller: nearer), and back.
+uint rasterDepthKey(float depth) { return ~floatBitsToUint(depth); }
+float rasterKeyDepth(uint key) { return uintBitsToFloat(~key); }
+
 // Keeps (depth, triangle) at the pixel where it is nearer than what is there (ties: smaller id).
 void rasterStore(ivec2 pixel, float depth, uint triangle) {
     uint at = uint(pixel.y) * uint(u_viewport.x) + uint(pixel.x);
 #if ML_RASTER_ATOMIC64
-    uint64_t word = packUint2x32(uvec2(triangle, floatBitsToUint(depth)));
+    uint64_t word = packUint2x32(uvec2(triangle, rasterDepthKey(depth)));
     if (word < depthIds[at]) atomicMin(depthIds[at], word);
 #elif ML_RASTER_PASS == 0
-    uint bits = floatBitsToUint(depth);
-    if (bits < depthIds[at]) atomicMin(depthIds[at], bits);
+    uint key = rasterDepthKey(depth);
+    if (key < depthIds[at]) atomicMin(depthIds[at], key);
 #else
-    if (depthIds[at] == floatBitsToUint(depth)) atomicMin(depthIds[rasterPixelCount() + at], triangle);
+    if (depthIds[at] == rasterDepthKey(depth)) atomicMin(depthIds[rasterPixelCount() + at], triangle);
 #endif
 }
 
@@ -63,11 +70,11 @@ void rasterStore(ivec2 pixel, float depth, uint triangle) {
 bool rasterHidden(ivec2 pixel, float depth) {
     uint at = uint(pixel.y) * uint(u_viewport.x) + uint(pixel.x);
 #if ML_RASTER_ATOMIC64
-    return unpackUint2x32(depthIds[at]).y < floatBitsToUint(depth);
+    return unpackUint2x32(depthIds[at]).y < rasterDepthKey(depth);
 #elif ML_RASTER_PASS == 0
-    return depthIds[at] < floatBitsToUint(depth);
+    return depthIds[at] < rasterDepthKey(depth);
 #else
-    return depthIds[at] != floatBitsToUint(depth);
+    return depthIds[at] != rasterDepthKey(depth);
 #endif
 }
 
@@ -118,7 +125,7 @@ void rasterWindow(vec4 c0, vec4 c1, vec4 c2, out vec2 s0, out vec2 s1, out vec2 
     vec2 half_ = 0.5 * u_viewport.xy;
     precise vec3 w0 = c0.xyz / c0.w, w1 = c1.xyz / c1.w, w2 = c2.xyz / c2.w;
     precise vec2 p0 = w0.xy * half_ + half_, p1 = w1.xy * half_ + half_, p2 = w2.xy * half_ + half_;
-    precise vec3 depth = vec3(w0.z, w1.z, w2.z) * 0.5 + 0.5;
+    precise vec3 depth = vec3(w0.z, w1.z, w2.z);  // clip depth in [0, 1] is the window depth
     s0 = p0;
     s1 = p1;
     s2 = p2;
@@ -167,7 +174,7 @@ bool rasterCovers64(RasterTriangle t, ivec2 pixel, out float depth) {
         e2 + (ownsEdge(t.v0, t.v1) ? 1l : 0l) <= 0l)
         return false;
     depth = rasterDepth(t, float(e0), float(e1), float(e2));
-    return depth >= 0.0 && depth < 1.0;
+    return isVisibleDepth(depth);
 }
 
 // A triangle that crosses the eye plane, rastered without clipping (Olano and Greer's homogeneous
@@ -214,7 +221,7 @@ bool rasterHomogeneous(vec4 c0, vec4 c1, vec4 c2, out ClippedTriangle t, out boo
 // The window depth of the triangle's plane at a pixel centre, as the planes give it.
 float rasterClippedDepth(ClippedTriangle t, ivec2 pixel) {
     vec3 p = vec3(vec2(pixel) + 0.5, 1.0);
-    precise float z = 0.5 * dot(t.depthNumerator, p) / dot(t.depthDenominator, p) + 0.5;
+    precise float z = dot(t.depthNumerator, p) / dot(t.depthDenominator, p);
     return z;
 }
 
@@ -227,5 +234,5 @@ bool rasterCoversClipped(ClippedTriangle t, ivec2 pixel, out float depth) {
         return false;
     if (!(dot(t.depthDenominator, p) > 0.0)) return false;
     depth = rasterClippedDepth(t, pixel);
-    return depth >= 0.0 && depth < 1.0;
+    return isVisibleDepth(depth);
 }

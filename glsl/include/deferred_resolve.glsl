@@ -1,6 +1,7 @@
 // Clustered deferred lighting of one pixel from the G-buffer, shared by the full-screen
 // fragment resolve and the compute resolve. Position is rebuilt from depth; the rest is
 // decoded from the --gbuffer layout (gbuffer_layout.glsl, read by gbuffer_fetch.glsl).
+#include "include/window_depth.glsl"
 
 // What the light loop needs to know of a pixel.
 struct ResolvedPixel {
@@ -13,16 +14,14 @@ struct ResolvedPixel {
 // False for background pixels (nothing was drawn there).
 bool resolveSurface(ivec2 p, out ResolvedPixel px) {
     float depth = texelFetch(u_depth, p, 0).r;
-    if (depth >= 1.0) return false;
-    vec2 ndc = (vec2(p) + 0.5) * u_viewport.zw * 2.0 - 1.0;
-    vec4 viewPos = u_invProj * vec4(ndc, depth * 2.0 - 1.0, 1.0);
-    viewPos /= viewPos.w;
+    if (isBackgroundDepth(depth)) return false;
+    vec3 viewPos = viewPositionAtWindow(vec2(p) + 0.5, depth);
     GBufferTexel texel = fetchGBuffer(p);
 #if ML_GBUFFER_STORES_POSITION
     // Shaded at the stored point; the cluster still comes from depth, as the grid was built.
     px.surface.position = gbufferPosition(texel, vec2(p) + 0.5);
 #else
-    px.surface.position = u_cameraPos.xyz + mat3(u_invView) * viewPos.xyz;
+    px.surface.position = u_cameraPos.xyz + mat3(u_invView) * viewPos;
 #endif
     decodeGBuffer(texel, px.surface);
     px.viewDir = normalize(u_cameraPos.xyz - px.surface.position);

@@ -3,8 +3,8 @@
 // Needs frame_uniforms.glsl.
 vec3 pixelRayView(vec2 windowPos) {
     vec2 ndc = windowPos * u_viewport.zw * 2.0 - 1.0;
-    vec4 farView = u_invProj * vec4(ndc, 1.0, 1.0);
-    return normalize(farView.xyz / farView.w);
+    vec4 nearView = u_invProj * vec4(ndc, 1.0, 1.0);  // on the near plane (reversed depth)
+    return normalize(nearView.xyz / nearView.w);
 }
 
 // World-space ray through a window position.

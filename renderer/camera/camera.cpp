@@ -19,7 +19,9 @@ glm::mat4 Camera::view() const {
 }
 
 glm::mat4 Camera::projection(float aspect) const {
-    return glm::perspective(glm::radians(fovyDegrees), aspect, nearPlane, farPlane);
+    // Clip depth in [0, 1] with the planes swapped: reversed depth, 1 at the near plane and 0 at
+    // the far one (renderer/gl/depth_convention.h).
+    return glm::perspectiveRH_ZO(glm::radians(fovyDegrees), aspect, farPlane, nearPlane);
 }
 
 Camera parseCamera(const std::string& text) {

@@ -19,7 +19,7 @@ struct Camera {
     float farPlane = 100.0f;
 
     glm::mat4 view() const;
-    glm::mat4 projection(float aspect) const;  // OpenGL clip space (z in [-1, 1])
+    glm::mat4 projection(float aspect) const;  // clip depth in [0, 1], reversed: 1 at the near plane
 };
 
 // Parses "px,py,pz,tx,ty,tz,fovy_deg"; throws std::invalid_argument naming the fault.

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "renderer/context/keep_modules_loaded.h"
+#include "renderer/gl/depth_convention.h"
 #include "renderer/gl/gl_api.h"
 
 namespace ml {
@@ -18,6 +19,7 @@ void loadGlFunctions(GlProcLoader getProcAddress, const std::string& platform) {
         throw ContextError(platform + ": OpenGL 4.5 core is required, the context offers " + std::to_string(major) +
                            "." + std::to_string(minor));
     }
+    depth::useReversedDepth();
 }
 
 GlInfo queryGlInfo() {

@@ -1,3 +1,4 @@
+#include "renderer/gl/depth_convention.h"
 #include "renderer/methods/clustered_deferred.h"
 
 #include "glsl/include/bindings.h"
@@ -37,10 +38,9 @@ void ClusteredDeferred::render(const FrameContext& ctx) {
         // Depth alone is cleared: every reader of the G-buffer takes depth 1.0 as background
         // (deferred_resolve.glsl, the normal bins), and a colour clear costs as much as a
         // full-screen layer of writes on an H100.
-        const float clearDepth = 1.0f;
-        glClearNamedFramebufferfv(fbo.id(), GL_DEPTH, 0, &clearDepth);
+        glClearNamedFramebufferfv(fbo.id(), GL_DEPTH, 0, &depth::kClear);
         glEnable(GL_DEPTH_TEST);
-        glDepthFunc(GL_LESS);
+        glDepthFunc(depth::kNearer);
         glDepthMask(GL_TRUE);
         ctx.scene.draw(gbufferProgram_);
         glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);

@@ -1,3 +1,4 @@
+#include "renderer/gl/depth_convention.h"
 #include "renderer/methods/forward_plus.h"
 
 #include <stdexcept>
@@ -40,15 +41,14 @@ void ForwardPlus::shadeOpaque(const FrameContext& ctx) {
         fbo.bind();
         glViewport(0, 0, ctx.targets.width(), ctx.targets.height());
         const float clearColor[4] = {0.0f, 0.0f, 0.0f, 1.0f};
-        const float clearDepth = 1.0f;
         glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 0, clearColor);
-        glClearNamedFramebufferfv(fbo.id(), GL_DEPTH, 0, &clearDepth);
+        glClearNamedFramebufferfv(fbo.id(), GL_DEPTH, 0, &depth::kClear);
         if (prepass_) {
             const GLint clearStencil = 0;
             glClearNamedFramebufferiv(fbo.id(), GL_STENCIL, 0, &clearStencil);
         }
         glEnable(GL_DEPTH_TEST);
-        glDepthFunc(GL_LESS);
+        glDepthFunc(depth::kNearer);
         glDepthMask(GL_TRUE);
     };
     if (!prepass_) {
@@ -86,7 +86,7 @@ void ForwardPlus::shadeOpaque(const FrameContext& ctx) {
         clustering_.bindForShading();
         ctx.scene.draw(shadeProgram_);
         glDisable(GL_STENCIL_TEST);
-        glDepthFunc(GL_LESS);
+        glDepthFunc(depth::kNearer);
         glDepthMask(GL_TRUE);
     }
 }

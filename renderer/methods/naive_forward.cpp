@@ -1,3 +1,4 @@
+#include "renderer/gl/depth_convention.h"
 #include "renderer/methods/naive_forward.h"
 
 #include <algorithm>
@@ -40,11 +41,10 @@ void NaiveForward::shadeOpaque(const FrameContext& ctx) {
     ctx.targets.hdrFramebuffer().bind();
     glViewport(0, 0, ctx.targets.width(), ctx.targets.height());
     const float clearColor[4] = {0.0f, 0.0f, 0.0f, 1.0f};
-    const float clearDepth = 1.0f;
     glClearNamedFramebufferfv(ctx.targets.hdrFramebuffer().id(), GL_COLOR, 0, clearColor);
-    glClearNamedFramebufferfv(ctx.targets.hdrFramebuffer().id(), GL_DEPTH, 0, &clearDepth);
+    glClearNamedFramebufferfv(ctx.targets.hdrFramebuffer().id(), GL_DEPTH, 0, &depth::kClear);
     glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
+    glDepthFunc(depth::kNearer);
     glDepthMask(GL_TRUE);
     ctx.lights.bindForReading();
     ctx.scene.draw(program_);

@@ -1,3 +1,4 @@
+#include "renderer/gl/depth_convention.h"
 #include "renderer/methods/visibility_buffer.h"
 
 #include "glsl/include/bindings.h"
@@ -54,10 +55,9 @@ void VisibilityBuffer::rasterInHardware(const FrameContext& ctx) {
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     depthFbo_.bind();
     glViewport(0, 0, ctx.targets.width(), ctx.targets.height());
-    const float clearDepth = 1.0f;
-    glClearNamedFramebufferfv(depthFbo_.id(), GL_DEPTH, 0, &clearDepth);
+    glClearNamedFramebufferfv(depthFbo_.id(), GL_DEPTH, 0, &depth::kClear);
     glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
+    glDepthFunc(depth::kNearer);
     glDepthMask(GL_TRUE);
     ctx.scene.draw(rasterProgram_, SceneGpu::Ranges::Opaque);
     if (ctx.scene.hasAlphaTestedRanges()) {

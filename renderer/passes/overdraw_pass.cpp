@@ -1,3 +1,4 @@
+#include "renderer/gl/depth_convention.h"
 #include "renderer/passes/overdraw_pass.h"
 
 #include <algorithm>
@@ -35,11 +36,11 @@ void OverdrawPass::run(const SceneGpu& scene, const FrameTargets& targets, PassT
         auto pass = timer.pass("overdraw.count");
         fbo_.bind();
         glViewport(0, 0, stamp_.width(), stamp_.height());
-        const float zero = 0.0f, clearDepth = 1.0f;
+        const float zero = 0.0f;
         glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 0, &zero);
-        glClearNamedFramebufferfv(fbo_.id(), GL_DEPTH, 0, &clearDepth);
+        glClearNamedFramebufferfv(fbo_.id(), GL_DEPTH, 0, &depth::kClear);
         glEnable(GL_DEPTH_TEST);
-        glDepthFunc(GL_LESS);
+        glDepthFunc(depth::kNearer);
         glDepthMask(GL_TRUE);
         glEnablei(GL_BLEND, 0);
         glBlendEquationi(0, GL_FUNC_ADD);

@@ -1,3 +1,4 @@
+#include "renderer/gl/depth_convention.h"
 #include "renderer/passes/raster_floors.h"
 
 #include "glsl/include/bindings.h"
@@ -80,10 +81,9 @@ void RasterFloors::run(Probe probe, const FrameContext& ctx) {
         glClearNamedFramebufferuiv(fbo.id(), GL_COLOR, 0, &background);
         return;
     }
-    const float clearDepth = 1.0f;
-    glClearNamedFramebufferfv(fbo.id(), GL_DEPTH, 0, &clearDepth);
+    glClearNamedFramebufferfv(fbo.id(), GL_DEPTH, 0, &depth::kClear);
     glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
+    glDepthFunc(depth::kNearer);
     glDepthMask(GL_TRUE);
     switch (probe) {
     case Probe::ClearDepth:

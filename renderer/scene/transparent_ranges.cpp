@@ -1,3 +1,4 @@
+#include "renderer/gl/depth_convention.h"
 #include "renderer/scene/transparent_ranges.h"
 
 #include <utility>
@@ -17,7 +18,7 @@ void beginTransparentRaster(const FrameTargets& targets) {
     targets.hdrFramebuffer().bind();
     glViewport(0, 0, targets.width(), targets.height());
     glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
+    glDepthFunc(depth::kNearer);
     glDepthMask(GL_FALSE);
 }
 

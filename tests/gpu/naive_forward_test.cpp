@@ -43,8 +43,8 @@ TEST_F(NaiveForwardTest, MatchesTheFormulaOnThePlane) {
         for (int x = 3; x < s.width; x += 9) {
             // The pixel centre's ray, intersected with the plane y = 0.
             const glm::vec2 ndc((x + 0.5f) / s.width * 2.0f - 1.0f, 1.0f - (y + 0.5f) / s.height * 2.0f);
-            glm::vec4 nearP = invViewProj * glm::vec4(ndc, -1.0f, 1.0f);
-            glm::vec4 farP = invViewProj * glm::vec4(ndc, 1.0f, 1.0f);
+            glm::vec4 nearP = invViewProj * glm::vec4(ndc, 1.0f, 1.0f);  // reversed depth: 1 near, 0 far
+            glm::vec4 farP = invViewProj * glm::vec4(ndc, 0.0f, 1.0f);
             const glm::vec3 a = glm::vec3(nearP) / nearP.w, b = glm::vec3(farP) / farP.w;
             const float t = a.y / (a.y - b.y);
             const glm::vec3 p = a + t * (b - a);

@@ -24,7 +24,7 @@ Scene floorScene() { return quadScene({{{0.0f, 0.0f, 0.0f}, {4.0f, 0.0f, 0.0f}, 
 glm::vec3 floorPoint(const FrameRenderer& r, int x, int y, int width, int height) {
     const glm::vec2 ndc((x + 0.5f) / width * 2.0f - 1.0f, 1.0f - (y + 0.5f) / height * 2.0f);  // images: top row first
     const glm::mat4 inverse = glm::inverse(r.uniforms().viewProj);
-    glm::vec4 a = inverse * glm::vec4(ndc, -1.0f, 1.0f), b = inverse * glm::vec4(ndc, 1.0f, 1.0f);
+    glm::vec4 a = inverse * glm::vec4(ndc, 1.0f, 1.0f), b = inverse * glm::vec4(ndc, 0.0f, 1.0f);  // near, far
     const glm::vec3 p0 = glm::vec3(a) / a.w, p1 = glm::vec3(b) / b.w;
     return p0 + (p1 - p0) * (p0.y / (p0.y - p1.y));
 }

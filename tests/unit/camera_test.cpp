@@ -23,8 +23,8 @@ TEST(Camera, NearAndFarMapToTheDepthRange) {
     c.farPlane = 40.0f;
     const glm::mat4 vp = c.projection(1.0f) * c.view();
     const glm::vec4 n = vp * glm::vec4(0, 0, -0.5f, 1), f = vp * glm::vec4(0, 0, -40.0f, 1);
-    EXPECT_NEAR(n.z / n.w, -1.0f, 1e-5f);
-    EXPECT_NEAR(f.z / f.w, 1.0f, 1e-4f);
+    EXPECT_NEAR(n.z / n.w, 1.0f, 1e-5f);  // reversed depth: 1 at the near plane
+    EXPECT_NEAR(f.z / f.w, 0.0f, 1e-5f);
 }
 
 TEST(Camera, LookingStraightDownIsNotDegenerate) {
