@@ -7,8 +7,9 @@
 #                    buffer by the hardware and by the compute raster; the compute raster's ids
 #                    against the hardware's (ComputeRaster*, VisibilityIds*, the corpus's AMD files)
 #   run.sh targets   issue 30's targets before and after (targets.sweep.json), both rasters;
-#                    raster-floors; the README's results table (--preset scale, every method in
-#                    its defaults, atrium-set) before and after
+#                    raster-floors
+#   run.sh headline  the README's results table (--preset scale, every method in its defaults,
+#                    atrium-set), and the visibility buffer with the compute raster
 #   run.sh routine amd|khronos   the GPU accuracy routine (tools/gpu-accuracy: every method and
 #                    layout against naive) on the built-in scenes and corpus/amd, with ml_gpu_tests
 #                    (amd); on corpus/khronos and playcanvas (khronos: carry .corpus-kh, khronos.txz)
@@ -36,13 +37,15 @@ targets)
   for build in -old ""; do
     $(binary $build) bench --sweep $D/targets.sweep.json --backend egl --out $OUT --name targets${build:--new} > $OUT/targets${build:--new}.log 2>&1
   done
-  $(binary) raster-floors --scene atrium --camera atrium-set --size 2560x1440 --backend egl --csv $OUT/raster-floors.csv > $OUT/floors.log 2>&1
+  $(binary) raster-floors --scene atrium --camera atrium-set --size 2560x1440 --backend egl --csv $OUT/raster-floors.csv > $OUT/floors.log 2>&1 ;;
+headline)
   S='--preset scale --warmup 5 --timed-frames 30 --camera atrium-set --backend egl'
-  for build in -old ""; do
-    M=$(binary $build); N=headline${build:--new}
-    $M bench $S --method naive,forward-plus,deferred,visibility --lights 1024 --out $OUT --name $N-1k > $OUT/$N-1k.log 2>&1
-    $M bench $S --method forward-plus,deferred,visibility --lights 65536 --out $OUT --name $N-64k > $OUT/$N-64k.log 2>&1
-    $M bench $S --method deferred,visibility --lights 1048576 --out $OUT --name $N-1m > $OUT/$N-1m.log 2>&1
+  M=$(binary)
+  $M bench $S --method naive,forward-plus,deferred,visibility --lights 1024 --out $OUT --name headline-1k > $OUT/headline-1k.log 2>&1
+  $M bench $S --method forward-plus,deferred,visibility --lights 65536 --out $OUT --name headline-64k > $OUT/headline-64k.log 2>&1
+  $M bench $S --method deferred,visibility --lights 1048576 --out $OUT --name headline-1m > $OUT/headline-1m.log 2>&1
+  for n in 1024:1k 65536:64k 1048576:1m; do
+    $M bench $S --method visibility --vis-raster compute --lights ${n%:*} --out $OUT --name compute-${n#*:} > $OUT/compute-${n#*:}.log 2>&1
   done ;;
 routine)
   mkdir -p /work/main/build-test /work/shared
