@@ -11,6 +11,7 @@
 #include "renderer/camera/default_camera.h"
 #include "glsl/include/bindings.h"
 #include "renderer/lights/light_buffers.h"
+#include "renderer/passes/overdraw_pass.h"
 #include "renderer/scene/material_features.h"
 #include "scenes/animation_pose.h"
 #include "scenes/scene_library.h"
@@ -278,6 +279,7 @@ PreparedFrame prepareFrame(const FrameOptions& o, const Scene* loaded) {
     f.settings.method.msaa = validMsaa(o.msaa);
     if (const char* refusal = msaaRefusal(f.settings.method.kind); refusal && o.msaa > 1)
         throw std::invalid_argument("--msaa " + std::to_string(o.msaa) + ": " + refusal);
+    if (clustering.view == DebugView::Overdraw && o.msaa > 1) throw std::invalid_argument(kOverdrawRefusesMsaa);
     if (o.supersample < 1 || o.supersample > 8)
         throw std::invalid_argument("--supersample " + std::to_string(o.supersample) + ": must be between 1 and 8");
     if (o.supersample > 1 && o.msaa > 1)

@@ -1,6 +1,7 @@
 #include "renderer/frame_renderer.h"
 
 #include <cstring>
+#include <stdexcept>
 
 #include "glsl/include/bindings.h"
 #include "renderer/context/gl_context.h"
@@ -98,6 +99,7 @@ std::vector<PassTime> FrameRenderer::renderAt(float time, std::uint32_t drawSeed
     scene_.setTransparency(settings_.transparency);
     if (settings_.method.clustering.view == DebugView::Overdraw) {
         // The raster work itself, whatever the method: the view replaces the method's frame.
+        if (settings_.method.msaa > 1) throw std::invalid_argument(kOverdrawRefusesMsaa);
         if (!overdraw_) overdraw_ = std::make_unique<OverdrawPass>(scene_.materialFeatures());
         overdraw_->run(scene_, targets_, timer_);
     } else {

@@ -406,6 +406,7 @@ MethodSettings effectiveMethod(const MethodSettings& chosen) {
     MethodSettings m = chosen;
     if (m.kind == MethodKind::Naive) m.clustering.view = DebugView::Shaded;
     if (msaaRefusal(m.kind)) m.msaa = 1;  // kept in the panel for the methods that take it
+    if (m.clustering.view == DebugView::Overdraw) m.msaa = 1;  // the view counts per pixel (kOverdrawRefusesMsaa)
     if ((m.kind != MethodKind::Deferred && m.kind != MethodKind::Visibility) || m.clustering.assign == AssignMode::Capped)
         m.clustering.normalCones = false;
     return m;

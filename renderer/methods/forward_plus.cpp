@@ -1,9 +1,9 @@
-#include "renderer/gl/depth_convention.h"
 #include "renderer/methods/forward_plus.h"
 
 #include <stdexcept>
 
 #include "glsl/include/bindings.h"
+#include "renderer/gl/depth_convention.h"
 
 namespace ml {
 

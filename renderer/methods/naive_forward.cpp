@@ -1,10 +1,10 @@
-#include "renderer/gl/depth_convention.h"
 #include "renderer/methods/naive_forward.h"
 
 #include <algorithm>
 #include <cmath>
 
 #include "glsl/include/bindings.h"
+#include "renderer/gl/depth_convention.h"
 
 namespace ml {
 

@@ -1,7 +1,7 @@
-#include "renderer/gl/depth_convention.h"
 #include "renderer/methods/visibility_buffer.h"
 
 #include "glsl/include/bindings.h"
+#include "renderer/gl/depth_convention.h"
 #include "renderer/methods/deferred_lighting.h"
 
 namespace ml {

@@ -1,4 +1,3 @@
-#include "renderer/gl/depth_convention.h"
 #include "renderer/passes/compute_raster.h"
 
 #include <algorithm>
@@ -6,6 +5,7 @@
 #include <stdexcept>
 
 #include "glsl/include/bindings.h"
+#include "renderer/gl/depth_convention.h"
 #include "renderer/gl/extensions.h"
 #include "renderer/scene/material_features.h"
 

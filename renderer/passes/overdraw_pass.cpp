@@ -1,4 +1,3 @@
-#include "renderer/gl/depth_convention.h"
 #include "renderer/passes/overdraw_pass.h"
 
 #include <algorithm>
@@ -6,6 +5,7 @@
 #include <cstring>
 
 #include "glsl/include/bindings.h"
+#include "renderer/gl/depth_convention.h"
 
 namespace ml {
 

@@ -20,6 +20,10 @@
 
 namespace ml {
 
+// The view counts each pixel's fragments into a one-sample target over the frame's depth, which
+// --msaa makes multisampled: refused by name rather than left to an incomplete framebuffer.
+inline constexpr const char* kOverdrawRefusesMsaa = "--view overdraw counts fragments per pixel, not per sample: drop --msaa";
+
 // What a count image says: pixels covered, fragments shaded over them, the most on one pixel.
 struct OverdrawStatistics {
     std::size_t coveredPixels = 0;

@@ -1,7 +1,7 @@
-#include "renderer/gl/depth_convention.h"
 #include "renderer/passes/raster_floors.h"
 
 #include "glsl/include/bindings.h"
+#include "renderer/gl/depth_convention.h"
 
 namespace ml {
 

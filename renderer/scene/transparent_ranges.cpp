@@ -1,9 +1,9 @@
-#include "renderer/gl/depth_convention.h"
 #include "renderer/scene/transparent_ranges.h"
 
 #include <utility>
 
 #include "glsl/include/bindings.h"
+#include "renderer/gl/depth_convention.h"
 
 namespace ml {
 
