@@ -1,10 +1,10 @@
 // A window position's ray from the eye in view space, unit length: the visibility resolve casts
 // it through the pixel's triangle, and the exact G-buffer layout stores the distance along it.
 // Needs frame_uniforms.glsl.
+#include "include/window_depth.glsl"
+
 vec3 pixelRayView(vec2 windowPos) {
-    vec2 ndc = windowPos * u_viewport.zw * 2.0 - 1.0;
-    vec4 nearView = u_invProj * vec4(ndc, 1.0, 1.0);  // on the near plane (reversed depth)
-    return normalize(nearView.xyz / nearView.w);
+    return normalize(viewPositionAtWindow(windowPos, 1.0));  // through its point on the near plane
 }
 
 // World-space ray through a window position.
