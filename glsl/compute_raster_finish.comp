@@ -11,7 +11,7 @@
 #include "include/window_depth.glsl"
 #include "include/compute_raster.glsl"
 
-layout(local_size_x = ML_SCREEN_TILE, local_size_y = ML_SCREEN_TILE) in;
+layout(local_size_x = ML_RASTER_FINISH_ROW) in;  // a row strip: the store is row-major
 layout(binding = ML_IMG_VISIBILITY_IDS, r32ui) uniform writeonly uimage2D u_ids;
 layout(binding = ML_IMG_RASTER_DEPTH, r32f) uniform writeonly image2D u_depth;
 

@@ -183,7 +183,7 @@ void ComputeRaster::finish(const FrameContext& ctx, const gl::Texture2D& ids) {
     finish_.use();
     glBindImageTexture(ML_IMG_VISIBILITY_IDS, ids.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32UI);
     glBindImageTexture(ML_IMG_RASTER_DEPTH, depth_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
-    glDispatchCompute(gl::groupsFor(stamp_.width(), ML_SCREEN_TILE), gl::groupsFor(stamp_.height(), ML_SCREEN_TILE), 1);
+    glDispatchCompute(gl::groupsFor(stamp_.width(), ML_RASTER_FINISH_ROW), stamp_.height(), 1);
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | kComputeToCompute);
 }
 
