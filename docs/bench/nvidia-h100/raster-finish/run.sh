@@ -7,8 +7,8 @@
 #                    (targets.sweep.json), and raster-floors at 2560x1440 and 3840x2160 both ways
 #   run.sh headline  the README's row for `visibility --vis-raster compute` (--preset scale,
 #                    atrium-set, 1,024 / 65,536 / 1,048,576 lights), on 825224a
-#   run.sh tests     the compute raster's ids against the hardware's (ComputeRaster*, VisibilityIds*,
-#                    the corpus's AMD files)
+#   run.sh tests     every GPU test (gpu-tests.txt), and the compute raster's ids against the
+#                    hardware's (ComputeRaster*, VisibilityIds*, the corpus's AMD files: tests.txt)
 # The workgroup shapes compared (variants/) came from a throwaway build, variants/variants.diff on
 # 55574a2, picked by ML_FINISH_VARIANT: 0 8x8, 1 8x8 without the reset (timing only: the next frame
 # is wrong), 2 32x8, 3 16x16, 4 64x4, 5 128x2, 6 256x1; and, in a first round, the reset by
@@ -42,6 +42,7 @@ tests)
   mkdir -p /work/main/build-test /work/shared
   ln -sf $PWD/.devbin/manylights /work/main/build-test/manylights
   ln -sfn $PWD/.corpus-amd/corpus /work/shared/corpus
-  { timeout 200 .devbin/ml_gpu_tests --gtest_filter='ComputeRaster*:VisibilityIds*:Visibility*'
+  timeout 300 .devbin/ml_gpu_tests 2>&1 | grep -v "^\[ RUN\|^\[--" > $OUT/gpu-tests.txt
+  { timeout 200 .devbin/ml_gpu_tests --gtest_filter='ComputeRaster*:VisibilityIds*'
     timeout 200 .devbin/ml_corpus_tests --gtest_filter='*ComputeRaster*GasStation*:*ComputeRaster*Sponza*'; } 2>&1 | grep -v "^\[ RUN\|^\[--" > $OUT/tests.txt ;;
 esac
