@@ -22,12 +22,12 @@ void main() {
         float d = depthSample(p, s);
         if (isBackgroundDepth(d)) continue;
         // Forward+ finds a fragment's slice from its interpolated world position, not from this
-        // stored depth: the two differ by the depth's rounding, a few of its float steps (with
-        // the depth not yet reversed, up to 1e-4 of the view depth far from the camera). A
-        // fragment on a slice boundary then picked the unmarked neighbour and shaded with an empty list (14/255 off naive on
-        // the atrium at 128 log slices). So both ends of that interval are marked, with the
-        // relative nudge of the other sample markers (normal bins, transparent samples) on top;
-        // slices are far thicker than the interval, so no cluster lies between the two.
+        // stored depth: the two differ by the depth's rounding, a few of its float steps (with the
+        // depth not yet reversed, up to 1e-4 of the view depth far from the camera). A fragment on
+        // a slice boundary then picked the unmarked neighbour and shaded with an empty list (14/255
+        // off naive on the atrium at 128 log slices). So both ends of that interval are marked,
+        // with the relative nudge of the other sample markers (normal bins, transparent samples) on
+        // top; slices are far thicker than the interval, so no cluster lies between the two.
         uint bits = floatBitsToUint(d);
         float a = viewDepthFromWindowDepth(uintBitsToFloat(bits - min(bits, kDepthSteps)));
         float b = viewDepthFromWindowDepth(uintBitsToFloat(bits + kDepthSteps));
