@@ -85,7 +85,8 @@ ClusteredLighting::ClusteredLighting(const ClusteringSettings& settings, std::ui
       transparentSamples_(transparentSamplesProgram(settings, materialFeatures)),
       gridBuffer_("clusters.grid", sizeof(ClusterGridGpu)),
       counters_("clusters.counters", 32),
-      dispatchArgs_("assign.dispatch-args", 16) {
+      dispatchArgs_("assign.dispatch-args", 16),
+      candidates_("assign.candidates", 2) {
     validateGridConfig(settings.grid);
     if (settings.assign == AssignMode::ZBin) zbin_ = std::make_unique<ZBinAssignment>(settings.spotLights, depthSamplesDefine(settings));
     if (settings.normalCones && settings.assign == AssignMode::Capped)
@@ -317,6 +318,10 @@ void ClusteredLighting::buildExact(const FrameContext& ctx) {
             glDispatchCompute(1, 1, 1);
             glMemoryBarrier(GL_COMMAND_BARRIER_BIT | kComputeToCompute);
         }
+        // The candidates and the wrap flag (AssignStats [5], [6]), for the CPU to read once the
+        // fence passes, while the GPU runs the count and its scan.
+        glCopyNamedBufferSubData(counters_.id(), candidates_.buffer().id(), 5 * 4, 0, 2 * 4);
+        candidates_.fence();
     }
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, dispatchArgs_.id());
     {
@@ -340,16 +345,25 @@ void ClusteredLighting::buildExact(const FrameContext& ctx) {
     }
     {
         auto pass = ctx.timer.pass(perCluster ? "assign.per-cluster-fill" : "assign.fill");
-        // The list is sized by this frame's total, read back here (one small sync per frame).
-        std::uint32_t totals[8] = {};  // layout: glsl/assign_exact.comp's AssignStats
-        counters_.download(totals, sizeof(totals), 0);
-        if (totals[6] != 0)
+        // The lists are sized by the candidates, which bound their total (a candidate passes
+        // the cull test once), read behind the fence: the GPU passed it before the count and
+        // the scan, which it runs while the CPU reads. Reading the lists' own total instead
+        // would drain the pipeline, and the GPU would idle until the fill came (0.1-0.2 ms on
+        // an H100: docs/bench/nvidia-h100/list-sync/). That is still done where the bound
+        // passes the storage limit, and with --normal-cones (a pair joins up to
+        // ML_NORMAL_BINS lists).
+        const std::uint32_t* candidates = candidates_.read();
+        if (candidates[1] != 0)
             throw std::runtime_error(std::to_string(lights) + " lights name more than 4,294,967,295 (light, cluster) candidate "
                                      "pairs this frame; lower --light-radius, --lights, --tiles-x or --slices");
-        const std::uint32_t total = totals[1];
-        listEntries_ = total;
-        checkListFits(std::size_t(total) * 4, "the light lists");
-        indices_.ensure(std::size_t(total) * 4);
+        std::size_t listBytes = std::size_t(candidates[0]) * 4;
+        if (settings_.normalCones || listBytes > maxStorageBlock_) {
+            std::uint32_t totals[8] = {};  // layout: glsl/assign_exact.comp's AssignStats
+            counters_.download(totals, sizeof(totals), 0);
+            listBytes = std::size_t(totals[1]) * 4;
+            checkListFits(listBytes, "the light lists");
+        }
+        indices_.ensure(listBytes);
         clearToZero(cursors_.buffer(), perList);
         glMemoryBarrier(kComputeToCompute);
         counts_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_CLUSTER_COUNTS);
@@ -360,6 +374,8 @@ void ClusteredLighting::buildExact(const FrameContext& ctx) {
         fill_.use();
         dispatchPairs();
         glMemoryBarrier(kComputeToCompute);
+        // Submitted now: after the wait the GPU has only the count and the scan left.
+        glFlush();
     }
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
 }
@@ -369,7 +385,6 @@ void ClusteredLighting::buildCapped(const FrameContext& ctx) {
     const std::size_t listBytes = std::size_t(clusters) * settings_.maxPerCluster * 4;
     checkListFits(listBytes, "capped light lists (clusters x --max-per-cluster x 4 B)");
     indices_.ensure(listBytes);
-    listEntries_ = 0;
     auto pass = ctx.timer.pass("assign.capped");
     clearToZero(counts_.buffer(), std::size_t(clusters) * 4);
     clearToZero(counters_, 16);
@@ -467,7 +482,7 @@ ClusterStatistics ClusteredLighting::statistics() const {
         activeFlags_.buffer().download(flags.data(), flags.size() * 4);
         s.activeClusters = static_cast<std::uint32_t>(std::count(flags.begin(), flags.end(), 1u));
     }
-    s.listBytes = capped ? std::size_t(s.clusters) * settings_.maxPerCluster * 4 : std::size_t(listEntries_) * 4;
+    s.listBytes = capped ? std::size_t(s.clusters) * settings_.maxPerCluster * 4 : std::size_t(stored) * 4;
     // Per cluster: active flag, AABB (and normal-bin mask); per list: count, offset, cursor
     // (and the normal cone).
     s.gridBytes = std::size_t(s.clusters) * (4 + sizeof(ClusterAabbGpu) + (settings_.normalCones ? 4 : 0)) +

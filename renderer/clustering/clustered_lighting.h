@@ -9,7 +9,8 @@
 //         ─> [cluster.transparent-samples]  with transparent surfaces and --active-only or
 //                                   --normal-cones: their visible fragments marked as samples too
 //   exact:  [assign.ranges] ─> [assign.count] ─> [assign.scan] ─> [assign.fill]
-//           one invocation per (light, candidate cluster); one compact list, no cap
+//           one invocation per (light, candidate cluster); one compact list, no cap, in a
+//           buffer sized by the candidates that the ranges counted
 //   per-cluster: [assign.ranges] ─> [assign.per-cluster-count] ─> [assign.scan] ─> [assign.per-cluster-fill]
 //           one invocation per cluster over every light (seed 003); the same lists
 //   capped: [assign.capped]    one invocation per light; fixed lists, overflow counted
@@ -23,7 +24,8 @@
 // (16 B): 28 B x 24 per cluster, 17.7 MiB for 32 x 18 x 48 clusters.
 //
 // Memory per cluster: count, offset, fill cursor, active flag (4 B each) and an AABB (32 B):
-// 48 B, so 32 x 18 x 24 clusters take 648 KiB. Exact lists take 4 B per light reference;
+// 48 B, so 32 x 18 x 24 clusters take 648 KiB. Exact lists take 4 B per light reference, in a
+// buffer sized by the frame's (light, candidate cluster) pairs, which bound the references;
 // capped lists take clusters x cap x 4 B whatever the frame needs (42x24x12 x 2048: 99 MiB).
 // With float sums the sort (list_sort.h) keeps a scratch buffer as large as the lists.
 #pragma once
@@ -39,6 +41,7 @@
 #include "renderer/clustering/prefix_sum.h"
 #include "renderer/clustering/zbin_assignment.h"
 #include "renderer/gl/buffer.h"
+#include "renderer/gl/mapped_words.h"
 #include "renderer/gl/program.h"
 #include "renderer/gl/texture.h"
 #include "renderer/gpu_types.h"
@@ -98,7 +101,6 @@ private:
     ClusteringSettings settings_;
     ClusterGrid grid_;
     std::size_t maxStorageBlock_ = 0;
-    std::uint64_t listEntries_ = 0;
 
     gl::Program depthRange_, bounds_, active_, normalBins_, ranges_, dispatch_, count_, fill_, capped_;
     PrefixSum scan_;
@@ -108,6 +110,7 @@ private:
     gl::Buffer gridBuffer_;
     gl::Buffer counters_;  // [0] dropped references (capped), [1] list entries, [2] candidate pairs (exact), [3..4] normal-cone pairs
     gl::Buffer dispatchArgs_;  // indirect dispatch of the per-candidate passes
+    gl::MappedWords candidates_;  // AssignStats [5] and [6] after the ranges: the candidates bound the lists
     gl::GrowableBuffer lightRanges_{"assign.light-ranges"};  // 16 B per light
     gl::GrowableBuffer lightView_{"assign.light-view"};      // 16 B per light
     gl::GrowableBuffer candidateOffsets_{"assign.candidate-offsets"};  // 4 B per light

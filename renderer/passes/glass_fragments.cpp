@@ -11,7 +11,6 @@ namespace ml {
 
 namespace {
 constexpr GLbitfield kComputeToCompute = GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT;
-constexpr GLbitfield kMappedFlags = GL_MAP_READ_BIT | GL_MAP_PERSISTENT_BIT | GL_MAP_COHERENT_BIT;
 
 RasterProgram captureProgram(const char* label, std::uint32_t materialFeatures, bool fill) {
     return transparentRangesProgram(label, "glass_capture.frag", materialFeatures, {{"ML_GLASS_FILL", fill ? "1" : "0"}});
@@ -29,14 +28,13 @@ GlassFragments::GlassFragments(std::string timerName, std::uint32_t materialFeat
       count_(captureProgram("transparent.capture-count", materialFeatures, false)),
       fill_(captureProgram("transparent.capture-fill", materialFeatures, true)),
       clear_(materialFeatures & ML_FEATURE_BLEND ? gl::Program::compute("glass_clear_counts.comp") : gl::Program()),
-      total_("transparent.total", 4, nullptr, kMappedFlags),
+      total_("transparent.total", 1),
       budget_(budgetBytes) {
     if (budget_ == 0) {
         GLint64 maxBlock = 0;
         glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &maxBlock);
         budget_ = static_cast<std::size_t>(maxBlock);
     }
-    mappedTotal_ = static_cast<const std::uint32_t*>(glMapNamedBufferRange(total_.id(), 0, 4, kMappedFlags));
 }
 
 void GlassFragments::count(const FrameContext& ctx, bool withColors) {
@@ -61,19 +59,17 @@ void GlassFragments::count(const FrameContext& ctx, bool withColors) {
         auto pass = ctx.timer.pass(timerName_ + "-scan");
         // A uint total: 2^32 fragments (32 GiB) lie past any storage buffer, and the fill
         // writes none past the buffer's end.
-        scan_.run(pixels_.buffer(), pixelCount_, total_, 0);
+        scan_.run(pixels_.buffer(), pixelCount_, total_.buffer(), 0);
         glMemoryBarrier(kComputeToCompute | GL_CLIENT_MAPPED_BUFFER_BARRIER_BIT);
     }
-    totalReady_ = gl::Fence::now();
+    total_.fence();
 }
 
 void GlassFragments::fill(const FrameContext& ctx) {
     // The total is read from a mapped buffer behind a fence: the CPU waits for the count and
     // its scan alone (long done where the method had work between them), not for the pipeline.
     auto pass = ctx.timer.pass(timerName_ + "-fill");
-    totalReady_.wait();
-    totalReady_.reset();
-    const std::uint32_t total = *mappedTotal_;
+    const std::uint32_t total = *total_.read();
     fragments_ = total;
     const std::size_t perFragment = kBytesPerFragment + (withColors_ ? kColorBytesPerFragment : 0);
     const std::uint64_t need = std::uint64_t(total) * perFragment;

@@ -26,7 +26,7 @@
 #include "renderer/clustering/prefix_sum.h"
 #include "renderer/frame_context.h"
 #include "renderer/gl/buffer.h"
-#include "renderer/gl/fence.h"
+#include "renderer/gl/mapped_words.h"
 #include "renderer/gl/program.h"
 #include "renderer/scene/raster_program.h"
 
@@ -49,7 +49,7 @@ public:
     // std::runtime_error, naming the numbers, when the fragments do not fit the budget.
     void count(const FrameContext& ctx, bool withColors);
     void fill(const FrameContext& ctx);
-    bool counted() const { return static_cast<bool>(totalReady_); }
+    bool counted() const { return total_.fenced(); }
     // Binds the pixels and the fragments (with colours after them) at their ML_SSBO_GLASS_* points.
     void bindForShading() const;
     // Where the colours start in the fragment buffer, in 4-byte words (after the last fragment).
@@ -67,9 +67,7 @@ private:
     RasterProgram count_, fill_;
     gl::Program clear_;  // the counts to zero (glsl/glass_clear_counts.comp)
     PrefixSum scan_;
-    gl::Buffer total_;  // the scan's total, mapped for reading
-    const std::uint32_t* mappedTotal_ = nullptr;
-    gl::Fence totalReady_;  // after count()'s scan, until fill() reads the total
+    gl::MappedWords total_;  // the scan's total, fenced after count()'s scan until fill() reads it
     std::uint32_t pixelCount_ = 0;
     bool withColors_ = false;
     std::size_t budget_ = 0;
