@@ -3,7 +3,8 @@
 // triangle lists (triangle, tile) for every screen tile of its pixel bounds that its edges do not
 // all pass by (a tile wholly outside one edge holds none of its pixels), for the tile
 // pass, and for every triangle of the clipped list (ML_RASTER_CLIPPED_PAIR marks them). A
-// triangle whose tiles do not fit the list goes to the hardware's list instead.
+// triangle whose tiles do not fit the list goes to the hardware's list instead. With
+// ML_RASTER_ALPHA_TEST the alpha-tested triangles' lists, into their own pairs.
 #extension GL_ARB_gpu_shader_int64 : require
 #if ML_RASTER_ATOMIC64
 #extension GL_NV_shader_atomic_int64 : require
@@ -23,6 +24,19 @@ layout(std430, binding = ML_SSBO_RASTER_CLIPPED) readonly buffer RasterClipped {
 
 uniform uint u_largeCapacity;
 uniform uint u_pairCapacity;
+uniform uint u_largeFirst;  // where the lists' large triangles start (the alpha-tested ones: after the opaque ones)
+#if ML_RASTER_ALPHA_TEST
+uniform uint u_spans;  // alpha-tested spans, their draws after ML_RASTER_WORK_WORDS (first: word 2)
+
+// A triangle whose tiles do not fit: to its span's hardware list (the last span starting at or before it).
+void toHardware(uint triangle) {
+    uint draw = ML_RASTER_WORK_WORDS;
+    for (uint i = 1u; i < u_spans && rasterWork[ML_RASTER_WORK_WORDS + 4u * i + 2u] / 3u <= triangle; ++i) draw = ML_RASTER_WORK_WORDS + 4u * i;
+    hardwareTriangles[rasterWork[draw + 2u] / 3u + atomicAdd(rasterWork[draw], 3u) / 3u] = triangle;
+}
+#else
+void toHardware(uint triangle) { hardwareTriangles[atomicAdd(rasterWork[ML_RASTER_WORK_HARDWARE_DRAW], 3u) / 3u] = triangle; }
+#endif
 
 shared uint s_count;
 shared uint s_first;
@@ -58,11 +72,15 @@ bool tileTouches(bool clipped, uint index, uvec2 tile) {
 }
 
 void main() {
-    uint largeCount = min(rasterWork[ML_RASTER_WORK_LARGE_COUNT], u_largeCapacity);
+    uint largeCount = min(rasterWork[ML_RASTER_LARGE_COUNT], u_largeCapacity - u_largeFirst);
+#if ML_RASTER_ALPHA_TEST
+    uint count = largeCount;  // the alpha-tested ones across the eye plane went to the hardware
+#else
     uint count = largeCount + min(rasterWork[ML_RASTER_WORK_CLIPPED_COUNT], u_largeCapacity);
+#endif
     for (uint item = gl_WorkGroupID.x; item < count; item += gl_NumWorkGroups.x) {
         bool clipped = item >= largeCount;
-        uint large = clipped ? (item - largeCount) | ML_RASTER_CLIPPED_PAIR : item;
+        uint large = clipped ? (item - largeCount) | ML_RASTER_CLIPPED_PAIR : u_largeFirst + item;
         // Tile bounds in .zw, the triangle in .y (large); bounds in .xy, the triangle in the
         // record before's .w (clipped).
         uvec4 record = clipped ? clippedTriangles[5u * (item - largeCount) + 4u].zwxy : largeTriangles[3u * large + 2u];
@@ -80,13 +98,12 @@ void main() {
         barrier();
         uint tiles = s_count;
         if (gl_LocalInvocationIndex == 0u) {
-            uint first = atomicAdd(rasterWork[ML_RASTER_WORK_PAIR_COUNT], tiles);
+            uint first = atomicAdd(rasterWork[ML_RASTER_PAIR_COUNT], tiles);
             if (first + tiles > u_pairCapacity || first + tiles < first) {
-                uint at = atomicAdd(rasterWork[ML_RASTER_WORK_HARDWARE_DRAW], 3u) / 3u;
-                hardwareTriangles[at] = record.y;
+                toHardware(record.y);
                 first = 0xffffffffu;
             } else {
-                atomicMax(rasterWork[ML_RASTER_WORK_TILE_DISPATCH], min(first + tiles, 65535u));
+                atomicMax(rasterWork[ML_RASTER_TILE_DISPATCH], min(first + tiles, 65535u));
             }
             s_first = first;
         }

@@ -1,6 +1,8 @@
 #version 450 core
 // The compute raster's tile pass (renderer/passes/compute_raster.h): a workgroup per (large
-// triangle, screen tile) from the binning, a pixel per invocation.
+// triangle, screen tile) from the binning, a pixel per invocation. With ML_RASTER_ALPHA_TEST, one
+// texture set's alpha-tested triangles among the alpha-tested pairs (a dispatch per set, its
+// textures bound), each pixel alpha-tested (include/compute_raster_coverage.glsl).
 #extension GL_ARB_gpu_shader_int64 : require
 #if ML_RASTER_ATOMIC64
 #extension GL_NV_shader_atomic_int64 : require
@@ -9,6 +11,7 @@
 #include "include/frame_uniforms.glsl"
 #include "include/window_depth.glsl"
 #include "include/compute_raster.glsl"
+#include "include/compute_raster_coverage.glsl"
 
 layout(local_size_x = ML_RASTER_TILE, local_size_y = ML_RASTER_TILE) in;
 
@@ -18,9 +21,12 @@ layout(std430, binding = ML_SSBO_RASTER_PAIRS) readonly buffer RasterPairs { uve
 layout(std430, binding = ML_SSBO_RASTER_CLIPPED) readonly buffer RasterClipped { uvec4 clippedTriangles[]; };
 
 uniform uint u_pairCapacity;
+#if ML_RASTER_ALPHA_TEST
+uniform uint u_firstTriangle, u_triangles;  // the span this dispatch's texture set covers
+#endif
 
 void main() {
-    uint count = min(rasterWork[ML_RASTER_WORK_PAIR_COUNT], u_pairCapacity);
+    uint count = min(rasterWork[ML_RASTER_PAIR_COUNT], u_pairCapacity);
     for (uint pair = gl_WorkGroupID.x; pair < count; pair += gl_NumWorkGroups.x) {
         uvec2 entry = pairs[pair];
         ivec2 pixel = ivec2(entry.y & 0xffffu, entry.y >> 16) * ML_RASTER_TILE + ivec2(gl_LocalInvocationID.xy);
@@ -44,7 +50,10 @@ void main() {
         t.v1 = ivec2(r0.zw);
         t.v2 = ivec2(r1.xy);
         t.z = vec3(uintBitsToFloat(r1.zw), uintBitsToFloat(r2.x));
+#if ML_RASTER_ALPHA_TEST
+        if (r2.y - u_firstTriangle >= u_triangles) continue;  // another set's
+#endif
         float depth;
-        if (rasterCovers64(t, pixel, depth)) rasterStore(pixel, depth, r2.y);
+        if (rasterCovers64(t, pixel, depth)) rasterStoreCovered(pixel, depth, r2.y);
     }
 }

@@ -6,6 +6,11 @@
 // id pass of two-pass atomics (ML_RASTER_PASS 1) the lists are already made: it rasters the
 // small ones again and appends nothing. A triangle that crosses the eye plane goes to the tile pass
 // as homogeneous edge planes (include/compute_raster.glsl, ClippedTriangle).
+//
+// With ML_RASTER_ALPHA_TEST, one texture set's alpha-tested triangles (a dispatch per set, its
+// textures bound; include/compute_raster_coverage.glsl): each pixel the store would take tested
+// against the material's cut-off; large ones to the alpha-tested triangles' own tile list, those
+// across the eye plane or past the guard band to the hardware, through this set's list and draw.
 #extension GL_ARB_gpu_shader_int64 : require
 #if ML_RASTER_ATOMIC64
 #extension GL_NV_shader_atomic_int64 : require
@@ -14,30 +19,44 @@
 #include "include/frame_uniforms.glsl"
 #include "include/window_depth.glsl"
 #include "include/compute_raster.glsl"
+#include "include/compute_raster_coverage.glsl"
 
 layout(local_size_x = ML_RASTER_WORKGROUP) in;
 
+#if ML_RASTER_ALPHA_TEST
+uint materialBits(uint triangle) { return materials[triangleMaterial[triangle]].info.w; }
+#else
 layout(std430, binding = ML_SSBO_VERTICES) readonly buffer Vertices { float vertexData[]; };  // 8 floats a vertex
 layout(std430, binding = ML_SSBO_INDICES) readonly buffer Indices { uint indexData[]; };
 layout(std430, binding = ML_SSBO_TRIANGLE_MATERIALS) readonly buffer TriangleMaterials { uint triangleMaterial[]; };
 layout(std430, binding = ML_SSBO_MATERIALS) readonly buffer Materials { uvec4 materialWords[]; };  // GpuMaterial, info at +3
+vec3 vertexPosition(uint v) { return vec3(vertexData[8u * v], vertexData[8u * v + 1u], vertexData[8u * v + 2u]); }
+uint materialBits(uint triangle) { return materialWords[triangleMaterial[triangle] * ML_GPU_MATERIAL_VEC4S + 3u].w; }
+#endif
 layout(std430, binding = ML_SSBO_RASTER_WORK) coherent buffer RasterWork { uint rasterWork[]; };
 layout(std430, binding = ML_SSBO_RASTER_LARGE) writeonly buffer RasterLarge { uvec4 largeTriangles[]; };
 layout(std430, binding = ML_SSBO_RASTER_HARDWARE) writeonly buffer RasterHardware { uint hardwareTriangles[]; };
 layout(std430, binding = ML_SSBO_RASTER_CLIPPED) writeonly buffer RasterClipped { uvec4 clippedTriangles[]; };
 
-uniform uint u_triangles;      // opaque triangles: the prefix of the index buffer that holds them
+uniform uint u_firstTriangle;  // the triangles set up: the opaque ones (the index buffer's first),
+uniform uint u_triangles;      // or one texture set's alpha-tested span
+#if ML_RASTER_ALPHA_TEST
+uniform uint u_hardwareDraw;   // the span's DrawArraysIndirectCommand in rasterWork; its list starts at u_firstTriangle
+#endif
 uniform uint u_cullBackFaces;  // --backface-culling: cull single-sided materials' back faces
 uniform uint u_largeCapacity;  // entries largeTriangles holds
+uniform uint u_largeFirst;     // where this program's large triangles start in it (the alpha-tested ones: after the opaque ones)
 uniform uint u_clipsToViewport;  // the GPU clips triangles at the viewport's sides (no guard band: Mesa's llvmpipe)
-
-vec3 vertexPosition(uint v) { return vec3(vertexData[8u * v], vertexData[8u * v + 1u], vertexData[8u * v + 2u]); }
 
 const float kGuardBand = float(1 << (30 - 2 * ML_SUBPIXEL_BITS));  // window units either side: 64-bit edges stay exact
 
 void toHardware(uint triangle) {
 #if ML_RASTER_PASS == 0
+#if ML_RASTER_ALPHA_TEST
+    uint at = u_firstTriangle + atomicAdd(rasterWork[u_hardwareDraw], 3u) / 3u;
+#else
     uint at = atomicAdd(rasterWork[ML_RASTER_WORK_HARDWARE_DRAW], 3u) / 3u;
+#endif
     hardwareTriangles[at] = triangle;
 #endif
 }
@@ -81,8 +100,7 @@ void toClipped(uint triangle, vec4 c0, vec4 c1, vec4 c2) {
     bool front;
     if (!rasterHomogeneous(c0, c1, c2, h, front)) return;  // seen edge-on
     if (!front) {
-        uint info = materialWords[triangleMaterial[triangle] * ML_GPU_MATERIAL_VEC4S + 3u].w;
-        if (u_cullBackFaces != 0u && (info & ML_MATERIAL_DOUBLE_SIDED) == 0u) return;
+        if (u_cullBackFaces != 0u && (materialBits(triangle) & ML_MATERIAL_DOUBLE_SIDED) == 0u) return;
     }
     vec4 corners[3] = vec4[](c0, c1, c2);
     uvec2 tileLo, tileHi;
@@ -99,8 +117,8 @@ void toClipped(uint triangle, vec4 c0, vec4 c1, vec4 c2) {
 }
 
 void main() {
-    uint triangle = gl_GlobalInvocationID.x;
-    if (triangle >= u_triangles) return;
+    if (gl_GlobalInvocationID.x >= u_triangles) return;
+    uint triangle = u_firstTriangle + gl_GlobalInvocationID.x;
     vec4 c0 = rasterClipPosition(vertexPosition(indexData[3u * triangle]));
     vec4 c1 = rasterClipPosition(vertexPosition(indexData[3u * triangle + 1u]));
     vec4 c2 = rasterClipPosition(vertexPosition(indexData[3u * triangle + 2u]));
@@ -112,7 +130,7 @@ void main() {
     if (c0.w <= 0.0 || c1.w <= 0.0 || c2.w <= 0.0) {
         // Where the GPU clips at the viewport, to the hardware (see below); else unclipped, as
         // homogeneous planes.
-        if (u_clipsToViewport != 0u) toHardware(triangle);
+        if (u_clipsToViewport != 0u || ML_RASTER_ALPHA_TEST != 0) toHardware(triangle);
         else toClipped(triangle, c0, c1, c2);
         return;
     }
@@ -134,8 +152,7 @@ void main() {
     if (area == 0l) return;  // no pixel of a degenerate triangle is drawn
     if (area < 0l) {
         // Clockwise: a back face. Wound the other way, it covers the same pixels.
-        uint info = materialWords[triangleMaterial[triangle] * ML_GPU_MATERIAL_VEC4S + 3u].w;
-        if (u_cullBackFaces != 0u && (info & ML_MATERIAL_DOUBLE_SIDED) == 0u) return;
+        if (u_cullBackFaces != 0u && (materialBits(triangle) & ML_MATERIAL_DOUBLE_SIDED) == 0u) return;
         t = rasterReversed(t);
     }
     ivec2 lo, hi;
@@ -157,19 +174,19 @@ void main() {
                 int e1 = -c.x * (py - c.y) + c.y * (px - c.x);
                 if (e0 + bias0 <= 0 || e1 + bias1 <= 0 || e2 + bias2 <= 0) continue;
                 float depth = rasterDepth(t, float(e0), float(e1), float(e2));
-                if (isVisibleDepth(depth)) rasterStore(ivec2(x, y), depth, triangle);
+                if (isVisibleDepth(depth)) rasterStoreCovered(ivec2(x, y), depth, triangle);
             }
         }
         return;
     }
 #if ML_RASTER_PASS == 0
     // Large: the tile pass rasters it, a workgroup per screen tile it overlaps.
-    uint at = atomicAdd(rasterWork[ML_RASTER_WORK_LARGE_COUNT], 1u);
+    uint at = u_largeFirst + atomicAdd(rasterWork[ML_RASTER_LARGE_COUNT], 1u);
     if (at >= u_largeCapacity) {
         toHardware(triangle);
         return;
     }
-    atomicMax(rasterWork[ML_RASTER_WORK_BIN_DISPATCH], min(at + 1u, 65535u));
+    atomicMax(rasterWork[ML_RASTER_BIN_DISPATCH], min(at - u_largeFirst + 1u, 65535u));
     ivec2 tileLo = lo / ML_RASTER_TILE, tileHi = hi / ML_RASTER_TILE;
     largeTriangles[3u * at] = uvec4(uvec2(t.v0), uvec2(t.v1));
     largeTriangles[3u * at + 1u] = uvec4(uvec2(t.v2), floatBitsToUint(t.z.xy));

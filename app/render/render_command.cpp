@@ -179,6 +179,9 @@ int runRender(RenderOptions o) {
                 const ComputeRaster::Work w = raster->lastWork();
                 std::printf("compute raster (%s): %u opaque triangles; %u large and %u across the eye plane to the tile pass over %u tiles, %u to the hardware\n",
                             visibilityRasterName(visibility->raster()), w.opaqueTriangles, w.large, w.clipped, w.tiles, w.hardware);
+                if (w.alphaTested > 0)
+                    std::printf("compute raster: %u alpha-tested triangles; %u large to their tile pass over %u tiles, %u to the hardware\n",
+                                w.alphaTested, w.alphaLarge, w.alphaTiles, w.alphaHardware);
             } else {
                 std::printf("visibility raster: hardware\n");
             }

@@ -61,7 +61,11 @@
 #define ML_RASTER_WORK_LARGE_COUNT 10
 #define ML_RASTER_WORK_PAIR_COUNT 11
 #define ML_RASTER_WORK_CLIPPED_COUNT 12
-#define ML_RASTER_WORK_WORDS 13
+#define ML_RASTER_WORK_ALPHA_BIN_DISPATCH 13   // the same four for the alpha-tested triangles' lists (words 13-15)
+#define ML_RASTER_WORK_ALPHA_TILE_DISPATCH 16  // (words 16-18)
+#define ML_RASTER_WORK_ALPHA_LARGE_COUNT 19
+#define ML_RASTER_WORK_ALPHA_PAIR_COUNT 20
+#define ML_RASTER_WORK_WORDS 21                // then a DrawArraysIndirectCommand per alpha-tested span
 #define ML_RASTER_CLIPPED_PAIR 0x80000000u  // a pair's triangle is in the clipped list
 #define ML_RASTER_WORKGROUP 64       // triangles per workgroup of the setup pass
 #define ML_RASTER_TILE 16            // the tile pass's screen tile edge: a pixel per invocation

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <optional>
 #include <stdexcept>
+#include <vector>
 
 #include "glsl/include/bindings.h"
 #include "renderer/gl/depth_convention.h"
@@ -118,12 +119,19 @@ ComputeRaster::ComputeRaster(std::uint32_t materialFeatures, bool packedAtomics)
         hardwareList_[pass] = gl::Program("visibility.compute-raster.hardware" + suffix,
                                           {{GL_VERTEX_SHADER, "compute_raster_hardware.vert"}, {GL_FRAGMENT_SHADER, "visibility.frag"}},
                                           list);
-        if (materialFeatures & ML_FEATURE_ALPHA_TEST)
-            alphaTested_[pass] = RasterProgram("visibility.compute-raster" + suffix,
-                                               {{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "visibility.frag"}},
-                                               materialFeatures, RasterProgram::Reads::CoverageOnly, fragment);
+        if (materialFeatures & ML_FEATURE_ALPHA_TEST) {
+            shaders::Defines alpha = withDefine(defines, "ML_RASTER_ALPHA_TEST", "1");
+            alpha.insert(alpha.end(), features.begin(), features.end());
+            alphaSetup_[pass] = gl::Program::compute("compute_raster_triangles.comp", alpha);
+            alphaTiles_[pass] = gl::Program::compute("compute_raster_tiles.comp", alpha);
+            alphaHardwareList_[pass] = gl::Program("visibility.compute-raster.alpha-tested" + suffix,
+                                                   {{GL_VERTEX_SHADER, "compute_raster_hardware.vert"}, {GL_FRAGMENT_SHADER, "visibility.frag"}},
+                                                   withDefine(list, "ML_ALPHA_TEST", "1"));
+        }
     }
     bin_ = gl::Program::compute("compute_raster_bin.comp", rasterDefines(packed_, 0));
+    if (materialFeatures & ML_FEATURE_ALPHA_TEST)
+        alphaBin_ = gl::Program::compute("compute_raster_bin.comp", withDefine(rasterDefines(packed_, 0), "ML_RASTER_ALPHA_TEST", "1"));
     finish_ = gl::Program::compute("compute_raster_finish.comp", rasterDefines(packed_, 0));
     if (materialFeatures & ML_FEATURE_BLEND)
         depthCopy_ = gl::Program("visibility.compute-raster.depth-copy",
@@ -131,7 +139,6 @@ ComputeRaster::ComputeRaster(std::uint32_t materialFeatures, bool packedAtomics)
     GLuint vao = 0;
     glCreateVertexArrays(1, &vao);
     emptyVao_ = gl::Handle<gl::VertexArrayDeleter>(vao);
-    work_ = gl::Buffer("compute-raster.work", ML_RASTER_WORK_WORDS * sizeof(GLuint));
 }
 
 void ComputeRaster::prepare(const FrameContext& ctx) {
@@ -148,6 +155,9 @@ void ComputeRaster::prepare(const FrameContext& ctx) {
         const std::size_t tiles = std::size_t(gl::groupsFor(stamp_.width(), ML_RASTER_TILE)) * gl::groupsFor(stamp_.height(), ML_RASTER_TILE);
         pairCapacity_ = std::max<std::size_t>(64 * tiles, 1u << 16);
         pairs_ = gl::Buffer("compute-raster.pairs", pairCapacity_ * 8, nullptr, 0);
+        // The alpha-tested triangles' pairs: 16 layers (Sponza's foliage at 2560x1440 needs a few).
+        alphaPairCapacity_ = std::max<std::size_t>(16 * tiles, 1u << 16);
+        if (alphaBin_) alphaPairs_ = gl::Buffer("compute-raster.alpha-tested-pairs", alphaPairCapacity_ * 8, nullptr, 0);
     }
     if (ctx.scene.triangleCount() != sceneTriangles_) {
         sceneTriangles_ = ctx.scene.triangleCount();
@@ -156,8 +166,16 @@ void ComputeRaster::prepare(const FrameContext& ctx) {
         hardware_ = gl::Buffer("compute-raster.hardware", largeCapacity_ * 4, nullptr, 0);
         clipped_ = gl::Buffer("compute-raster.clipped", largeCapacity_ * 80, nullptr, 0);
     }
-    const GLuint initial[ML_RASTER_WORK_WORDS] = {0, 1, 0, 0, 0, 1, 1, 0, 1, 1, 0, 0, 0};
-    work_.upload(initial, sizeof initial);
+    // The counters, then each alpha-tested span's draw of its hardware list, which starts at the
+    // span's first triangle (the opaque list fills at most the opaque triangles' entries).
+    std::vector<GLuint> initial = {0, 1, 0, 0, 0, 1, 1, 0, 1, 1, 0, 0, 0, 0, 1, 1, 0, 1, 1, 0, 0};
+    static_assert(ML_RASTER_WORK_WORDS == 21);
+    for (const SceneGpu::TriangleSpan& span : ctx.scene.alphaTestedSpans()) initial.insert(initial.end(), {0, 1, 3 * span.first, 0});
+    if (initial.size() != workWords_ || !work_) {
+        workWords_ = initial.size();
+        work_ = gl::Buffer("compute-raster.work", workWords_ * sizeof(GLuint));
+    }
+    work_.upload(initial.data(), initial.size() * sizeof(GLuint));
 }
 
 void ComputeRaster::run(const FrameContext& ctx, const gl::Texture2D& ids) {
@@ -190,13 +208,17 @@ void ComputeRaster::finish(const FrameContext& ctx, const gl::Texture2D& ids) {
 void ComputeRaster::rasterPass(const FrameContext& ctx, int pass) {
     const GLuint opaque = static_cast<GLuint>(ctx.scene.opaqueTriangleCount());
     opaqueTriangles_ = opaque;
+    alphaTestedTriangles_ = 0;
+    for (const SceneGpu::TriangleSpan& span : ctx.scene.alphaTestedSpans()) alphaTestedTriangles_ += span.count;
     std::optional<PassTimer::Scope> timed;
     timed.emplace(ctx.timer, "visibility.raster-setup");
     gl::Program& setup = setup_[pass];
     setup.use();
+    setup.set("u_firstTriangle", 0u);
     setup.set("u_triangles", opaque);
     setup.set("u_cullBackFaces", ctx.scene.backfaceCulling() ? 1u : 0u);
     setup.set("u_largeCapacity", static_cast<GLuint>(largeCapacity_));
+    setup.set("u_largeFirst", 0u);
     setup.set("u_clipsToViewport", clipsToViewport_ ? 1u : 0u);
     glDispatchCompute(gl::groupsFor(opaque, ML_RASTER_WORKGROUP), 1, 1);
     glMemoryBarrier(kComputeToCompute | GL_COMMAND_BARRIER_BIT);
@@ -208,11 +230,13 @@ void ComputeRaster::rasterPass(const FrameContext& ctx, int pass) {
         bin_.use();
         bin_.set("u_largeCapacity", static_cast<GLuint>(largeCapacity_));
         bin_.set("u_pairCapacity", static_cast<GLuint>(pairCapacity_));
+        bin_.set("u_largeFirst", 0u);
         glDispatchComputeIndirect(ML_RASTER_WORK_BIN_DISPATCH * sizeof(GLuint));
         glMemoryBarrier(kComputeToCompute | GL_COMMAND_BARRIER_BIT);
     }
     tiles_[pass].use();
     tiles_[pass].set("u_pairCapacity", static_cast<GLuint>(pairCapacity_));
+    pairs_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_RASTER_PAIRS);
     glDispatchComputeIndirect(ML_RASTER_WORK_TILE_DISPATCH * sizeof(GLuint));
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
 
@@ -227,12 +251,86 @@ void ComputeRaster::rasterPass(const FrameContext& ctx, int pass) {
     glMemoryBarrier(kComputeToCompute);
     hardwareList_[pass].use();
     hardwareList_[pass].set("u_cullBackFaces", ctx.scene.backfaceCulling() ? 1u : 0u);
+    hardwareList_[pass].set("u_listFirst", 0u);
     glDisable(GL_CULL_FACE);
     glBindVertexArray(emptyVao_.id());
     glBindBuffer(GL_DRAW_INDIRECT_BUFFER, work_.id());
     glDrawArraysIndirect(GL_TRIANGLES, reinterpret_cast<const void*>(std::uintptr_t(ML_RASTER_WORK_HARDWARE_DRAW * sizeof(GLuint))));
     glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
-    if (alphaTested_[pass].variant(true) && ctx.scene.hasAlphaTestedRanges()) ctx.scene.draw(alphaTested_[pass], SceneGpu::Ranges::AlphaTested);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glDepthMask(GL_TRUE);
+    glMemoryBarrier(kComputeToCompute);
+    timed.reset();
+    if (alphaSetup_[pass] && !ctx.scene.alphaTestedSpans().empty()) alphaTestedPass(ctx, pass);
+}
+
+// After the opaque triangles, so that an alpha test is skipped where they are nearer. Each
+// texture set's span is set up with its textures bound; the large ones binned together into
+// their own pairs; each span's tiles, and its hardware list, with its textures again.
+void ComputeRaster::alphaTestedPass(const FrameContext& ctx, int pass) {
+    const auto& spans = ctx.scene.alphaTestedSpans();
+    const GLuint largeFirst = opaqueTriangles_;
+    {
+        auto timed = ctx.timer.pass("visibility.raster-alpha-setup");
+        gl::Program& setup = alphaSetup_[pass];
+        setup.use();
+        setup.set("u_cullBackFaces", ctx.scene.backfaceCulling() ? 1u : 0u);
+        setup.set("u_largeCapacity", static_cast<GLuint>(largeCapacity_));
+        setup.set("u_largeFirst", largeFirst);
+        setup.set("u_clipsToViewport", clipsToViewport_ ? 1u : 0u);
+        for (std::size_t i = 0; i < spans.size(); ++i) {
+            ctx.scene.bindTextureSet(spans[i].textureSet);
+            setup.set("u_firstTriangle", spans[i].first);
+            setup.set("u_triangles", spans[i].count);
+            setup.set("u_hardwareDraw", static_cast<GLuint>(ML_RASTER_WORK_WORDS + 4 * i));
+            glDispatchCompute(gl::groupsFor(spans[i].count, ML_RASTER_WORKGROUP), 1, 1);
+        }
+        glMemoryBarrier(kComputeToCompute | GL_COMMAND_BARRIER_BIT);
+    }
+    {
+        auto timed = ctx.timer.pass("visibility.raster-alpha-tiles");
+        alphaPairs_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_RASTER_PAIRS);
+        glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, work_.id());
+        if (pass == 0) {
+            alphaBin_.use();
+            alphaBin_.set("u_largeCapacity", static_cast<GLuint>(largeCapacity_));
+            alphaBin_.set("u_pairCapacity", static_cast<GLuint>(alphaPairCapacity_));
+            alphaBin_.set("u_largeFirst", largeFirst);
+            alphaBin_.set("u_spans", static_cast<GLuint>(spans.size()));
+            glDispatchComputeIndirect(ML_RASTER_WORK_ALPHA_BIN_DISPATCH * sizeof(GLuint));
+            glMemoryBarrier(kComputeToCompute | GL_COMMAND_BARRIER_BIT);
+        }
+        gl::Program& tiles = alphaTiles_[pass];
+        tiles.use();
+        tiles.set("u_pairCapacity", static_cast<GLuint>(alphaPairCapacity_));
+        for (const SceneGpu::TriangleSpan& span : spans) {
+            ctx.scene.bindTextureSet(span.textureSet);
+            tiles.set("u_firstTriangle", span.first);
+            tiles.set("u_triangles", span.count);
+            glDispatchComputeIndirect(ML_RASTER_WORK_ALPHA_TILE_DISPATCH * sizeof(GLuint));
+        }
+        glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
+        glMemoryBarrier(kComputeToCompute);
+    }
+    auto timed = ctx.timer.pass("visibility.raster-alpha-hardware");
+    depthFbo_.bind();
+    glViewport(0, 0, stamp_.width(), stamp_.height());
+    glDisable(GL_DEPTH_TEST);
+    glDepthMask(GL_FALSE);
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    glDisable(GL_CULL_FACE);
+    glBindVertexArray(emptyVao_.id());
+    gl::Program& list = alphaHardwareList_[pass];
+    list.use();
+    list.set("u_cullBackFaces", ctx.scene.backfaceCulling() ? 1u : 0u);
+    glBindBuffer(GL_DRAW_INDIRECT_BUFFER, work_.id());
+    for (std::size_t i = 0; i < spans.size(); ++i) {
+        ctx.scene.bindTextureSet(spans[i].textureSet);
+        list.set("u_listFirst", spans[i].first);
+        glDrawArraysIndirect(GL_TRIANGLES, reinterpret_cast<const void*>(std::uintptr_t((ML_RASTER_WORK_WORDS + 4 * i) * sizeof(GLuint))));
+    }
+    glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
+    ctx.scene.unbindSamplers();
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glDepthMask(GL_TRUE);
     glMemoryBarrier(kComputeToCompute);
@@ -259,10 +357,14 @@ void ComputeRaster::copyDepthUnderGlass(const FrameContext& ctx) {
 }
 
 ComputeRaster::Work ComputeRaster::lastWork() const {
-    GLuint words[ML_RASTER_WORK_WORDS] = {};
-    work_.download(words, sizeof words);
+    std::vector<GLuint> words(workWords_);
+    work_.download(words.data(), words.size() * sizeof(GLuint));
     Work w;
     w.opaqueTriangles = opaqueTriangles_;
+    w.alphaTested = alphaTestedTriangles_;
+    w.alphaLarge = words[ML_RASTER_WORK_ALPHA_LARGE_COUNT];
+    w.alphaTiles = std::min<std::uint32_t>(words[ML_RASTER_WORK_ALPHA_PAIR_COUNT], static_cast<std::uint32_t>(alphaPairCapacity_));
+    for (std::size_t at = ML_RASTER_WORK_WORDS; at < words.size(); at += 4) w.alphaHardware += words[at] / 3;
     w.large = std::min<std::uint32_t>(words[ML_RASTER_WORK_LARGE_COUNT], static_cast<std::uint32_t>(largeCapacity_));
     w.tiles = std::min<std::uint32_t>(words[ML_RASTER_WORK_PAIR_COUNT], static_cast<std::uint32_t>(pairCapacity_));
     w.hardware = words[ML_RASTER_WORK_HARDWARE_DRAW] / 3;

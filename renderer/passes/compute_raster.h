@@ -7,7 +7,9 @@
 //        │                         ──large──> binning ──> tile pass (a workgroup per triangle and 16x16 tile)
 //        └─ a vertex at or behind the eye plane ──> the tile pass, as homogeneous edge planes
 //           (on a GPU that clips at the viewport, as llvmpipe does: the hardware, into the same store)
-//   alpha-tested ranges ──> the hardware, into the same store
+//   alpha-tested ranges, a setup per texture set ──small──> rastered there, each pixel alpha-tested
+//        │                                        ──large──> their own binning and tile pass (per set)
+//        └─ across the eye plane or past the guard band ──> the hardware, per set, into the same store
 //   finish: the store ──> the id target (index + 1) and an R32F depth, the store reset
 //
 // Which pixels a triangle covers and at what depth follows the hardware's rules (snapped
@@ -25,6 +27,7 @@
 #include <cstdint>
 #include <string>
 
+#include "glsl/include/bindings.h"
 #include "renderer/frame_context.h"
 #include "renderer/frame_targets_stamp.h"
 #include "renderer/gl/buffer.h"
@@ -32,7 +35,6 @@
 #include "renderer/gl/program.h"
 #include "renderer/gl/texture.h"
 #include "renderer/methods/visibility_raster.h"
-#include "renderer/scene/raster_program.h"
 
 namespace ml {
 
@@ -67,12 +69,17 @@ public:
         std::uint32_t clipped = 0;   // to the tile pass as homogeneous planes (crossing the eye plane)
         std::uint32_t tiles = 0;     // (triangle, tile) pairs the tile pass ran
         std::uint32_t hardware = 0;  // to the hardware (clipped at the eye plane, or past the lists)
+        std::uint32_t alphaTested = 0;       // the alpha-tested triangles, of which
+        std::uint32_t alphaLarge = 0;        // to their tile pass
+        std::uint32_t alphaTiles = 0;        // (triangle, tile) pairs it ran
+        std::uint32_t alphaHardware = 0;     // to the hardware (across the eye plane, or past the lists)
     };
     Work lastWork() const;
 
 private:
     void prepare(const FrameContext& ctx);
     void rasterPass(const FrameContext& ctx, int pass);
+    void alphaTestedPass(const FrameContext& ctx, int pass);
     void finish(const FrameContext& ctx, const gl::Texture2D& ids);
     void copyDepthUnderGlass(const FrameContext& ctx);
 
@@ -81,15 +88,17 @@ private:
     bool clipsToViewport_;
     gl::Program setup_[2], tiles_[2], bin_, finish_, depthCopy_;
     gl::Program hardwareList_[2];
-    RasterProgram alphaTested_[2];
+    gl::Program alphaSetup_[2], alphaTiles_[2], alphaBin_, alphaHardwareList_[2];  // where the scene has alpha-tested materials
     gl::Handle<gl::VertexArrayDeleter> emptyVao_;
-    gl::Buffer store_, work_, large_, pairs_, hardware_, clipped_;
-    std::size_t largeCapacity_ = 0, pairCapacity_ = 0;
+    gl::Buffer store_, work_, large_, pairs_, alphaPairs_, hardware_, clipped_;
+    std::size_t largeCapacity_ = 0, pairCapacity_ = 0, alphaPairCapacity_ = 0;
     gl::Texture2D depth_;
     gl::Framebuffer depthFbo_;
     FrameTargetsStamp stamp_;
     std::size_t sceneTriangles_ = 0;
     std::uint32_t opaqueTriangles_ = 0;
+    std::uint32_t alphaTestedTriangles_ = 0;
+    std::size_t workWords_ = ML_RASTER_WORK_WORDS;  // and a draw command per alpha-tested span
 };
 
 }  // namespace ml

@@ -200,6 +200,10 @@ SceneGpu::SceneGpu(const Scene& scene, TriangleOrder order) : features_(ml::mate
             continue;
         }
         if (!g.alphaTested) opaqueTriangles_ += d.indexCount / 3;
+        else if (alphaTestedSpans_.empty() || alphaTestedSpans_.back().textureSet != g.textureSet)
+            alphaTestedSpans_.push_back({g.textureSet, d.firstIndex / 3, d.indexCount / 3});
+        else
+            alphaTestedSpans_.back().count += d.indexCount / 3;
         if (groups_.empty() || groups_.back().key() != g.key()) {
             groups_.push_back(g);
             groups_.back().firstRange = i;

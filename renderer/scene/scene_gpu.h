@@ -63,6 +63,15 @@ public:
     // Triangles of the ranges draw(Ranges::Opaque) draws: the index buffer's first ones, since
     // opaque ranges come first (the visibility buffer's compute raster reads them as one list).
     std::size_t opaqueTriangleCount() const { return opaqueTriangles_; }
+    // The alpha-tested triangles, one span per texture set (the index buffer holds each set's
+    // alpha-tested ranges together, after the opaque ones): what a compute pass that tests
+    // coverage binds its textures for (GL 4.5 has no bindless textures).
+    struct TriangleSpan {
+        int textureSet = -1;
+        std::uint32_t first = 0;  // triangle index
+        std::uint32_t count = 0;
+    };
+    const std::vector<TriangleSpan>& alphaTestedSpans() const { return alphaTestedSpans_; }
 
     // Transparent (glTF BLEND) draw ranges, drawn after the opaque frame by drawTransparent and by
     // nothing else. Off (--transparency off), the scene draws as if it had none.
@@ -171,6 +180,7 @@ private:
     std::vector<DrawRange> draws_;  // in group order, the transparent ranges last
     std::vector<DrawGroup> groups_;  // of the ranges that are not transparent
     std::vector<TransparentRange> transparent_;
+    std::vector<TriangleSpan> alphaTestedSpans_;
     bool transparency_ = true;
     gl::Buffer drawParams_;  // per draw range: material, first triangle (8 B)
     gl::Buffer commands_;    // DrawElementsIndirectCommand per draw range, in group order (20 B)
