@@ -74,5 +74,20 @@ TEST_F(ComputeRasterTest, TrianglesAcrossTheEyePlaneAreRasteredUnclipped) {
     EXPECT_LE(d.coverage, 320u * 180u / 2000u) << d.pixels << " pixels differ";
 }
 
+// The atrium's foliage is alpha-tested: rastered in compute by the setup where small and by the
+// alpha-tested tile pass where large, each pixel alpha-tested as the hardware raster's fragments
+// are, so the ids are the hardware's.
+TEST_F(ComputeRasterTest, AlphaTestedTrianglesAreRasteredInCompute) {
+    const TestScene t = testScene("atrium", 64, 7);
+    FrameRenderer renderer(t.scene, t.lights, smallFrame(t.scene, 640, 360));
+    const RasterResult hardware = visibilityRaster(renderer, VisibilityRaster::Hardware);
+    const RasterResult compute = visibilityRaster(renderer, VisibilityRaster::ComputeTwoPass);
+    const ComputeRaster::Work w = dynamic_cast<const VisibilityBuffer&>(renderer.method()).computeRaster()->lastWork();
+    EXPECT_GT(w.alphaLarge, 0u) << "no alpha-tested triangle reached the tile pass: the test tests it not";
+    EXPECT_GT(w.alphaTested, w.alphaLarge + w.alphaHardware) << "no alpha-tested triangle was small";
+    const IdDifference d = compareIds(hardware, compute, 640, "atrium foliage");
+    EXPECT_EQ(d.coverage, 0u) << d.pixels << " pixels differ";
+}
+
 }  // namespace
 }  // namespace ml::test

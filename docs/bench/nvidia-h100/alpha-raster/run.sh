@@ -1,0 +1,37 @@
+#!/usr/bin/env bash
+# Issue 30: alpha-tested triangles in the compute raster, on the H100 (nvidia-h100-x1). Carry .gl,
+# .corpus-sponza, and the builds, each packed as .devbin<suffix>.txz
+# (tools/pack-for-gpu; besides .devbin, the manylights binary alone, run with .devbin's libraries):
+#   .devbin      the change (manylights, ml_gpu_tests, ml_corpus_tests)
+#   .devbin-old  main before it (9a5f1ac): alpha-tested ranges drawn by the hardware into the store
+#   run.sh round <n>   targets.sweep.json with the builds in turn, old first (targets-old-<n>, targets-new-<n>)
+#   run.sh stats       --stats of one frame per scene and build: where the triangles went
+#   run.sh tests       every GPU test (gpu-tests.txt), and the corpus's compute-raster ids on Sponza
+set -u
+D=docs/bench/nvidia-h100/alpha-raster
+for b in .devbin*.txz; do [ -d ${b%.txz} ] || tar xJf $b; done
+export LD_LIBRARY_PATH=$PWD/.devbin/lib
+nvidia-smi --query-gpu=name,driver_version,clocks.sm,clocks.max.sm --format=csv > $OUT/gpu.txt
+case "$1" in
+round)
+  for build in -old ""; do
+    label=${build:--new}; label=${label#-}
+    timeout 280 .devbin$build/manylights bench --sweep $D/targets.sweep.json --backend egl --out $OUT --name targets-$label-$2 \
+      > $OUT/targets-$label-$2.log 2>&1
+  done ;;
+stats)
+  for build in -old ""; do
+    label=${build:--new}; label=${label#-}
+    for s in .corpus-sponza/corpus/amd/sponza/Sponza.gltf atrium; do
+      .devbin$build/manylights render --scene $s --method visibility --vis-raster compute --lights 65536 --size 2560x1440 \
+        --stats --backend egl --out $OUT/stats.png 2>&1 | grep -i "raster\|scene" >> $OUT/stats-$label.txt
+    done
+  done
+  rm -f $OUT/stats.png ;;
+tests)
+  mkdir -p /work/main/build-test /work/shared
+  ln -sf $PWD/.devbin/manylights /work/main/build-test/manylights
+  ln -sfn $PWD/.corpus-sponza/corpus /work/shared/corpus
+  timeout 400 .devbin/ml_gpu_tests 2>&1 | grep -v "^\[ RUN\|^\[--" > $OUT/gpu-tests.txt
+  timeout 150 .devbin/ml_corpus_tests --gtest_filter='*ComputeRasterGivesTheHardwareIds/Sponza_gltf' 2>&1 | tail -40 > $OUT/corpus-compute-raster.txt ;;
+esac
