@@ -1,11 +1,11 @@
 #version 450 core
 // The compute raster's first pass (renderer/passes/compute_raster.h): one invocation per opaque
 // triangle sets it up (clip, snap, cull) and rasters it itself where it is small, a pixel at a
-// time; larger ones go to the tile pass's list, and the few the compute raster cannot set up
-// (a vertex at or behind the eye plane, or past the guard band) to the hardware's list. In the
+// time; larger ones go to the tile pass's list, and the few the compute raster cannot snap
+// (a vertex at or behind the eye plane, or past the guard band) to the tile pass as homogeneous
+// planes (where the GPU clips at the viewport, as llvmpipe does: to the hardware's list). In the
 // id pass of two-pass atomics (ML_RASTER_PASS 1) the lists are already made: it rasters the
-// small ones again and appends nothing. A triangle that crosses the eye plane goes to the tile pass
-// as homogeneous edge planes (include/compute_raster.glsl, ClippedTriangle).
+// small ones again and appends nothing (include/compute_raster.glsl, ClippedTriangle: the planes).
 //
 // With ML_RASTER_ALPHA_TEST, one texture set's alpha-tested triangles (a dispatch per set, its
 // textures bound; include/compute_raster_coverage.glsl): each pixel the store would take tested
@@ -93,7 +93,8 @@ bool nearClippedTiles(vec4 c[3], out uvec2 tileLo, out uvec2 tileHi) {
     return true;
 }
 
-// A triangle with a vertex at or behind the eye plane, to the tile pass as homogeneous planes.
+// A triangle with a vertex at or behind the eye plane, or past the guard band, to the tile pass as
+// homogeneous planes.
 void toClipped(uint triangle, vec4 c0, vec4 c1, vec4 c2) {
 #if ML_RASTER_PASS == 0
     ClippedTriangle h;
@@ -138,7 +139,10 @@ void main() {
     vec3 z;
     rasterWindow(c0, c1, c2, s0, s1, s2, z);
     if (any(greaterThan(abs(vec4(s0, s1)), vec4(kGuardBand))) || any(greaterThan(abs(s2), vec2(kGuardBand)))) {
-        toHardware(triangle);
+        // Past the guard band (a floor that reaches far beside the eye): as homogeneous planes,
+        // which need no window position, where the GPU does not clip at the viewport.
+        if (u_clipsToViewport != 0u || ML_RASTER_ALPHA_TEST != 0) toHardware(triangle);
+        else toClipped(triangle, c0, c1, c2);
         return;
     }
     // Where the GPU clips at the viewport, the clipped triangle's edges run through re-snapped

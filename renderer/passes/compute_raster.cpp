@@ -205,11 +205,16 @@ void ComputeRaster::finish(const FrameContext& ctx, const gl::Texture2D& ids) {
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | kComputeToCompute);
 }
 
+// Each step runs the opaque triangles' work, then the alpha-tested triangles' (where the scene has
+// them), with no barrier between the two: they append to lists of their own and meet only in the
+// store's atomics, so the GPU overlaps them (an alpha test early in a frame may then miss an
+// opaque surface that would have hidden it, and test for nothing).
 void ComputeRaster::rasterPass(const FrameContext& ctx, int pass) {
     const GLuint opaque = static_cast<GLuint>(ctx.scene.opaqueTriangleCount());
     opaqueTriangles_ = opaque;
     alphaTestedTriangles_ = 0;
     for (const SceneGpu::TriangleSpan& span : ctx.scene.alphaTestedSpans()) alphaTestedTriangles_ += span.count;
+    const bool alphaTested = alphaSetup_[pass] && alphaTestedTriangles_ > 0;
     std::optional<PassTimer::Scope> timed;
     timed.emplace(ctx.timer, "visibility.raster-setup");
     gl::Program& setup = setup_[pass];
@@ -221,6 +226,7 @@ void ComputeRaster::rasterPass(const FrameContext& ctx, int pass) {
     setup.set("u_largeFirst", 0u);
     setup.set("u_clipsToViewport", clipsToViewport_ ? 1u : 0u);
     glDispatchCompute(gl::groupsFor(opaque, ML_RASTER_WORKGROUP), 1, 1);
+    if (alphaTested) setupAlphaTested(ctx, pass);
     glMemoryBarrier(kComputeToCompute | GL_COMMAND_BARRIER_BIT);
 
     timed.reset();
@@ -231,13 +237,16 @@ void ComputeRaster::rasterPass(const FrameContext& ctx, int pass) {
         bin_.set("u_largeCapacity", static_cast<GLuint>(largeCapacity_));
         bin_.set("u_pairCapacity", static_cast<GLuint>(pairCapacity_));
         bin_.set("u_largeFirst", 0u);
+        pairs_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_RASTER_PAIRS);
         glDispatchComputeIndirect(ML_RASTER_WORK_BIN_DISPATCH * sizeof(GLuint));
+        if (alphaTested) binAlphaTested(ctx);
         glMemoryBarrier(kComputeToCompute | GL_COMMAND_BARRIER_BIT);
     }
     tiles_[pass].use();
     tiles_[pass].set("u_pairCapacity", static_cast<GLuint>(pairCapacity_));
     pairs_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_RASTER_PAIRS);
     glDispatchComputeIndirect(ML_RASTER_WORK_TILE_DISPATCH * sizeof(GLuint));
+    if (alphaTested) tileAlphaTested(ctx, pass);
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
 
     // The hardware's share, into the same store: no depth test, no colour, no depth write.
@@ -256,84 +265,69 @@ void ComputeRaster::rasterPass(const FrameContext& ctx, int pass) {
     glBindVertexArray(emptyVao_.id());
     glBindBuffer(GL_DRAW_INDIRECT_BUFFER, work_.id());
     glDrawArraysIndirect(GL_TRIANGLES, reinterpret_cast<const void*>(std::uintptr_t(ML_RASTER_WORK_HARDWARE_DRAW * sizeof(GLuint))));
+    if (alphaTested) drawAlphaTestedOnHardware(ctx, pass);
     glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glDepthMask(GL_TRUE);
     glMemoryBarrier(kComputeToCompute);
-    timed.reset();
-    if (alphaSetup_[pass] && !ctx.scene.alphaTestedSpans().empty()) alphaTestedPass(ctx, pass);
 }
 
-// After the opaque triangles, so that an alpha test is skipped where they are nearer. Each
-// texture set's span is set up with its textures bound; the large ones binned together into
-// their own pairs; each span's tiles, and its hardware list, with its textures again.
-void ComputeRaster::alphaTestedPass(const FrameContext& ctx, int pass) {
+// The alpha-tested triangles, one span per texture set, each step with the span's textures bound
+// (the binning reads none): their large triangles follow the opaque ones in the large list, their
+// pairs have a buffer of their own, and their hardware lists a draw per span.
+void ComputeRaster::setupAlphaTested(const FrameContext& ctx, int pass) {
     const auto& spans = ctx.scene.alphaTestedSpans();
-    const GLuint largeFirst = opaqueTriangles_;
-    {
-        auto timed = ctx.timer.pass("visibility.raster-alpha-setup");
-        gl::Program& setup = alphaSetup_[pass];
-        setup.use();
-        setup.set("u_cullBackFaces", ctx.scene.backfaceCulling() ? 1u : 0u);
-        setup.set("u_largeCapacity", static_cast<GLuint>(largeCapacity_));
-        setup.set("u_largeFirst", largeFirst);
-        setup.set("u_clipsToViewport", clipsToViewport_ ? 1u : 0u);
-        for (std::size_t i = 0; i < spans.size(); ++i) {
-            ctx.scene.bindTextureSet(spans[i].textureSet);
-            setup.set("u_firstTriangle", spans[i].first);
-            setup.set("u_triangles", spans[i].count);
-            setup.set("u_hardwareDraw", static_cast<GLuint>(ML_RASTER_WORK_WORDS + 4 * i));
-            glDispatchCompute(gl::groupsFor(spans[i].count, ML_RASTER_WORKGROUP), 1, 1);
-        }
-        glMemoryBarrier(kComputeToCompute | GL_COMMAND_BARRIER_BIT);
+    gl::Program& setup = alphaSetup_[pass];
+    setup.use();
+    setup.set("u_cullBackFaces", ctx.scene.backfaceCulling() ? 1u : 0u);
+    setup.set("u_largeCapacity", static_cast<GLuint>(largeCapacity_));
+    setup.set("u_largeFirst", opaqueTriangles_);
+    setup.set("u_clipsToViewport", clipsToViewport_ ? 1u : 0u);
+    for (std::size_t i = 0; i < spans.size(); ++i) {
+        ctx.scene.bindTextureSet(spans[i].textureSet);
+        setup.set("u_firstTriangle", spans[i].first);
+        setup.set("u_triangles", spans[i].count);
+        setup.set("u_hardwareDraw", static_cast<GLuint>(ML_RASTER_WORK_WORDS + 4 * i));
+        glDispatchCompute(gl::groupsFor(spans[i].count, ML_RASTER_WORKGROUP), 1, 1);
     }
-    {
-        auto timed = ctx.timer.pass("visibility.raster-alpha-tiles");
-        alphaPairs_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_RASTER_PAIRS);
-        glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, work_.id());
-        if (pass == 0) {
-            alphaBin_.use();
-            alphaBin_.set("u_largeCapacity", static_cast<GLuint>(largeCapacity_));
-            alphaBin_.set("u_pairCapacity", static_cast<GLuint>(alphaPairCapacity_));
-            alphaBin_.set("u_largeFirst", largeFirst);
-            alphaBin_.set("u_spans", static_cast<GLuint>(spans.size()));
-            glDispatchComputeIndirect(ML_RASTER_WORK_ALPHA_BIN_DISPATCH * sizeof(GLuint));
-            glMemoryBarrier(kComputeToCompute | GL_COMMAND_BARRIER_BIT);
-        }
-        gl::Program& tiles = alphaTiles_[pass];
-        tiles.use();
-        tiles.set("u_pairCapacity", static_cast<GLuint>(alphaPairCapacity_));
-        for (const SceneGpu::TriangleSpan& span : spans) {
-            ctx.scene.bindTextureSet(span.textureSet);
-            tiles.set("u_firstTriangle", span.first);
-            tiles.set("u_triangles", span.count);
-            glDispatchComputeIndirect(ML_RASTER_WORK_ALPHA_TILE_DISPATCH * sizeof(GLuint));
-        }
-        glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
-        glMemoryBarrier(kComputeToCompute);
+    ctx.scene.unbindSamplers();
+}
+
+void ComputeRaster::binAlphaTested(const FrameContext& ctx) {
+    alphaBin_.use();
+    alphaBin_.set("u_largeCapacity", static_cast<GLuint>(largeCapacity_));
+    alphaBin_.set("u_pairCapacity", static_cast<GLuint>(alphaPairCapacity_));
+    alphaBin_.set("u_largeFirst", opaqueTriangles_);
+    alphaBin_.set("u_spans", static_cast<GLuint>(ctx.scene.alphaTestedSpans().size()));
+    alphaPairs_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_RASTER_PAIRS);
+    glDispatchComputeIndirect(ML_RASTER_WORK_ALPHA_BIN_DISPATCH * sizeof(GLuint));
+}
+
+void ComputeRaster::tileAlphaTested(const FrameContext& ctx, int pass) {
+    gl::Program& tiles = alphaTiles_[pass];
+    tiles.use();
+    tiles.set("u_pairCapacity", static_cast<GLuint>(alphaPairCapacity_));
+    alphaPairs_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_RASTER_PAIRS);
+    for (const SceneGpu::TriangleSpan& span : ctx.scene.alphaTestedSpans()) {
+        ctx.scene.bindTextureSet(span.textureSet);
+        tiles.set("u_firstTriangle", span.first);
+        tiles.set("u_triangles", span.count);
+        glDispatchComputeIndirect(ML_RASTER_WORK_ALPHA_TILE_DISPATCH * sizeof(GLuint));
     }
-    auto timed = ctx.timer.pass("visibility.raster-alpha-hardware");
-    depthFbo_.bind();
-    glViewport(0, 0, stamp_.width(), stamp_.height());
-    glDisable(GL_DEPTH_TEST);
-    glDepthMask(GL_FALSE);
-    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-    glDisable(GL_CULL_FACE);
-    glBindVertexArray(emptyVao_.id());
+    ctx.scene.unbindSamplers();
+}
+
+void ComputeRaster::drawAlphaTestedOnHardware(const FrameContext& ctx, int pass) {
+    const auto& spans = ctx.scene.alphaTestedSpans();
     gl::Program& list = alphaHardwareList_[pass];
     list.use();
     list.set("u_cullBackFaces", ctx.scene.backfaceCulling() ? 1u : 0u);
-    glBindBuffer(GL_DRAW_INDIRECT_BUFFER, work_.id());
     for (std::size_t i = 0; i < spans.size(); ++i) {
         ctx.scene.bindTextureSet(spans[i].textureSet);
         list.set("u_listFirst", spans[i].first);
         glDrawArraysIndirect(GL_TRIANGLES, reinterpret_cast<const void*>(std::uintptr_t((ML_RASTER_WORK_WORDS + 4 * i) * sizeof(GLuint))));
     }
-    glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
     ctx.scene.unbindSamplers();
-    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    glDepthMask(GL_TRUE);
-    glMemoryBarrier(kComputeToCompute);
 }
 
 void ComputeRaster::copyDepthUnderGlass(const FrameContext& ctx) {

@@ -5,7 +5,7 @@
 //
 //   setup (a thread per triangle) ──small──> rastered there, pixel by pixel
 //        │                         ──large──> binning ──> tile pass (a workgroup per triangle and 16x16 tile)
-//        └─ a vertex at or behind the eye plane ──> the tile pass, as homogeneous edge planes
+//        └─ a vertex at or behind the eye plane, or past the guard band ──> the tile pass, as homogeneous edge planes
 //           (on a GPU that clips at the viewport, as llvmpipe does: the hardware, into the same store)
 //   alpha-tested ranges, a setup per texture set ──small──> rastered there, each pixel alpha-tested
 //        │                                        ──large──> their own binning and tile pass (per set)
@@ -66,9 +66,9 @@ public:
     struct Work {
         std::uint32_t opaqueTriangles = 0;
         std::uint32_t large = 0;     // to the tile pass
-        std::uint32_t clipped = 0;   // to the tile pass as homogeneous planes (crossing the eye plane)
+        std::uint32_t clipped = 0;   // to the tile pass as homogeneous planes (crossing the eye plane, past the guard band)
         std::uint32_t tiles = 0;     // (triangle, tile) pairs the tile pass ran
-        std::uint32_t hardware = 0;  // to the hardware (clipped at the eye plane, or past the lists)
+        std::uint32_t hardware = 0;  // to the hardware (crossing the viewport where the GPU clips there, or past the lists)
         std::uint32_t alphaTested = 0;       // the alpha-tested triangles, of which
         std::uint32_t alphaLarge = 0;        // to their tile pass
         std::uint32_t alphaTiles = 0;        // (triangle, tile) pairs it ran
@@ -79,7 +79,10 @@ public:
 private:
     void prepare(const FrameContext& ctx);
     void rasterPass(const FrameContext& ctx, int pass);
-    void alphaTestedPass(const FrameContext& ctx, int pass);
+    void setupAlphaTested(const FrameContext& ctx, int pass);
+    void binAlphaTested(const FrameContext& ctx);
+    void tileAlphaTested(const FrameContext& ctx, int pass);
+    void drawAlphaTestedOnHardware(const FrameContext& ctx, int pass);
     void finish(const FrameContext& ctx, const gl::Texture2D& ids);
     void copyDepthUnderGlass(const FrameContext& ctx);
 

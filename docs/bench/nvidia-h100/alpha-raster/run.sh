@@ -2,9 +2,16 @@
 # Issue 30: alpha-tested triangles in the compute raster, on the H100 (nvidia-h100-x1). Carry .gl,
 # .corpus-sponza, and the builds, each packed as .devbin<suffix>.txz
 # (tools/pack-for-gpu; besides .devbin, the manylights binary alone, run with .devbin's libraries):
-#   .devbin      the change (manylights, ml_gpu_tests, ml_corpus_tests)
-#   .devbin-old  main before it (9a5f1ac): alpha-tested ranges drawn by the hardware into the store
-#   run.sh round <n>   targets.sweep.json with the builds in turn, old first (targets-old-<n>, targets-new-<n>)
+#   .devbin          the change (manylights, ml_gpu_tests, ml_corpus_tests): the overlap below,
+#                    and triangles past the guard band rastered as homogeneous planes
+#   .devbin-overlap  each step of the alpha-tested triangles dispatched right after the opaque
+#                    ones' same step (rounds 2-7)
+#   .devbin-seq      the change's first form (f8e7cda): the alpha-tested triangles' steps after
+#                    the opaque triangles' whole raster, behind barriers of their own (rounds 1-4)
+#   .devbin-old      main before it (9a5f1ac): alpha-tested ranges drawn by the hardware into the store
+#   run.sh warm                   a few seconds of frames, so that the SM clock has risen before a round
+#   run.sh round <n> <suffix>...  targets.sweep.json with each build in turn ("" is .devbin),
+#                                 named targets-<suffix, or new>-<n>
 #   run.sh stats       --stats of one frame per scene and build: where the triangles went
 #   run.sh tests       every GPU test (gpu-tests.txt), and the corpus's compute-raster ids on Sponza
 set -u
@@ -13,11 +20,16 @@ for b in .devbin*.txz; do [ -d ${b%.txz} ] || tar xJf $b; done
 export LD_LIBRARY_PATH=$PWD/.devbin/lib
 nvidia-smi --query-gpu=name,driver_version,clocks.sm,clocks.max.sm --format=csv > $OUT/gpu.txt
 case "$1" in
+warm)
+  timeout 60 .devbin/manylights bench --scene atrium --lights 1048576 --size 2560x1440 --warmup 5 --timed-frames 300 \
+    --backend egl --out $OUT/warm --name warm > /dev/null 2>&1
+  rm -rf $OUT/warm ;;
 round)
-  for build in -old ""; do
+  n=$2; shift 2
+  for build in "$@"; do
     label=${build:--new}; label=${label#-}
-    timeout 280 .devbin$build/manylights bench --sweep $D/targets.sweep.json --backend egl --out $OUT --name targets-$label-$2 \
-      > $OUT/targets-$label-$2.log 2>&1
+    timeout 280 .devbin$build/manylights bench --sweep $D/targets.sweep.json --backend egl --out $OUT --name targets-$label-$n \
+      > $OUT/targets-$label-$n.log 2>&1
   done ;;
 stats)
   for build in -old ""; do
