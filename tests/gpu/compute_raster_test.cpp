@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <optional>
+#include <string>
 
 #include <glm/glm.hpp>
 
@@ -59,19 +61,30 @@ TEST_F(ComputeRasterTest, EdgesThroughPixelCentresFollowTheFillRule) {
     }
 }
 
+// The atrium (64 lights, seed 7) from `pose` (its default view where none), rastered by the
+// hardware and by the compute raster's two-pass path, with where the compute raster sent its
+// triangles and how many pixels differ.
+struct AtriumRasters {
+    ComputeRaster::Work work;
+    IdDifference difference;
+};
+AtriumRasters atriumRasters(std::optional<CameraPose> pose, int width, int height, bool clipsToViewport, const std::string& label) {
+    const TestScene t = testScene("atrium", 64, 7);
+    FrameRenderer renderer(t.scene, t.lights, pose ? smallFrame(t.scene, *pose, width, height) : smallFrame(t.scene, width, height));
+    const RasterResult hardware = visibilityRaster(renderer, VisibilityRaster::Hardware);
+    const RasterResult compute = visibilityRaster(renderer, VisibilityRaster::ComputeTwoPass, clipsToViewport);
+    const ComputeRaster::Work work = dynamic_cast<const VisibilityBuffer&>(renderer.method()).computeRaster()->lastWork();
+    return {work, compareIds(hardware, compute, width, label)};
+}
+
 // With the viewport clipping llvmpipe does turned off, the triangles that cross the eye plane
 // are rastered unclipped, by homogeneous edge planes. A camera inside the atrium has them. The
 // hardware (llvmpipe) clips triangles that cross the viewport's sides, moving their edges by
 // up to half a sub-pixel step: a few silhouette pixels may differ, none in large numbers.
 TEST_F(ComputeRasterTest, TrianglesAcrossTheEyePlaneAreRasteredUnclipped) {
-    const TestScene t = testScene("atrium", 64, 7);
-    FrameRenderer renderer(t.scene, t.lights, smallFrame(t.scene, CameraPose{{-15.0f, 1.7f, -6.3f}, {15.0f, 1.7f, -6.3f}, 60.0f}, 320, 180));
-    const RasterResult hardware = visibilityRaster(renderer, VisibilityRaster::Hardware);
-    const RasterResult compute = visibilityRaster(renderer, VisibilityRaster::ComputeTwoPass, false);
-    const auto& method = dynamic_cast<const VisibilityBuffer&>(renderer.method());
-    EXPECT_GT(method.computeRaster()->lastWork().clipped, 0u) << "no triangle crossed the eye plane: the test tests nothing";
-    const IdDifference d = compareIds(hardware, compute, 320, "atrium inside");
-    EXPECT_LE(d.coverage, 320u * 180u / 2000u) << d.pixels << " pixels differ";
+    const AtriumRasters r = atriumRasters(CameraPose{{-15.0f, 1.7f, -6.3f}, {15.0f, 1.7f, -6.3f}, 60.0f}, 320, 180, false, "atrium inside");
+    EXPECT_GT(r.work.clipped, 0u) << "no triangle crossed the eye plane: the test tests nothing";
+    EXPECT_LE(r.difference.coverage, 320u * 180u / 2000u) << r.difference.pixels << " pixels differ";
 }
 
 // The atrium's floor, from its default camera, reaches so far beside the eye that its window
@@ -79,31 +92,20 @@ TEST_F(ComputeRasterTest, TrianglesAcrossTheEyePlaneAreRasteredUnclipped) {
 // rastered as homogeneous planes too, with the viewport clipping llvmpipe does turned off (the
 // silhouette pixels of triangles that cross the viewport's sides may differ, as above).
 TEST_F(ComputeRasterTest, TrianglesPastTheGuardBandAreRasteredAsPlanes) {
-    const TestScene t = testScene("atrium", 64, 7);
-    FrameRenderer renderer(t.scene, t.lights, smallFrame(t.scene, 640, 360));
-    const RasterResult hardware = visibilityRaster(renderer, VisibilityRaster::Hardware);
-    const RasterResult compute = visibilityRaster(renderer, VisibilityRaster::ComputeTwoPass, false);
-    const ComputeRaster::Work w = dynamic_cast<const VisibilityBuffer&>(renderer.method()).computeRaster()->lastWork();
-    std::printf("  %u as planes, %u to the hardware\n", w.clipped, w.hardware);
-    EXPECT_GT(w.clipped, 0u) << "no triangle went to the planes: the test tests nothing";
-    EXPECT_EQ(w.hardware, 0u);
-    const IdDifference d = compareIds(hardware, compute, 640, "atrium default");
-    EXPECT_LE(d.coverage, 640u * 360u / 2000u) << d.pixels << " pixels differ";
+    const AtriumRasters r = atriumRasters(std::nullopt, 640, 360, false, "atrium default");
+    EXPECT_GT(r.work.clipped, 0u) << "no triangle went to the planes: the test tests nothing";
+    EXPECT_EQ(r.work.hardware, 0u);
+    EXPECT_LE(r.difference.coverage, 640u * 360u / 2000u) << r.difference.pixels << " pixels differ";
 }
 
 // The atrium's foliage is alpha-tested: rastered in compute by the setup where small and by the
 // alpha-tested tile pass where large, each pixel alpha-tested as the hardware raster's fragments
 // are, so the ids are the hardware's.
 TEST_F(ComputeRasterTest, AlphaTestedTrianglesAreRasteredInCompute) {
-    const TestScene t = testScene("atrium", 64, 7);
-    FrameRenderer renderer(t.scene, t.lights, smallFrame(t.scene, 640, 360));
-    const RasterResult hardware = visibilityRaster(renderer, VisibilityRaster::Hardware);
-    const RasterResult compute = visibilityRaster(renderer, VisibilityRaster::ComputeTwoPass);
-    const ComputeRaster::Work w = dynamic_cast<const VisibilityBuffer&>(renderer.method()).computeRaster()->lastWork();
-    EXPECT_GT(w.alphaLarge, 0u) << "no alpha-tested triangle reached the tile pass: the test tests it not";
-    EXPECT_GT(w.alphaTested, w.alphaLarge + w.alphaHardware) << "no alpha-tested triangle was small";
-    const IdDifference d = compareIds(hardware, compute, 640, "atrium foliage");
-    EXPECT_EQ(d.coverage, 0u) << d.pixels << " pixels differ";
+    const AtriumRasters r = atriumRasters(std::nullopt, 640, 360, true, "atrium foliage");
+    EXPECT_GT(r.work.alphaLarge, 0u) << "no alpha-tested triangle reached the tile pass: the test tests it not";
+    EXPECT_GT(r.work.alphaTested, r.work.alphaLarge + r.work.alphaHardware) << "no alpha-tested triangle was small";
+    EXPECT_EQ(r.difference.coverage, 0u) << r.difference.pixels << " pixels differ";
 }
 
 }  // namespace

@@ -13,6 +13,7 @@
 #   run.sh round <n> <suffix>...  targets.sweep.json with each build in turn ("" is .devbin),
 #                                 named targets-<suffix, or new>-<n>
 #   run.sh stats       --stats of one frame per scene and build: where the triangles went
+#   run.sh headline    the README's results table's compute-raster row
 #   run.sh tests       every GPU test (gpu-tests.txt), and the corpus's compute-raster ids on Sponza
 set -u
 D=docs/bench/nvidia-h100/alpha-raster
@@ -40,6 +41,14 @@ stats)
     done
   done
   rm -f $OUT/stats.png ;;
+headline)
+  # The README's results table's compute-raster row (--preset scale, atrium-set); the other rows
+  # run nothing this change touches.
+  S='--preset scale --warmup 5 --timed-frames 30 --camera atrium-set --backend egl'
+  for n in 1024:1k 65536:64k 1048576:1m; do
+    .devbin/manylights bench $S --method visibility --vis-raster compute --lights ${n%:*} --out $OUT --name compute-${n#*:} \
+      > $OUT/compute-${n#*:}.log 2>&1
+  done ;;
 tests)
   mkdir -p /work/main/build-test /work/shared
   ln -sf $PWD/.devbin/manylights /work/main/build-test/manylights
