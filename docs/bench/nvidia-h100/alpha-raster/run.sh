@@ -9,11 +9,15 @@
 #   .devbin-seq      the change's first form (f8e7cda): the alpha-tested triangles' steps after
 #                    the opaque triangles' whole raster, behind barriers of their own (rounds 1-4)
 #   .devbin-old      main before it (9a5f1ac): alpha-tested ranges drawn by the hardware into the store
+#   .devbin-s128, .devbin-s256  the change with ML_RASTER_SMALL_PIXELS 128 and 256 instead of 64
+#                    (small-pixels.patch, shown at 256; rounds 8-9: round <n> "" -s128 -s256)
 #   run.sh warm                   a few seconds of frames, so that the SM clock has risen before a round
 #   run.sh round <n> <suffix>...  targets.sweep.json with each build in turn ("" is .devbin),
 #                                 named targets-<suffix, or new>-<n>
 #   run.sh stats       --stats of one frame per scene and build: where the triangles went
 #   run.sh headline    the README's results table's compute-raster row
+#   run.sh gas         the gas station's two cameras, before and after, twice (carry .corpus-gas)
+#   run.sh targets-4m  4,194,304 lights at 3840x2160 (list-sync's sweep), before and after, twice
 #   run.sh tests       every GPU test (gpu-tests.txt), and the corpus's compute-raster ids on Sponza
 set -u
 D=docs/bench/nvidia-h100/alpha-raster
@@ -31,6 +35,27 @@ round)
     label=${build:--new}; label=${label#-}
     timeout 280 .devbin$build/manylights bench --sweep $D/targets.sweep.json --backend egl --out $OUT --name targets-$label-$n \
       > $OUT/targets-$label-$n.log 2>&1
+  done ;;
+gas)
+  # gas.sweep.json with each build in turn, twice (carry .corpus-gas instead of .corpus-sponza)
+  for n in 1 2; do
+    for build in -old ""; do
+      label=${build:--new}; label=${label#-}
+      timeout 120 .devbin$build/manylights bench --sweep $D/gas.sweep.json --backend egl --out $OUT --name gas-$label-$n \
+        > $OUT/gas-$label-$n.log 2>&1
+    done
+  done
+  .devbin/manylights render --scene .corpus-gas/corpus/amd/gas_station/GasStation.gltf --camera gltf:0 --method visibility \
+    --vis-raster compute --lights 65536 --size 2560x1440 --stats --backend egl --out $OUT/stats.png 2>&1 | grep -i "raster" > $OUT/stats-gas.txt
+  rm -f $OUT/stats.png ;;
+targets-4m)
+  # issue 30's 4M target (list-sync's sweep), each build in turn, twice
+  for n in 1 2; do
+    for build in -old ""; do
+      label=${build:--new}; label=${label#-}
+      timeout 120 .devbin$build/manylights bench --sweep docs/bench/nvidia-h100/list-sync/targets-4m/targets-4m.sweep.json \
+        --backend egl --out $OUT --name targets-4m-$label-$n > $OUT/targets-4m-$label-$n.log 2>&1
+    done
   done ;;
 stats)
   for build in -old ""; do
