@@ -17,6 +17,7 @@
 #   run.sh stats       --stats of one frame per scene and build: where the triangles went
 #   run.sh headline    the README's results table's compute-raster row
 #   run.sh gas         the gas station's two cameras, before and after, twice (carry .corpus-gas)
+#   run.sh floors      raster-floors before and after, the atrium's and Sponza's cameras
 #   run.sh targets-4m  4,194,304 lights at 3840x2160 (list-sync's sweep), before and after, twice
 #   run.sh tests       every GPU test (gpu-tests.txt), and the corpus's compute-raster ids on Sponza
 set -u
@@ -56,6 +57,16 @@ targets-4m)
       timeout 120 .devbin$build/manylights bench --sweep docs/bench/nvidia-h100/list-sync/targets-4m/targets-4m.sweep.json \
         --backend egl --out $OUT --name targets-4m-$label-$n > $OUT/targets-4m-$label-$n.log 2>&1
     done
+  done ;;
+floors)
+  # raster-floors (the raster's probes, the compute raster and its steps) before and after: the
+  # atrium's camera set and Sponza's cameras at 2560x1440
+  for build in -old ""; do
+    label=${build:--new}; label=${label#-}
+    .devbin$build/manylights raster-floors --scene atrium --camera atrium-set --size 2560x1440 --backend egl \
+      --csv $OUT/floors-atrium-$label.csv > /dev/null 2>&1
+    .devbin$build/manylights raster-floors --scene .corpus-sponza/corpus/amd/sponza/Sponza.gltf --camera 'gltf:0;gltf:1;gltf:2;gltf:3' \
+      --size 2560x1440 --backend egl --csv $OUT/floors-sponza-$label.csv > /dev/null 2>&1
   done ;;
 stats)
   for build in -old ""; do
