@@ -1,8 +1,9 @@
 #version 450 core
 // The compute raster's hardware lists (renderer/passes/compute_raster.h): the triangles it leaves
-// to the hardware (clipped at the eye plane; alpha-tested ones too large to raster a thread
-// each), drawn as non-indexed lists that pull each triangle's vertices: the opaque list from
-// entry 0, each alpha-tested span's from u_listFirst. Outputs what scene.vert gives
+// to the hardware (where the GPU clips at the viewport, those that cross a side, the eye plane or
+// the guard band; the alpha-tested ones across the eye plane or past the guard band; any past
+// the lists' capacity), drawn as non-indexed lists that pull each triangle's vertices: the opaque
+// list from entry 0, each alpha-tested span's from u_listFirst. Outputs what scene.vert gives
 // visibility.frag, the triangle recovered as v_firstTriangle + gl_PrimitiveID.
 #include "include/bindings.h"
 #include "include/frame_uniforms.glsl"

@@ -11,10 +11,11 @@
 // imageAtomicMax. The alpha-tested variant (ML_ALPHA_TEST) discards uncovered fragments, which
 // needs the late depth test, so it writes its id as a colour output; those ranges are drawn last.
 //
-// Compute raster (ML_COMPUTE_RASTER, renderer/passes/compute_raster.h): the triangles the
-// hardware still rasters there (alpha-tested ranges, and ML_RASTER_HARDWARE_LIST: those clipped
-// at the eye plane) store depth and id into the compute raster's per-pixel store, with no depth
-// buffer: nearest depth, then smallest id, wins (include/compute_raster.glsl).
+// Compute raster (ML_COMPUTE_RASTER, renderer/passes/compute_raster.h): the triangles it leaves
+// to the hardware (its lists, compute_raster_hardware.vert: those the GPU clips where the compute
+// raster cannot follow, or past its lists; with ML_ALPHA_TEST one texture set's alpha-tested
+// ones) store depth and id into the compute raster's per-pixel store, with no depth buffer:
+// nearest depth, then smallest id, wins (include/compute_raster.glsl).
 #if ML_COMPUTE_RASTER
 #extension GL_ARB_gpu_shader_int64 : require
 #if ML_RASTER_ATOMIC64
@@ -30,9 +31,7 @@
 #if ML_COMPUTE_RASTER
 #include "include/window_depth.glsl"
 #include "include/compute_raster.glsl"
-#if ML_RASTER_HARDWARE_LIST
 uniform uint u_cullBackFaces;
-#endif
 #elif ML_ALPHA_TEST
 layout(location = 0) out uint o_triangle;
 #else
@@ -42,10 +41,8 @@ layout(binding = ML_IMG_VISIBILITY_IDS, r32ui) uniform coherent uimage2D u_ids;
 
 void main() {
 #if ML_COMPUTE_RASTER
-#if ML_RASTER_HARDWARE_LIST
-    // Drawn without GL's culling, since the list mixes sidedness: culled here, as a raster pass would.
+    // Drawn without GL's culling, since a list mixes sidedness: culled here, as a raster pass would.
     if (u_cullBackFaces != 0u && !gl_FrontFacing && (materials[v_materialIndex].info.w & ML_MATERIAL_DOUBLE_SIDED) == 0u) discard;
-#endif
     // The compute-rastered surfaces are in the store already: a fragment behind them needs no
     // alpha test (a manual early depth test; there is no depth buffer).
     if (rasterHidden(ivec2(gl_FragCoord.xy), gl_FragCoord.z)) discard;

@@ -112,8 +112,7 @@ ComputeRaster::ComputeRaster(std::uint32_t materialFeatures, bool packedAtomics)
         const std::string suffix = passes_ == 1 ? "" : (pass == 0 ? ".depth" : ".ids");
         setup_[pass] = gl::Program::compute("compute_raster_triangles.comp", defines);
         tiles_[pass] = gl::Program::compute("compute_raster_tiles.comp", defines);
-        const shaders::Defines fragment = withDefine(defines, "ML_COMPUTE_RASTER", "1");
-        shaders::Defines list = withDefine(fragment, "ML_RASTER_HARDWARE_LIST", "1");
+        shaders::Defines list = withDefine(defines, "ML_COMPUTE_RASTER", "1");
         const shaders::Defines features = materialFeatureDefines(materialFeatures);
         list.insert(list.end(), features.begin(), features.end());
         hardwareList_[pass] = gl::Program("visibility.compute-raster.hardware" + suffix,

@@ -265,10 +265,6 @@ void SceneGpu::drawGroups(std::size_t first, std::size_t end) const {
     }
 }
 
-bool SceneGpu::hasAlphaTestedRanges() const {
-    return std::any_of(groups_.begin(), groups_.end(), [](const DrawGroup& g) { return g.alphaTested; });
-}
-
 void SceneGpu::bindDrawState() const {
     glBindVertexArray(vao_.id());
     bindGeometryStorage();  // fragments rebuild their texture coordinates from their triangle

@@ -59,7 +59,7 @@ public:
     // test for the opaque ones, which a discard would break).
     enum class Ranges { All, Opaque, AlphaTested };
     void draw(const RasterProgram& program, Ranges which = Ranges::All) const;
-    bool hasAlphaTestedRanges() const;
+    bool hasAlphaTestedRanges() const { return !alphaTestedSpans_.empty(); }
     // Triangles of the ranges draw(Ranges::Opaque) draws: the index buffer's first ones, since
     // opaque ranges come first (the visibility buffer's compute raster reads them as one list).
     std::size_t opaqueTriangleCount() const { return opaqueTriangles_; }
