@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The glass split by layer over several workgroups a tile (layers.patch on main at 747f713, also branch
+# The glass split by layer over several workgroups a tile (the first commit of branch glass-layers on main at 747f713;
 # glass-layers): the gas station before and with ML_GLASS_LAYERS=1..4, twice, and the atrium at
 # 1,048,576 lights before and with 2, in one command. Carry .gl, .devbin.txz (that build),
 # .devbin-old.txz (747f713) and .corpus-gas.
