@@ -14,6 +14,16 @@
 // sorts, shades and blends, and no colour is stored. With more, the first dispatch sorts,
 // each stores the colours of its set's fragments, and the last blends them.
 //
+// Deep tiles (list rounds, one texture set; u_deepFragments > 0): a workgroup's time is its
+// longest chain of list rounds, and a tile whose pixels hold fragments at many depths serves one
+// round per list of every depth, each by the few invocations it lights; on an H100 such tiles
+// made the gas station's glass as slow as its whole opaque lighting at a sixth of its work
+// (docs/bench/nvidia-h100/cooperative-rounds/). So the first dispatch (kShadeTiles) sorts every
+// tile but shades only those without a pixel of u_deepFragments fragments, and lists the others;
+// kShadeDeepParts shades each listed tile in gl_NumWorkGroups.z workgroups, each a contiguous
+// part of every pixel's sorted fragments, storing their colours; kBlendDeep blends them back to
+// front. The colours and the order are those of one dispatch, so the bits are too.
+//
 // Order: nearest first by depth, equal depths by triangle id, so every method (and naive)
 // blends the same fragments in the same order, intersecting and interleaved panes included.
 #include "include/bindings.h"
@@ -55,6 +65,13 @@ uniform int u_textureSet;
 uniform uint u_sorts;        // 1: the first dispatch, which sorts each pixel's fragments in place
 uniform uint u_blends;       // 1: the last dispatch, which blends them over the frame
 uniform uint u_storesColors; // 1: more than one dispatch; colours go through the buffer
+#if ML_GLASS_LIST_ROUNDS
+const uint kShadeTiles = 0u, kShadeDeepParts = 1u, kBlendDeep = 2u;
+uniform uint u_step;           // kShadeTiles, or one of the deep tiles' two dispatches
+uniform uint u_deepFragments;  // kShadeTiles: a pixel of this many fragments makes its tile deep (0: none is)
+uniform uint u_deepBase;       // the deep tiles' words in glassWords (ML_GLASS_DEEP_*)
+shared bool s_deep;
+#endif
 
 uvec2 fragmentAt(uint k) { return uvec2(glassWords[2u * k], glassWords[2u * k + 1u]); }
 void storeFragment(uint k, uvec2 f) {
@@ -117,6 +134,47 @@ bool nextFragment(uint begin, inout uint k) {
     return false;
 }
 
+// This workgroup's tile: its own (kShadeTiles) or a listed deep one; false for a deep
+// dispatch's last row past the list's end.
+bool workgroupTile(out ivec2 tile) {
+    tile = ivec2(gl_WorkGroupID.xy);
+    if (u_step == kShadeTiles) return true;
+    uint listed = gl_WorkGroupID.y * uint(ML_GLASS_DEEP_ROW) + gl_WorkGroupID.x;
+    if (listed >= glassWords[u_deepBase + ML_GLASS_DEEP_COUNT]) return false;
+    uint t = glassWords[u_deepBase + ML_GLASS_DEEP_TILES + listed];
+    tile = ivec2(t & 0xFFFFu, t >> 16);
+    return true;
+}
+
+// kShadeTiles with u_deepFragments: whether a pixel of the tile holds that many fragments; if
+// so the tile is listed for the deep dispatches. Every invocation calls it alike (barriers).
+bool listedAsDeep(ivec2 tile, uint fragments) {
+    if (gl_LocalInvocationIndex == 0u) s_deep = false;
+    barrier();
+    if (fragments >= u_deepFragments) s_deep = true;
+    barrier();
+    if (s_deep && gl_LocalInvocationIndex == 0u) {
+        uint listed = atomicAdd(glassWords[u_deepBase + ML_GLASS_DEEP_COUNT], 1u);
+        glassWords[u_deepBase + ML_GLASS_DEEP_TILES + listed] = uint(tile.x) | (uint(tile.y) << 16);
+        // Both dispatches grow to hold it: full rows of ML_GLASS_DEEP_ROW, then the last.
+        uint perRow = min(listed + 1u, uint(ML_GLASS_DEEP_ROW)), rows = listed / uint(ML_GLASS_DEEP_ROW) + 1u;
+        for (uint d = 0u; d < 2u; ++d) {
+            uint dispatch = u_deepBase + (d == 0u ? uint(ML_GLASS_DEEP_PARTS_DISPATCH) : uint(ML_GLASS_DEEP_BLEND_DISPATCH));
+            atomicMax(glassWords[dispatch], perRow);
+            atomicMax(glassWords[dispatch + 1u], rows);
+        }
+    }
+    return s_deep;
+}
+
+// kShadeDeepParts: this workgroup's contiguous part (gl_WorkGroupID.z of gl_NumWorkGroups.z)
+// of the pixel's sorted fragments.
+void takePart(inout uint begin, inout uint end) {
+    uint n = end - begin, part = gl_WorkGroupID.z, parts = gl_NumWorkGroups.z;
+    end = begin + n * (part + 1u) / parts;
+    begin = begin + n * part / parts;
+}
+
 // Fragment k's surface, view direction and alpha, and the list it waits for.
 uint beginFragment(uint k, ivec2 p, out SurfacePoint s, out vec3 viewDir, out float alpha) {
     uint triangle = fragmentAt(k).y;
@@ -128,9 +186,11 @@ uint beginFragment(uint k, ivec2 p, out SurfacePoint s, out vec3 viewDir, out fl
 #endif
 
 void main() {
-    ivec2 p = ivec2(gl_GlobalInvocationID.xy);
-    bool inside = all(lessThan(p, ivec2(u_viewport.xy)));
 #if ML_GLASS_LIST_ROUNDS
+    ivec2 tile;
+    if (!workgroupTile(tile)) return;  // the whole workgroup: no barrier is left waiting
+    ivec2 p = tile * ML_SCREEN_TILE + ivec2(gl_LocalInvocationID.xy);
+    bool inside = all(lessThan(p, ivec2(u_viewport.xy)));
     // Every invocation takes part in every round (they hold barriers), with fragments or not.
     uint begin = 0u, end = 0u;
     if (inside) {
@@ -139,10 +199,12 @@ void main() {
         begin = pixel == 0u ? 0u : glassEnds[pixel - 1u];
         if (begin != end && u_sorts != 0u) sortFragments(begin, end);
     }
+    if (u_deepFragments != 0u && listedAsDeep(tile, end - begin)) return;
+    if (u_step == kShadeDeepParts) takePart(begin, end);
     vec4 frame = begin != end ? imageLoad(u_hdr, p) : vec4(0.0);
     vec3 color = frame.rgb;
     uint k = end;
-    bool shading = nextFragment(begin, k);
+    bool shading = u_step != kBlendDeep && nextFragment(begin, k);
     SurfacePoint s;
     vec3 viewDir = vec3(0.0);
     float alpha = 0.0;
@@ -165,7 +227,8 @@ void main() {
     }
     imageStore(u_hdr, p, vec4(color, frame.a));
 #else
-    if (!inside) return;
+    ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+    if (any(greaterThanEqual(p, ivec2(u_viewport.xy)))) return;
     uint pixel = uint(p.y) * uint(u_viewport.x) + uint(p.x);
     uint end = glassEnds[pixel];
     uint begin = pixel == 0u ? 0u : glassEnds[pixel - 1u];

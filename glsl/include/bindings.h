@@ -46,7 +46,14 @@
 // The transparent pass's captured fragments (renderer/passes/glass_fragments.h), on the exact
 // assignment's points: the capture and its shading run after the lists are built.
 #define ML_SSBO_GLASS_PIXELS 16        // per pixel: its fragment count, then (scanned, filled) where its fragments end
-#define ML_SSBO_GLASS_FRAGMENTS 17     // per fragment: depth bits, triangle id; then, glass of more than one texture set, its colour
+#define ML_SSBO_GLASS_FRAGMENTS 17     // per fragment: depth bits, triangle id; then, where colours are stored, its colour; then the deep tiles
+// The glass shading's deep tiles (glsl/glass_shade.comp): words of the fragment buffer after the
+// colours, as llvmpipe offers a compute shader no block to spare.
+#define ML_GLASS_DEEP_PARTS_DISPATCH 0  // the parts' indirect dispatch: tiles per row, rows, parts (words 0-2)
+#define ML_GLASS_DEEP_BLEND_DISPATCH 3  // the blend's: tiles per row, rows, 1 (words 3-5)
+#define ML_GLASS_DEEP_COUNT 6           // tiles listed
+#define ML_GLASS_DEEP_TILES 7           // then the tiles, x | y << 16
+#define ML_GLASS_DEEP_ROW 65535         // tiles per dispatch row: GL's least maximum work-group count
 // The visibility buffer's compute raster (renderer/passes/compute_raster.h), before anything else
 // of the frame binds these points.
 #define ML_SSBO_RASTER_DEPTH_IDS 16    // per pixel: nearest depth and triangle (one 64-bit word, or two 32-bit arrays)

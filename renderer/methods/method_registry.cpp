@@ -64,7 +64,7 @@ std::unique_ptr<ShadingMethod> createMethod(const MethodSettings& settings, std:
     checkLightSumSupported(settings.clustering.lightSum);
     if (const char* refusal = msaaRefusal(settings.kind); refusal && settings.msaa > 1)
         throw std::invalid_argument("--msaa " + std::to_string(settings.msaa) + ": " + refusal);
-    const TransparencySettings transparency{settings.msaa, settings.transparentCaptureBudget};
+    const TransparencySettings transparency{settings.msaa, settings.transparentCaptureBudget, settings.glassLayerGroups};
     switch (settings.kind) {
     case MethodKind::Naive: return std::make_unique<NaiveForward>(materialFeatures, settings.clustering, transparency);
     case MethodKind::ForwardPlus: {

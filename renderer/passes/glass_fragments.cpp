@@ -37,8 +37,8 @@ GlassFragments::GlassFragments(std::string timerName, std::uint32_t materialFeat
     }
 }
 
-void GlassFragments::count(const FrameContext& ctx, bool withColors) {
-    withColors_ = withColors;
+void GlassFragments::count(const FrameContext& ctx, GlassColors colors) {
+    colors_ = colors;
     pixelCount_ = std::uint32_t(ctx.targets.width()) * std::uint32_t(ctx.targets.height());
     // Padded to whole groups of four counts, which the clear writes as one uvec4.
     pixels_.ensure((std::size_t(pixelCount_) + 3) / 4 * 16);
@@ -71,17 +71,29 @@ void GlassFragments::fill(const FrameContext& ctx) {
     auto pass = ctx.timer.pass(timerName_ + "-fill");
     const std::uint32_t total = *total_.read();
     fragments_ = total;
-    const std::size_t perFragment = kBytesPerFragment + (withColors_ ? kColorBytesPerFragment : 0);
+    const std::size_t perFragment = kBytesPerFragment + (colors_ == GlassColors::Always ? kColorBytesPerFragment : 0);
     const std::uint64_t need = std::uint64_t(total) * perFragment;
     if (need > budget_)
         throw std::runtime_error("the transparent surfaces cover " + std::to_string(ctx.targets.width()) + "x" +
                                  std::to_string(ctx.targets.height()) + " pixels with " + std::to_string(total) + " fragments x " +
                                  std::to_string(perFragment) + " B = " + byteSize(need) + ", more than the capture's " + byteSize(budget_) +
                                  " (at most one storage buffer); lower the resolution or --transparency off");
-    // The colours (16 B each) after the fragments, from a 16-byte boundary.
+    // The colours (16 B each) after the fragments, from a 16-byte boundary; the deep tiles'
+    // list (a word per screen tile and its header) after them.
     const std::size_t fragmentBytes = (std::size_t(total) * kBytesPerFragment + 15) / 16 * 16;
+    const std::size_t colorBytes = std::size_t(total) * kColorBytesPerFragment;
+    const std::size_t tiles = std::size_t(gl::groupsFor(ctx.targets.width(), ML_SCREEN_TILE)) * gl::groupsFor(ctx.targets.height(), ML_SCREEN_TILE);
+    const std::size_t deepTileBytes = (ML_GLASS_DEEP_TILES + tiles) * 4;
     colorWordOffset_ = static_cast<std::uint32_t>(fragmentBytes / 4);
-    fragmentStore_.ensure(std::max<std::size_t>(fragmentBytes + (withColors_ ? std::size_t(total) * kColorBytesPerFragment : 0), 16));
+    deepTileWordOffset_ = 0;
+    std::size_t bytes = fragmentBytes;
+    if (colors_ == GlassColors::Always) {
+        bytes += colorBytes;
+    } else if (colors_ == GlassColors::WhereRoom && fragmentBytes + colorBytes + deepTileBytes <= budget_) {
+        deepTileWordOffset_ = static_cast<std::uint32_t>((fragmentBytes + colorBytes) / 4);
+        bytes += colorBytes + deepTileBytes;
+    }
+    fragmentStore_.ensure(std::max<std::size_t>(bytes, 16));
     pixels_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_GLASS_PIXELS);
     fragmentStore_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_GLASS_FRAGMENTS);
     fill_.variant(false).use();

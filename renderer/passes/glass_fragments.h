@@ -14,7 +14,8 @@
 // Memory: 4 B per pixel (14.1 MiB at 2560x1440, 31.6 MiB at 3840x2160) and 8 B per fragment
 // (the depth, to sort by, and the triangle, to rebuild the surface from); where the glass spans
 // more than one texture set, 16 B more per fragment for its shaded colour (the shading runs
-// once per set, the blend after the last). The worst case is every pixel covered by every
+// once per set, the blend after the last), and where the shading splits deep tiles
+// (TransparentPass) the same, and a word per screen tile, if they fit. The worst case is every pixel covered by every
 // transparent triangle; a frame whose fragments do not fit one storage buffer is refused in one
 // line that names them. Both rasters run a fragment shader of one atomic: no shading, no colour
 // writes (H100, atrium, 2560x1440: 0.01-0.03 ms each; the scan 0.07 ms).
@@ -32,6 +33,14 @@
 
 namespace ml {
 
+// Whether the fragment buffer keeps a colour per fragment after the fragments.
+enum class GlassColors {
+    None,      // one dispatch shades and blends
+    Always,    // glass of several texture sets: a dispatch per set, blended after the last
+    WhereRoom, // for the deep tiles' split (TransparentPass), with their list after the colours,
+               // where both fit the budget with the fragments; else none and no split
+};
+
 class GlassFragments {
 public:
     static constexpr std::size_t kBytesPerPixel = 4;
@@ -45,15 +54,20 @@ public:
 
     // The capture in two halves, so that a method can put work between them and the CPU never
     // waits on the GPU for the total: count() as soon as the opaque depth is final, fill()
-    // before the shading. withColors: keep room for a colour per fragment. fill() throws
-    // std::runtime_error, naming the numbers, when the fragments do not fit the budget.
-    void count(const FrameContext& ctx, bool withColors);
+    // before the shading. fill() throws std::runtime_error, naming the numbers, when the
+    // fragments (with GlassColors::Always, and their colours) do not fit the budget.
+    void count(const FrameContext& ctx, GlassColors colors);
     void fill(const FrameContext& ctx);
     bool counted() const { return total_.fenced(); }
     // Binds the pixels and the fragments (with colours after them) at their ML_SSBO_GLASS_* points.
     void bindForShading() const;
     // Where the colours start in the fragment buffer, in 4-byte words (after the last fragment).
     std::uint32_t colorWordOffset() const { return colorWordOffset_; }
+    // After fill() with GlassColors::WhereRoom: whether the colours and the deep tiles' list fit,
+    // and where the list starts (words; ML_GLASS_DEEP_* in bindings.h).
+    bool hasDeepTileList() const { return deepTileWordOffset_ != 0; }
+    std::uint32_t deepTileWordOffset() const { return deepTileWordOffset_; }
+    const gl::Buffer& fragmentBuffer() const { return fragmentStore_.buffer(); }
 
     std::uint64_t fragmentCount() const { return fragments_; }  // of the last capture
     // Bytes the capture's buffers hold now.
@@ -69,12 +83,13 @@ private:
     PrefixSum scan_;
     gl::MappedWords total_;  // the scan's total, fenced after count()'s scan until fill() reads it
     std::uint32_t pixelCount_ = 0;
-    bool withColors_ = false;
+    GlassColors colors_ = GlassColors::None;
     std::size_t budget_ = 0;
     std::uint64_t fragments_ = 0;
     gl::GrowableBuffer pixels_{"transparent.pixels"};
     gl::GrowableBuffer fragmentStore_{"transparent.fragments"};
     std::uint32_t colorWordOffset_ = 0;
+    std::uint32_t deepTileWordOffset_ = 0;
 };
 
 }  // namespace ml

@@ -9,8 +9,15 @@
 
 namespace ml {
 
+namespace {
+// The shading's workgroups: one per screen tile.
+glm::uvec2 screenTiles(const FrameContext& ctx) {
+    return {gl::groupsFor(ctx.targets.width(), ML_SCREEN_TILE), gl::groupsFor(ctx.targets.height(), ML_SCREEN_TILE)};
+}
+}  // namespace
+
 TransparentPass::TransparentPass(std::string timerName, std::uint32_t materialFeatures, const TransparencySettings& transparency,
-                                 const char* forwardShader, const shaders::Defines& defines)
+                                 const char* forwardShader, const shaders::Defines& defines, bool listRounds)
     : timerName_(std::move(timerName)) {
     if (!(materialFeatures & ML_FEATURE_BLEND)) return;
     const bool allLights = forwardShader == std::string("naive_forward.frag");
@@ -23,6 +30,9 @@ TransparentPass::TransparentPass(std::string timerName, std::uint32_t materialFe
         return;
     }
     capture_ = std::make_unique<GlassFragments>(timerName_, materialFeatures, transparency.captureBudget);
+    // List rounds (glass_shade.comp's ML_GLASS_LIST_ROUNDS: per-cluster lists) hold a workgroup
+    // to its longest chain of rounds; their shading splits deep tiles.
+    if (listRounds && transparency.layerGroups > 1) layerGroups_ = transparency.layerGroups;
     shaders::Defines shadeDefines = defines;
     shadeDefines.emplace_back("ML_GLASS_ALL_LIGHTS", allLights ? "1" : "0");
     // BLEND ignores alphaCutoff: no alpha-tested paths.
@@ -33,19 +43,21 @@ TransparentPass::TransparentPass(std::string timerName, std::uint32_t materialFe
 
 TransparentPass TransparentPass::overAllLights(std::string timerName, std::uint32_t materialFeatures, const ClusteringSettings& lights,
                                                const TransparencySettings& transparency) {
-    return TransparentPass(std::move(timerName), materialFeatures, transparency, "naive_forward.frag", lightShadingDefines(lights));
+    return TransparentPass(std::move(timerName), materialFeatures, transparency, "naive_forward.frag", lightShadingDefines(lights), false);
 }
 
 TransparentPass TransparentPass::overClusterLists(std::string timerName, std::uint32_t materialFeatures,
                                                   const ClusteringSettings& settings, const TransparencySettings& transparency) {
-    return TransparentPass(std::move(timerName), materialFeatures, transparency, "forward_plus.frag", lightListDefines(settings));
+    return TransparentPass(std::move(timerName), materialFeatures, transparency, "forward_plus.frag", lightListDefines(settings),
+                           settings.assign != AssignMode::ZBin);
 }
 
 void TransparentPass::countFragments(const FrameContext& ctx, DebugView view) {
     if (!capture_ || !ctx.scene.hasTransparent() || view != DebugView::Shaded) return;
     // The opaque depth may have come from compute passes' image stores.
     glMemoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT);
-    capture_->count(ctx, ctx.scene.transparentTextureSets().size() > 1);
+    const bool severalSets = ctx.scene.transparentTextureSets().size() > 1;
+    capture_->count(ctx, severalSets ? GlassColors::Always : layerGroups_ ? GlassColors::WhereRoom : GlassColors::None);
 }
 
 void TransparentPass::render(const FrameContext& ctx, const ClusteredLighting* lists) {
@@ -73,8 +85,9 @@ void TransparentPass::renderForward(const FrameContext& ctx, const ClusteredLigh
 void TransparentPass::renderCaptured(const FrameContext& ctx, const ClusteredLighting* lists) {
     if (!capture_->counted()) countFragments(ctx);
     const std::vector<int> sets = ctx.scene.transparentTextureSets();
-    const bool storesColors = sets.size() > 1;
     capture_->fill(ctx);
+    const bool storesColors = sets.size() > 1;
+    const bool splits = !storesColors && capture_->hasDeepTileList();
     auto pass = ctx.timer.pass(timerName_);
     ctx.scene.bindGeometryStorage();
     ctx.lights.bindForReading();
@@ -82,20 +95,60 @@ void TransparentPass::renderCaptured(const FrameContext& ctx, const ClusteredLig
     capture_->bindForShading();
     glBindImageTexture(ML_IMG_HDR, ctx.targets.hdr().id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
     shade_.use();
-    shade_.set("u_storesColors", storesColors ? 1u : 0u);
     shade_.set("u_colorBase", capture_->colorWordOffset());
-    const GLuint groupsX = gl::groupsFor(ctx.targets.width(), ML_SCREEN_TILE);
-    const GLuint groupsY = gl::groupsFor(ctx.targets.height(), ML_SCREEN_TILE);
-    for (std::size_t i = 0; i < sets.size(); ++i) {
-        ctx.scene.bindTextureSet(sets[i]);
-        shade_.set("u_textureSet", sets[i]);
-        shade_.set("u_sorts", i == 0 ? 1u : 0u);
-        shade_.set("u_blends", i + 1 == sets.size() ? 1u : 0u);
-        glDispatchCompute(groupsX, groupsY, 1);
-        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    if (splits) {
+        shadeSplittingDeepTiles(ctx, sets[0]);
+    } else {
+        if (layerGroups_) {
+            shade_.set("u_step", 0u);  // kShadeTiles
+            shade_.set("u_deepFragments", 0u);
+        }
+        shade_.set("u_storesColors", storesColors ? 1u : 0u);
+        for (std::size_t i = 0; i < sets.size(); ++i) {
+            ctx.scene.bindTextureSet(sets[i]);
+            shade_.set("u_textureSet", sets[i]);
+            shade_.set("u_sorts", i == 0 ? 1u : 0u);
+            shade_.set("u_blends", i + 1 == sets.size() ? 1u : 0u);
+            glDispatchCompute(screenTiles(ctx).x, screenTiles(ctx).y, 1);
+            glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+        }
     }
     ctx.scene.unbindSamplers();
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
+}
+
+void TransparentPass::shadeSplittingDeepTiles(const FrameContext& ctx, int textureSet) {
+    // Deep from a pixel of two fragments: each further layer is a further chain of rounds.
+    constexpr GLuint kDeepFragments = 2;
+    const gl::Buffer& store = capture_->fragmentBuffer();
+    const std::uint32_t base = capture_->deepTileWordOffset();
+    // No tile listed yet: both dispatches empty (0 x 0), the parts' of layerGroups_ in z.
+    const GLuint header[ML_GLASS_DEEP_TILES] = {0, 0, layerGroups_, 0, 0, 1, 0};
+    glNamedBufferSubData(store.id(), GLintptr(base) * 4, sizeof(header), header);
+    ctx.scene.bindTextureSet(textureSet);
+    shade_.set("u_textureSet", textureSet);
+    shade_.set("u_deepBase", base);
+    // kShadeTiles: sorts every tile, shades and blends the shallow ones, lists the deep ones.
+    shade_.set("u_step", 0u);
+    shade_.set("u_deepFragments", kDeepFragments);
+    shade_.set("u_sorts", 1u);
+    shade_.set("u_storesColors", 0u);
+    shade_.set("u_blends", 1u);
+    glDispatchCompute(screenTiles(ctx).x, screenTiles(ctx).y, 1);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, store.id());
+    // kShadeDeepParts: each listed tile's parts, colours stored; kBlendDeep: blended.
+    shade_.set("u_step", 1u);
+    shade_.set("u_deepFragments", 0u);
+    shade_.set("u_sorts", 0u);
+    shade_.set("u_storesColors", 1u);
+    shade_.set("u_blends", 0u);
+    glDispatchComputeIndirect(GLintptr(base + ML_GLASS_DEEP_PARTS_DISPATCH) * 4);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    shade_.set("u_step", 2u);
+    shade_.set("u_blends", 1u);
+    glDispatchComputeIndirect(GLintptr(base + ML_GLASS_DEEP_BLEND_DISPATCH) * 4);
+    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
 }
 
 }  // namespace ml

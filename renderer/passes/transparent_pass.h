@@ -8,7 +8,10 @@
 //   [<method>.transparent-scan]   the counts scanned into where each pixel's fragments start
 //   [<method>.transparent-fill]   the fragments stored: depth and triangle, 8 B each
 //   [<method>.transparent]        glsl/glass_shade.comp: per pixel, sort by depth, rebuild each
-//                                 surface from its triangle, shade, blend back to front
+//                                 surface from its triangle, shade, blend back to front; with
+//                                 the cluster lists' rounds, tiles with a pixel of two fragments
+//                                 or more are split over MethodSettings::glassLayerGroups
+//                                 workgroups (the shader's header says why)
 // Deferred and visibility count right after their raster, so the total is long known when the
 // fill needs it (read behind a fence, no pipeline drain).
 // On GPUs where few SMs run graphics work a fragment shader runs ~30x slower than compute
@@ -47,6 +50,8 @@ class ClusteredLighting;
 struct TransparencySettings {
     int msaa = 1;
     std::size_t captureBudget = 0;
+    // Workgroups a deep tile's glass is split over (1: none is; MethodSettings::glassLayerGroups).
+    std::uint32_t layerGroups = 1;
 };
 
 class TransparentPass {
@@ -71,14 +76,19 @@ public:
 
 private:
     TransparentPass(std::string timerName, std::uint32_t materialFeatures, const TransparencySettings& transparency,
-                    const char* forwardShader, const shaders::Defines& defines);
+                    const char* forwardShader, const shaders::Defines& defines, bool listRounds);
     void renderForward(const FrameContext& ctx, const ClusteredLighting* lists) const;
     void renderCaptured(const FrameContext& ctx, const ClusteredLighting* lists);
+    // The three dispatches of a split frame (glass_shade.comp's kShadeTiles, kShadeDeepParts, kBlendDeep).
+    void shadeSplittingDeepTiles(const FrameContext& ctx, int textureSet);
 
     std::string timerName_;
     RasterProgram forward_;                   // --msaa only; empty otherwise or without BLEND
     std::unique_ptr<GlassFragments> capture_;  // one sample per pixel and BLEND only
     gl::Program shade_;
+    // The glass's tiles that hold deep pixels are split over this many workgroups (0: the
+    // program has no list rounds, or the settings ask for no split).
+    std::uint32_t layerGroups_ = 0;
 };
 
 }  // namespace ml

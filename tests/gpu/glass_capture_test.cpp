@@ -1,14 +1,17 @@
 // The transparent pass's capture and compute shading (renderer/passes/transparent_pass.h):
 // per-pixel depth order where panes intersect (which no order of whole ranges can give), many
 // layers blended as the ROPs blend them, a pane with a normal map, a texture transform and
-// vertex colours (glass over two texture sets), every method held to naive on each; a frame
+// vertex colours (glass over two texture sets), every method held to naive on each, and the
+// deep tiles' split over several workgroups to the one pass, bit for bit; a frame
 // whose fragments do not fit is refused in one line; a scene without BLEND builds none of it.
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "glsl/include/bindings.h"
 #include "renderer/passes/glass_fragments.h"
 #include "renderer/scene/material_features.h"
 #include "tests/gpu/gpu_test.h"
@@ -66,6 +69,44 @@ void expectMethodsMatchNaive(const Scene& scene, const std::vector<Light>& light
     test::expectClusteredVariantsMatchNaive(renderer, label);
 }
 
+// The tiles the last frame's split listed as deep (0 where the frame kept no list).
+std::uint32_t deepTilesListed(const FrameRenderer& renderer) {
+    const GlassFragments* capture = renderer.method().transparentCapture();
+    if (!capture || !capture->hasDeepTileList()) return 0;
+    std::uint32_t count = 0;
+    capture->fragmentBuffer().download(&count, sizeof(count), (std::size_t(capture->deepTileWordOffset()) + ML_GLASS_DEEP_COUNT) * 4);
+    return count;
+}
+
+// The deep tiles' split (MethodSettings::glassLayerGroups: 2, 3, 4) against the one-pass
+// shading (1), bit for bit, in every clustered method. Returns the fewest tiles a split listed.
+std::uint32_t expectSplitMatchesOnePass(const Scene& scene, const std::vector<Light>& lights, const FrameSettings& base,
+                                        const std::string& label) {
+    std::uint32_t fewest = ~0u;
+    for (MethodKind kind : {MethodKind::ForwardPlus, MethodKind::Deferred, MethodKind::Visibility}) {
+        FrameSettings s = base;
+        s.method.kind = kind;
+        s.method.glassLayerGroups = 1;
+        FrameRenderer renderer(scene, lights, s);
+        renderer.render(0);
+        EXPECT_EQ(deepTilesListed(renderer), 0u) << methodName(kind) << ": listed with no split";
+        const FloatImage onePass = renderer.readHdr();
+        for (std::uint32_t groups : {2u, 3u, 4u}) {
+            s.method.glassLayerGroups = groups;
+            renderer.setMethod(s.method);
+            renderer.render(0);
+            const std::uint32_t listed = deepTilesListed(renderer);
+            fewest = std::min(fewest, listed);
+            const FloatImage split = renderer.readHdr();
+            std::size_t differing = 0;
+            for (std::size_t i = 0; i < split.pixels.size(); ++i) differing += split.pixels[i] != onePass.pixels[i];
+            EXPECT_EQ(differing, 0u) << label << ", " << methodName(kind) << ", " << groups << " workgroups a deep tile (" << listed
+                                     << " listed): channels differing from one pass";
+        }
+    }
+    return fewest;
+}
+
 class GlassCapture : public GpuTest {};
 
 // A red pane in z = 0 and a blue one tilted through it (z = 0.5 x): right of the crossing the
@@ -98,6 +139,7 @@ TEST_F(GlassCapture, IntersectingPanesBlendInDepthOrderOnBothSidesOfTheCrossing)
                              std::string(front ? "front" : "back") + (dx > 0 ? ", screen right" : ", screen left"));
         }
         expectMethodsMatchNaive(both, kFrontAndBackLights, pose, std::string("crossing panes from the ") + (front ? "front" : "back"));
+        EXPECT_GT(expectSplitMatchesOnePass(both, kFrontAndBackLights, frame(both, pose), "crossing panes"), 0u);
     }
 }
 
@@ -124,6 +166,8 @@ TEST_F(GlassCapture, ManyLayersBlendAsTheForwardPassBlendsThem) {
         for (int x = kWidth / 2 - 12; x <= kWidth / 2 + 12; x += 4)
             expectColourNear(pixel(captured, x, y), pixel(forward, x, y), "pixel " + std::to_string(x) + "," + std::to_string(y));
     expectMethodsMatchNaive(scene, kFrontAndBackLights, kFrontView, "twelve layers");
+    // Twelve deep: the parts hold 3 to 6 fragments each, their boundaries at every depth.
+    EXPECT_GT(expectSplitMatchesOnePass(scene, kFrontAndBackLights, frame(scene, kFrontView), "twelve layers"), 0u);
 }
 
 // A pane with a normal map, a base-colour texture read through KHR_texture_transform on
@@ -192,6 +236,51 @@ TEST_F(GlassCapture, TexturedNormalMappedPaneMatchesTheForwardPass) {
     const glm::vec3 centre = pixel(captured, kWidth / 2, kHeight / 2);
     EXPECT_GT(centre.r + centre.g + centre.b, 0.05f);
     expectMethodsMatchNaive(scene, fromRight, kFrontView, "textured glass");
+    // Two texture sets: every dispatch stores colours already, and no tile is split.
+    EXPECT_EQ(expectSplitMatchesOnePass(scene, fromRight, frame(scene, kFrontView), "textured glass"), 0u);
+}
+
+// More deep tiles than one dispatch row holds (ML_GLASS_DEEP_ROW, 65,535: GL's least maximum
+// work-group count): at 2560x1648 (66,080 tiles) two layers of horizontal glass strips, one
+// every 7 pixel rows, put a pixel of two fragments in every tile; the listed tiles go on in the
+// dispatches' second row, and the frame is the one pass's, bit for bit.
+TEST_F(GlassCapture, DeepTilesPastOneDispatchRowAreAllShaded) {
+    constexpr int kWide = 2560, kTall = 1648;
+    const float pixel = 2.0f * 4.0f * std::tan(glm::radians(30.0f)) / float(kTall);  // world units a pixel at z = 0
+    Gltf g;
+    std::vector<json> prims;
+    for (const auto& [z, colour] : {std::pair{0.0f, glm::vec4(0.9f, 0.3f, 0.2f, 0.5f)}, std::pair{-0.05f, glm::vec4(0.2f, 0.4f, 0.9f, 0.5f)}}) {
+        const float scale = (4.0f - z) / 4.0f;  // the back layer's strips on the front's pixel rows
+        std::vector<glm::vec3> corners, normals;
+        std::vector<std::uint16_t> indices;
+        for (float y = -0.5f * float(kTall) * pixel; y < 0.5f * float(kTall) * pixel; y += 7.0f * pixel) {
+            const auto first = std::uint16_t(corners.size());
+            for (glm::vec2 c : {glm::vec2(-4, 0), glm::vec2(4, 0), glm::vec2(4, 2.5f * pixel), glm::vec2(-4, 2.5f * pixel)})
+                corners.push_back({c.x * scale, (y + c.y) * scale, z});
+            normals.insert(normals.end(), 4, glm::vec3(0, 0, 1));
+            for (int i : {0, 1, 2, 0, 2, 3}) indices.push_back(std::uint16_t(first + i));
+        }
+        prims.push_back(primitive({{"POSITION", g.vec3(corners)}, {"NORMAL", g.vec3(normals)}}, g.indices(indices),
+                                  paneMaterial(g, colour, "BLEND")));
+    }
+    const Scene scene = writeAndLoad(g, prims, "glass_strips");
+    FrameSettings s = test::smallFrame(scene, kFrontView, kWide, kTall);
+    s.method.kind = MethodKind::Visibility;
+    s.method.glassLayerGroups = 1;
+    FrameRenderer renderer(scene, kFrontAndBackLights, s);
+    renderer.render(0);
+    const FloatImage onePass = renderer.readHdr();
+    s.method.glassLayerGroups = 4;
+    renderer.setMethod(s.method);
+    renderer.render(0);
+    const std::uint32_t listed = deepTilesListed(renderer);
+    std::printf("glass strips at %dx%d: %llu fragments, %u deep tiles listed\n", kWide, kTall,
+                static_cast<unsigned long long>(renderer.method().transparentCapture()->fragmentCount()), listed);
+    EXPECT_GT(listed, std::uint32_t(ML_GLASS_DEEP_ROW));
+    const FloatImage split = renderer.readHdr();
+    std::size_t differing = 0;
+    for (std::size_t i = 0; i < split.pixels.size(); ++i) differing += split.pixels[i] != onePass.pixels[i];
+    EXPECT_EQ(differing, 0u) << "channels differing from one pass";
 }
 
 // The fragments are sized by what the frame needs; a frame whose need passes the budget (the
