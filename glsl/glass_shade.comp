@@ -14,15 +14,17 @@
 // sorts, shades and blends, and no colour is stored. With more, the first dispatch sorts,
 // each stores the colours of its set's fragments, and the last blends them.
 //
-// Deep tiles (list rounds, one texture set; u_deepFragments > 0): a workgroup's time is its
-// longest chain of list rounds, and a tile whose pixels hold fragments at many depths serves one
-// round per list of every depth, each by the few invocations it lights; on an H100 such tiles
-// made the gas station's glass as slow as its whole opaque lighting at a sixth of its work
-// (docs/bench/nvidia-h100/cooperative-rounds/). So the first dispatch (kShadeTiles) sorts every
-// tile but shades only those without a pixel of u_deepFragments fragments, and lists the others;
-// kShadeDeepParts shades each listed tile in gl_NumWorkGroups.z workgroups, each a contiguous
-// part of every pixel's sorted fragments, storing their colours; kBlendDeep blends them back to
-// front. The colours and the order are those of one dispatch, so the bits are too.
+// Deep tiles (list rounds, one texture set): a workgroup's time is its longest chain of list
+// rounds, and a tile whose pixels hold fragments at many depths serves one round per list of
+// every depth, each by the few invocations it lights; on an H100 such tiles made the gas
+// station's glass as slow as its whole opaque lighting at a sixth of its work
+// (docs/bench/nvidia-h100/cooperative-rounds/). So a frame may be shaded in three programs
+// (ML_GLASS_SPLIT): kListDeepTiles sorts every tile but shades only those without a pixel of
+// u_deepFragments fragments, and lists the others, each in as many parts as its deepest pixel
+// has fragments (at most u_maxParts); kShadeParts shades each part in a workgroup of its own, a
+// contiguous run of every pixel's sorted fragments, storing their colours; kBlendParts blends
+// them back to front. The colours and the order are those of one dispatch, so the bits are too.
+// Each is a program of its own, so that the one pass carries none of their code.
 //
 // Order: nearest first by depth, equal depths by triangle id, so every method (and naive)
 // blends the same fragments in the same order, intersecting and interleaved panes included.
@@ -65,12 +67,19 @@ uniform int u_textureSet;
 uniform uint u_sorts;        // 1: the first dispatch, which sorts each pixel's fragments in place
 uniform uint u_blends;       // 1: the last dispatch, which blends them over the frame
 uniform uint u_storesColors; // 1: more than one dispatch; colours go through the buffer
-#if ML_GLASS_LIST_ROUNDS
-const uint kShadeTiles = 0u, kShadeDeepParts = 1u, kBlendDeep = 2u;
-uniform uint u_step;           // kShadeTiles, or one of the deep tiles' two dispatches
-uniform uint u_deepFragments;  // kShadeTiles: a pixel of this many fragments makes its tile deep (0: none is)
+#define kOnePass 0        // ML_GLASS_SPLIT: no tile split
+#define kListDeepTiles 1
+#define kShadeParts 2
+#define kBlendParts 3
+#ifndef ML_GLASS_SPLIT
+#define ML_GLASS_SPLIT kOnePass
+#endif
+#if ML_GLASS_SPLIT != kOnePass
+uniform uint u_deepFragments;  // kListDeepTiles: a pixel of this many fragments makes its tile deep
+uniform uint u_maxParts;       // kListDeepTiles: the most parts a deep tile is shaded in
 uniform uint u_deepBase;       // the deep tiles' words in glassWords (ML_GLASS_DEEP_*)
-shared bool s_deep;
+uniform uint u_screenTiles;    // words of the tile list: the parts' follow it
+shared uint s_deepest;
 #endif
 
 uvec2 fragmentAt(uint k) { return uvec2(glassWords[2u * k], glassWords[2u * k + 1u]); }
@@ -134,46 +143,64 @@ bool nextFragment(uint begin, inout uint k) {
     return false;
 }
 
-// This workgroup's tile: its own (kShadeTiles) or a listed deep one; false for a deep
-// dispatch's last row past the list's end.
-bool workgroupTile(out ivec2 tile) {
-    tile = ivec2(gl_WorkGroupID.xy);
-    if (u_step == kShadeTiles) return true;
+#if ML_GLASS_SPLIT != kOnePass
+uint deepWord(uint word) { return glassWords[u_deepBase + word]; }
+
+// kShadeParts, kBlendParts: this workgroup's listed tile and its part of each pixel's fragments
+// (kBlendParts: all of them); false past the list's end.
+bool listedTile(out ivec2 tile, out uint part, out uint parts) {
     uint listed = gl_WorkGroupID.y * uint(ML_GLASS_DEEP_ROW) + gl_WorkGroupID.x;
-    if (listed >= glassWords[u_deepBase + ML_GLASS_DEEP_COUNT]) return false;
-    uint t = glassWords[u_deepBase + ML_GLASS_DEEP_TILES + listed];
+    uint tileIndex = listed;
+    part = 0u;
+    parts = 1u;
+#if ML_GLASS_SPLIT == kShadeParts
+    if (listed >= deepWord(ML_GLASS_DEEP_PART_COUNT)) return false;
+    uint entry = deepWord(ML_GLASS_DEEP_TILES + u_screenTiles + listed);
+    tileIndex = entry >> 8;
+    part = (entry >> 4) & 15u;
+    parts = (entry & 15u) + 1u;
+#else
+    if (listed >= deepWord(ML_GLASS_DEEP_TILE_COUNT)) return false;
+#endif
+    uint t = deepWord(ML_GLASS_DEEP_TILES + tileIndex);
     tile = ivec2(t & 0xFFFFu, t >> 16);
     return true;
 }
 
-// kShadeTiles with u_deepFragments: whether a pixel of the tile holds that many fragments; if
-// so the tile is listed for the deep dispatches. Every invocation calls it alike (barriers).
-bool listedAsDeep(ivec2 tile, uint fragments) {
-    if (gl_LocalInvocationIndex == 0u) s_deep = false;
-    barrier();
-    if (fragments >= u_deepFragments) s_deep = true;
-    barrier();
-    if (s_deep && gl_LocalInvocationIndex == 0u) {
-        uint listed = atomicAdd(glassWords[u_deepBase + ML_GLASS_DEEP_COUNT], 1u);
-        glassWords[u_deepBase + ML_GLASS_DEEP_TILES + listed] = uint(tile.x) | (uint(tile.y) << 16);
-        // Both dispatches grow to hold it: full rows of ML_GLASS_DEEP_ROW, then the last.
-        uint perRow = min(listed + 1u, uint(ML_GLASS_DEEP_ROW)), rows = listed / uint(ML_GLASS_DEEP_ROW) + 1u;
-        for (uint d = 0u; d < 2u; ++d) {
-            uint dispatch = u_deepBase + (d == 0u ? uint(ML_GLASS_DEEP_PARTS_DISPATCH) : uint(ML_GLASS_DEEP_BLEND_DISPATCH));
-            atomicMax(glassWords[dispatch], perRow);
-            atomicMax(glassWords[dispatch + 1u], rows);
-        }
-    }
-    return s_deep;
+// Grows an indirect dispatch of rows of ML_GLASS_DEEP_ROW workgroups to hold workgroup `last`.
+void growDispatch(uint dispatch, uint last) {
+    atomicMax(glassWords[u_deepBase + dispatch], min(last + 1u, uint(ML_GLASS_DEEP_ROW)));
+    atomicMax(glassWords[u_deepBase + dispatch + 1u], last / uint(ML_GLASS_DEEP_ROW) + 1u);
 }
 
-// kShadeDeepParts: this workgroup's contiguous part (gl_WorkGroupID.z of gl_NumWorkGroups.z)
-// of the pixel's sorted fragments.
-void takePart(inout uint begin, inout uint end) {
-    uint n = end - begin, part = gl_WorkGroupID.z, parts = gl_NumWorkGroups.z;
+// kListDeepTiles: whether a pixel of the tile holds u_deepFragments fragments or more; if so
+// the tile and its parts are listed. Every invocation calls it alike (barriers).
+bool listedAsDeep(ivec2 tile, uint fragments) {
+    if (gl_LocalInvocationIndex == 0u) s_deepest = 0u;
+    barrier();
+    if (fragments >= u_deepFragments) atomicMax(s_deepest, fragments);
+    barrier();
+    uint deepest = s_deepest;
+    if (deepest != 0u && gl_LocalInvocationIndex == 0u) {
+        uint listed = atomicAdd(glassWords[u_deepBase + ML_GLASS_DEEP_TILE_COUNT], 1u);
+        glassWords[u_deepBase + ML_GLASS_DEEP_TILES + listed] = uint(tile.x) | (uint(tile.y) << 16);
+        growDispatch(ML_GLASS_DEEP_BLEND_DISPATCH, listed);
+        uint parts = min(deepest, u_maxParts);
+        uint first = atomicAdd(glassWords[u_deepBase + ML_GLASS_DEEP_PART_COUNT], parts);
+        for (uint part = 0u; part < parts; ++part)
+            glassWords[u_deepBase + ML_GLASS_DEEP_TILES + u_screenTiles + first + part] = (listed << 8) | (part << 4) | (parts - 1u);
+        growDispatch(ML_GLASS_DEEP_PARTS_DISPATCH, first + parts - 1u);
+    }
+    return deepest != 0u;
+}
+
+// kShadeParts: part `part` of `parts` of the pixel's sorted fragments, a contiguous run.
+void takePart(uint part, uint parts, inout uint begin, inout uint end) {
+    uint n = end - begin;
     end = begin + n * (part + 1u) / parts;
     begin = begin + n * part / parts;
 }
+#endif
 
 // Fragment k's surface, view direction and alpha, and the list it waits for.
 uint beginFragment(uint k, ivec2 p, out SurfacePoint s, out vec3 viewDir, out float alpha) {
@@ -186,11 +213,16 @@ uint beginFragment(uint k, ivec2 p, out SurfacePoint s, out vec3 viewDir, out fl
 #endif
 
 void main() {
-#if ML_GLASS_LIST_ROUNDS
+#if ML_GLASS_SPLIT == kShadeParts || ML_GLASS_SPLIT == kBlendParts
     ivec2 tile;
-    if (!workgroupTile(tile)) return;  // the whole workgroup: no barrier is left waiting
+    uint part, parts;
+    if (!listedTile(tile, part, parts)) return;  // the whole workgroup: no barrier is left waiting
     ivec2 p = tile * ML_SCREEN_TILE + ivec2(gl_LocalInvocationID.xy);
+#else
+    ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+#endif
     bool inside = all(lessThan(p, ivec2(u_viewport.xy)));
+#if ML_GLASS_LIST_ROUNDS
     // Every invocation takes part in every round (they hold barriers), with fragments or not.
     uint begin = 0u, end = 0u;
     if (inside) {
@@ -199,12 +231,22 @@ void main() {
         begin = pixel == 0u ? 0u : glassEnds[pixel - 1u];
         if (begin != end && u_sorts != 0u) sortFragments(begin, end);
     }
-    if (u_deepFragments != 0u && listedAsDeep(tile, end - begin)) return;
-    if (u_step == kShadeDeepParts) takePart(begin, end);
+#if ML_GLASS_SPLIT == kBlendParts
+    if (begin == end) return;
+    vec4 stored = imageLoad(u_hdr, p);
+    vec3 blended = stored.rgb;
+    for (uint j = end; j-- > begin;) blended = over(colorAt(j), blended);
+    imageStore(u_hdr, p, vec4(blended, stored.a));
+    return;
+#elif ML_GLASS_SPLIT == kListDeepTiles
+    if (listedAsDeep(ivec2(gl_WorkGroupID.xy), end - begin)) return;
+#elif ML_GLASS_SPLIT == kShadeParts
+    takePart(part, parts, begin, end);
+#endif
     vec4 frame = begin != end ? imageLoad(u_hdr, p) : vec4(0.0);
     vec3 color = frame.rgb;
     uint k = end;
-    bool shading = u_step != kBlendDeep && nextFragment(begin, k);
+    bool shading = nextFragment(begin, k);
     SurfacePoint s;
     vec3 viewDir = vec3(0.0);
     float alpha = 0.0;
@@ -227,8 +269,7 @@ void main() {
     }
     imageStore(u_hdr, p, vec4(color, frame.a));
 #else
-    ivec2 p = ivec2(gl_GlobalInvocationID.xy);
-    if (any(greaterThanEqual(p, ivec2(u_viewport.xy)))) return;
+    if (!inside) return;
     uint pixel = uint(p.y) * uint(u_viewport.x) + uint(p.x);
     uint end = glassEnds[pixel];
     uint begin = pixel == 0u ? 0u : glassEnds[pixel - 1u];

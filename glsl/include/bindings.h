@@ -49,10 +49,13 @@
 #define ML_SSBO_GLASS_FRAGMENTS 17     // per fragment: depth bits, triangle id; then, where colours are stored, its colour; then the deep tiles
 // The glass shading's deep tiles (glsl/glass_shade.comp): words of the fragment buffer after the
 // colours, as llvmpipe offers a compute shader no block to spare.
-#define ML_GLASS_DEEP_PARTS_DISPATCH 0  // the parts' indirect dispatch: tiles per row, rows, parts (words 0-2)
+#define ML_GLASS_DEEP_PARTS_DISPATCH 0  // the parts' indirect dispatch: parts per row, rows, 1 (words 0-2)
 #define ML_GLASS_DEEP_BLEND_DISPATCH 3  // the blend's: tiles per row, rows, 1 (words 3-5)
-#define ML_GLASS_DEEP_COUNT 6           // tiles listed
-#define ML_GLASS_DEEP_TILES 7           // then the tiles, x | y << 16
+#define ML_GLASS_DEEP_TILE_COUNT 6      // tiles listed
+#define ML_GLASS_DEEP_PART_COUNT 7      // parts listed
+#define ML_GLASS_DEEP_TILES 8           // then a word per screen tile: the tiles, x | y << 16; then the parts,
+                                        // ML_GLASS_DEEP_MAX_PARTS words per screen tile: tile index << 8 | part << 4 | parts - 1
+#define ML_GLASS_DEEP_MAX_PARTS 16
 #define ML_GLASS_DEEP_ROW 65535         // tiles per dispatch row: GL's least maximum work-group count
 // The visibility buffer's compute raster (renderer/passes/compute_raster.h), before anything else
 // of the frame binds these points.

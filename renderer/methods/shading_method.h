@@ -52,10 +52,10 @@ struct MethodSettings {
     // Bytes the transparent pass's capture may take (renderer/passes/glass_fragments.h); 0: this
     // GPU's storage-buffer limit. Tests lower it to see a frame refused.
     std::size_t transparentCaptureBudget = 0;
-    // Workgroups the transparent shading splits a deep tile over (glsl/glass_shade.comp; 1: no
-    // split, as tests set it to hold the split to the one pass, byte for byte). Four, deep from
-    // two fragments a pixel: on an H100 at 1M lights the gas station's glass 2.50 / 2.15 ->
-    // 1.72 / 1.22 ms, the atrium's within 0.06 (docs/bench/nvidia-h100/glass-layers/).
+    // The most workgroups the transparent shading splits a deep tile over (glsl/glass_shade.comp:
+    // a tile with a pixel of two fragments or more, in as many parts as its deepest pixel has
+    // fragments, up to this; 1: no split, as tests set it to hold the split to the one pass, bit
+    // for bit). Measured on an H100: docs/bench/nvidia-h100/glass-layers/.
     std::uint32_t glassLayerGroups = 4;
     // Visibility: --vis-raster (auto: the hardware raster for now; ComputeRaster::resolve says why).
     VisibilityRaster visibilityRaster = VisibilityRaster::Auto;

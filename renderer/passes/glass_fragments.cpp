@@ -37,8 +37,9 @@ GlassFragments::GlassFragments(std::string timerName, std::uint32_t materialFeat
     }
 }
 
-void GlassFragments::count(const FrameContext& ctx, GlassColors colors) {
+void GlassFragments::count(const FrameContext& ctx, GlassColors colors, std::uint32_t deepPartsPerTile) {
     colors_ = colors;
+    deepPartsPerTile_ = deepPartsPerTile;
     pixelCount_ = std::uint32_t(ctx.targets.width()) * std::uint32_t(ctx.targets.height());
     // Padded to whole groups of four counts, which the clear writes as one uvec4.
     pixels_.ensure((std::size_t(pixelCount_) + 3) / 4 * 16);
@@ -83,7 +84,7 @@ void GlassFragments::fill(const FrameContext& ctx) {
     const std::size_t fragmentBytes = (std::size_t(total) * kBytesPerFragment + 15) / 16 * 16;
     const std::size_t colorBytes = std::size_t(total) * kColorBytesPerFragment;
     const std::size_t tiles = std::size_t(gl::groupsFor(ctx.targets.width(), ML_SCREEN_TILE)) * gl::groupsFor(ctx.targets.height(), ML_SCREEN_TILE);
-    const std::size_t deepTileBytes = (ML_GLASS_DEEP_TILES + tiles) * 4;
+    const std::size_t deepTileBytes = (ML_GLASS_DEEP_TILES + tiles * (1 + std::size_t(deepPartsPerTile_))) * 4;
     colorWordOffset_ = static_cast<std::uint32_t>(fragmentBytes / 4);
     deepTileWordOffset_ = 0;
     std::size_t bytes = fragmentBytes;

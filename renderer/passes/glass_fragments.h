@@ -15,7 +15,7 @@
 // (the depth, to sort by, and the triangle, to rebuild the surface from); where the glass spans
 // more than one texture set, 16 B more per fragment for its shaded colour (the shading runs
 // once per set, the blend after the last), and where the shading splits deep tiles
-// (TransparentPass) the same, and a word per screen tile, if they fit. The worst case is every pixel covered by every
+// (TransparentPass) the same and a word per screen tile and per part, if they fit. The worst case is every pixel covered by every
 // transparent triangle; a frame whose fragments do not fit one storage buffer is refused in one
 // line that names them. Both rasters run a fragment shader of one atomic: no shading, no colour
 // writes (H100, atrium, 2560x1440: 0.01-0.03 ms each; the scan 0.07 ms).
@@ -56,7 +56,8 @@ public:
     // waits on the GPU for the total: count() as soon as the opaque depth is final, fill()
     // before the shading. fill() throws std::runtime_error, naming the numbers, when the
     // fragments (with GlassColors::Always, and their colours) do not fit the budget.
-    void count(const FrameContext& ctx, GlassColors colors);
+    // deepPartsPerTile: with GlassColors::WhereRoom, the most parts the list holds a tile in.
+    void count(const FrameContext& ctx, GlassColors colors, std::uint32_t deepPartsPerTile = 0);
     void fill(const FrameContext& ctx);
     bool counted() const { return total_.fenced(); }
     // Binds the pixels and the fragments (with colours after them) at their ML_SSBO_GLASS_* points.
@@ -84,6 +85,7 @@ private:
     gl::MappedWords total_;  // the scan's total, fenced after count()'s scan until fill() reads it
     std::uint32_t pixelCount_ = 0;
     GlassColors colors_ = GlassColors::None;
+    std::uint32_t deepPartsPerTile_ = 0;
     std::size_t budget_ = 0;
     std::uint64_t fragments_ = 0;
     gl::GrowableBuffer pixels_{"transparent.pixels"};

@@ -1,5 +1,6 @@
 #include "renderer/passes/transparent_pass.h"
 
+#include <algorithm>
 #include <utility>
 
 #include "glsl/include/bindings.h"
@@ -32,13 +33,14 @@ TransparentPass::TransparentPass(std::string timerName, std::uint32_t materialFe
     capture_ = std::make_unique<GlassFragments>(timerName_, materialFeatures, transparency.captureBudget);
     // List rounds (glass_shade.comp's ML_GLASS_LIST_ROUNDS: per-cluster lists) hold a workgroup
     // to its longest chain of rounds; their shading splits deep tiles.
-    if (listRounds && transparency.layerGroups > 1) layerGroups_ = transparency.layerGroups;
+    if (listRounds && transparency.layerGroups > 1) layerGroups_ = std::min<std::uint32_t>(transparency.layerGroups, ML_GLASS_DEEP_MAX_PARTS);
     shaders::Defines shadeDefines = defines;
     shadeDefines.emplace_back("ML_GLASS_ALL_LIGHTS", allLights ? "1" : "0");
     // BLEND ignores alphaCutoff: no alpha-tested paths.
     for (auto& d : materialFeatureDefines(materialFeatures & ~std::uint32_t(ML_FEATURE_ALPHA_TEST))) shadeDefines.push_back(d);
     shade_ = gl::Program(allLights ? "transparent.shade-all-lights" : "transparent.shade-cluster-lists",
                          {{GL_COMPUTE_SHADER, "glass_shade.comp"}}, shadeDefines);
+    if (layerGroups_) splitDefines_ = std::move(shadeDefines);  // the split's programs are built by its first frame
 }
 
 TransparentPass TransparentPass::overAllLights(std::string timerName, std::uint32_t materialFeatures, const ClusteringSettings& lights,
@@ -57,7 +59,7 @@ void TransparentPass::countFragments(const FrameContext& ctx, DebugView view) {
     // The opaque depth may have come from compute passes' image stores.
     glMemoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT);
     const bool severalSets = ctx.scene.transparentTextureSets().size() > 1;
-    capture_->count(ctx, severalSets ? GlassColors::Always : layerGroups_ ? GlassColors::WhereRoom : GlassColors::None);
+    capture_->count(ctx, severalSets ? GlassColors::Always : layerGroups_ ? GlassColors::WhereRoom : GlassColors::None, layerGroups_);
 }
 
 void TransparentPass::render(const FrameContext& ctx, const ClusteredLighting* lists) {
@@ -94,15 +96,11 @@ void TransparentPass::renderCaptured(const FrameContext& ctx, const ClusteredLig
     if (lists) lists->bindForShading();
     capture_->bindForShading();
     glBindImageTexture(ML_IMG_HDR, ctx.targets.hdr().id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
-    shade_.use();
-    shade_.set("u_colorBase", capture_->colorWordOffset());
     if (splits) {
         shadeSplittingDeepTiles(ctx, sets[0]);
     } else {
-        if (layerGroups_) {
-            shade_.set("u_step", 0u);  // kShadeTiles
-            shade_.set("u_deepFragments", 0u);
-        }
+        shade_.use();
+        shade_.set("u_colorBase", capture_->colorWordOffset());
         shade_.set("u_storesColors", storesColors ? 1u : 0u);
         for (std::size_t i = 0; i < sets.size(); ++i) {
             ctx.scene.bindTextureSet(sets[i]);
@@ -120,33 +118,48 @@ void TransparentPass::renderCaptured(const FrameContext& ctx, const ClusteredLig
 void TransparentPass::shadeSplittingDeepTiles(const FrameContext& ctx, int textureSet) {
     // Deep from a pixel of two fragments: each further layer is a further chain of rounds.
     constexpr GLuint kDeepFragments = 2;
+    if (!splitPrograms_[0]) {
+        const char* steps[3] = {"1", "2", "3"};  // glass_shade.comp's kListDeepTiles, kShadeParts, kBlendParts
+        const char* labels[3] = {"transparent.list-deep-tiles", "transparent.shade-parts", "transparent.blend-parts"};
+        for (int i = 0; i < 3; ++i) {
+            shaders::Defines defines = splitDefines_;
+            defines.emplace_back("ML_GLASS_SPLIT", steps[i]);
+            splitPrograms_[i] = gl::Program(labels[i], {{GL_COMPUTE_SHADER, "glass_shade.comp"}}, defines);
+        }
+    }
+    const gl::Program& list = splitPrograms_[0];
+    const gl::Program& parts = splitPrograms_[1];
+    const gl::Program& blend = splitPrograms_[2];
     const gl::Buffer& store = capture_->fragmentBuffer();
     const std::uint32_t base = capture_->deepTileWordOffset();
-    // No tile listed yet: both dispatches empty (0 x 0), the parts' of layerGroups_ in z.
-    const GLuint header[ML_GLASS_DEEP_TILES] = {0, 0, layerGroups_, 0, 0, 1, 0};
+    // Nothing listed yet: both dispatches empty (0 x 0 x 1).
+    const GLuint header[ML_GLASS_DEEP_TILES] = {0, 0, 1, 0, 0, 1, 0, 0};
     glNamedBufferSubData(store.id(), GLintptr(base) * 4, sizeof(header), header);
     ctx.scene.bindTextureSet(textureSet);
-    shade_.set("u_textureSet", textureSet);
-    shade_.set("u_deepBase", base);
-    // kShadeTiles: sorts every tile, shades and blends the shallow ones, lists the deep ones.
-    shade_.set("u_step", 0u);
-    shade_.set("u_deepFragments", kDeepFragments);
-    shade_.set("u_sorts", 1u);
-    shade_.set("u_storesColors", 0u);
-    shade_.set("u_blends", 1u);
+    for (const gl::Program& program : splitPrograms_) {
+        program.set("u_colorBase", capture_->colorWordOffset());
+        program.set("u_textureSet", textureSet);
+        program.set("u_deepBase", base);
+        program.set("u_screenTiles", screenTiles(ctx).x * screenTiles(ctx).y);
+        program.set("u_sorts", 0u);
+    }
+    // Sorts every tile, shades and blends the shallow ones, lists the deep ones and their parts.
+    list.use();
+    list.set("u_deepFragments", kDeepFragments);
+    list.set("u_maxParts", layerGroups_);
+    list.set("u_sorts", 1u);
+    list.set("u_storesColors", 0u);
+    list.set("u_blends", 1u);
     glDispatchCompute(screenTiles(ctx).x, screenTiles(ctx).y, 1);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, store.id());
-    // kShadeDeepParts: each listed tile's parts, colours stored; kBlendDeep: blended.
-    shade_.set("u_step", 1u);
-    shade_.set("u_deepFragments", 0u);
-    shade_.set("u_sorts", 0u);
-    shade_.set("u_storesColors", 1u);
-    shade_.set("u_blends", 0u);
+    // Every listed part, its colours stored; then each listed tile's blended.
+    parts.use();
+    parts.set("u_storesColors", 1u);
+    parts.set("u_blends", 0u);
     glDispatchComputeIndirect(GLintptr(base + ML_GLASS_DEEP_PARTS_DISPATCH) * 4);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-    shade_.set("u_step", 2u);
-    shade_.set("u_blends", 1u);
+    blend.use();
     glDispatchComputeIndirect(GLintptr(base + ML_GLASS_DEEP_BLEND_DISPATCH) * 4);
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
 }

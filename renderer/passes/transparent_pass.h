@@ -10,8 +10,8 @@
 //   [<method>.transparent]        glsl/glass_shade.comp: per pixel, sort by depth, rebuild each
 //                                 surface from its triangle, shade, blend back to front; with
 //                                 the cluster lists' rounds, tiles with a pixel of two fragments
-//                                 or more are split over MethodSettings::glassLayerGroups
-//                                 workgroups (the shader's header says why)
+//                                 or more are split over up to MethodSettings::glassLayerGroups
+//                                 workgroups, in three programs (the shader's header says why)
 // Deferred and visibility count right after their raster, so the total is long known when the
 // fill needs it (read behind a fence, no pipeline drain).
 // On GPUs where few SMs run graphics work a fragment shader runs ~30x slower than compute
@@ -31,6 +31,7 @@
 // transparent surfaces into account). Debug views leave the pass out.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -86,9 +87,11 @@ private:
     RasterProgram forward_;                   // --msaa only; empty otherwise or without BLEND
     std::unique_ptr<GlassFragments> capture_;  // one sample per pixel and BLEND only
     gl::Program shade_;
-    // The glass's tiles that hold deep pixels are split over this many workgroups (0: the
+    // The glass's tiles that hold deep pixels are split in up to this many parts (0: the
     // program has no list rounds, or the settings ask for no split).
     std::uint32_t layerGroups_ = 0;
+    shaders::Defines splitDefines_;       // shade_'s, for the split's programs
+    std::array<gl::Program, 3> splitPrograms_;  // glass_shade.comp's kListDeepTiles, kShadeParts, kBlendParts
 };
 
 }  // namespace ml

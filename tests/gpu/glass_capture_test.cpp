@@ -74,7 +74,7 @@ std::uint32_t deepTilesListed(const FrameRenderer& renderer) {
     const GlassFragments* capture = renderer.method().transparentCapture();
     if (!capture || !capture->hasDeepTileList()) return 0;
     std::uint32_t count = 0;
-    capture->fragmentBuffer().download(&count, sizeof(count), (std::size_t(capture->deepTileWordOffset()) + ML_GLASS_DEEP_COUNT) * 4);
+    capture->fragmentBuffer().download(&count, sizeof(count), (std::size_t(capture->deepTileWordOffset()) + ML_GLASS_DEEP_TILE_COUNT) * 4);
     return count;
 }
 
