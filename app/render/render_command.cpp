@@ -171,9 +171,11 @@ int runRender(RenderOptions o) {
                         std::log2(exposure->exposure), std::exp2(exposure->logAverage), 100.0 * exposure->litShare,
                         kAutoExposureKey);
         if (const GlassFragments* glass = renderer.method().transparentCapture(); glass && renderer.scene().hasTransparent())
-            std::printf("transparency: %llu fragments captured at %dx%d (%zu B each, %zu B per pixel), %.1f MiB\n",
+            std::printf("transparency: %llu fragments captured at %dx%d (%zu B each, %zu B per pixel%s), %.1f MiB\n",
                         static_cast<unsigned long long>(glass->fragmentCount()), renderer.targets().width(), renderer.targets().height(),
-                        GlassFragments::kBytesPerFragment, GlassFragments::kBytesPerPixel, double(glass->bytes()) / (1 << 20));
+                        GlassFragments::kBytesPerFragment, GlassFragments::kBytesPerPixel,
+                        glass->hasDeepTileList() ? "; the deep tiles' split: their colours and list" : "",
+                        double(glass->bytes()) / (1 << 20));
         if (const auto* visibility = dynamic_cast<const VisibilityBuffer*>(&renderer.method())) {
             if (const ComputeRaster* raster = visibility->computeRaster()) {
                 const ComputeRaster::Work w = raster->lastWork();

@@ -55,7 +55,7 @@ struct MethodSettings {
     // The most workgroups the transparent shading splits a deep tile over (glsl/glass_shade.comp:
     // a tile with a pixel of two fragments or more, in as many parts as its deepest pixel has
     // fragments, up to this; 1: no split, as tests set it to hold the split to the one pass, bit
-    // for bit). Measured on an H100: docs/bench/nvidia-h100/glass-layers/.
+    // for bit). Measured on an H200: docs/bench/nvidia-h200/glass-layers/.
     std::uint32_t glassLayerGroups = 4;
     // Visibility: --vis-raster (auto: the hardware raster for now; ComputeRaster::resolve says why).
     VisibilityRaster visibilityRaster = VisibilityRaster::Auto;
