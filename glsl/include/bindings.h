@@ -53,9 +53,9 @@
 #define ML_GLASS_DEEP_BLEND_DISPATCH 3  // the blend's: tiles per row, rows, 1 (words 3-5)
 #define ML_GLASS_DEEP_TILE_COUNT 6      // tiles listed
 #define ML_GLASS_DEEP_PART_COUNT 7      // parts listed
-#define ML_GLASS_DEEP_TILES 8           // then a word per screen tile: the tiles, x | y << 16; then the parts,
-                                        // ML_GLASS_DEEP_MAX_PARTS words per screen tile: tile index << 8 | part << 4 | parts - 1
-#define ML_GLASS_DEEP_MAX_PARTS 16
+#define ML_GLASS_DEEP_TILES 8           // then a word per screen tile: the tiles, x | y << 16; then the parts, as
+                                        // many words per screen tile as a tile's most parts: tile index << 8 | part << 4 | parts - 1
+#define ML_GLASS_DEEP_MAX_PARTS 16      // the most parts a tile may take (4 bits of its part words)
 #define ML_GLASS_DEEP_ROW 65535         // tiles per dispatch row: GL's least maximum work-group count
 // The visibility buffer's compute raster (renderer/passes/compute_raster.h), before anything else
 // of the frame binds these points.

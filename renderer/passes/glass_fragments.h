@@ -14,10 +14,10 @@
 // Memory: 4 B per pixel (14.1 MiB at 2560x1440, 31.6 MiB at 3840x2160) and 8 B per fragment
 // (the depth, to sort by, and the triangle, to rebuild the surface from); where the glass spans
 // more than one texture set, 16 B more per fragment for its shaded colour (the shading runs
-// once per set, the blend after the last), and where the shading splits deep tiles
-// (TransparentPass) the same and a word per screen tile and per part, if they fit. The worst case is every pixel covered by every
-// transparent triangle; a frame whose fragments do not fit one storage buffer is refused in one
-// line that names them. Both rasters run a fragment shader of one atomic: no shading, no colour
+// once per set, the blend after the last); where the shading splits deep tiles
+// (TransparentPass), the same colours and a word per screen tile and per part, if they fit. The
+// worst case is every pixel covered by every transparent triangle; a frame whose fragments do not
+// fit one storage buffer is refused in one line that names them. Both rasters run a fragment shader of one atomic: no shading, no colour
 // writes (H100, atrium, 2560x1440: 0.01-0.03 ms each; the scan 0.07 ms).
 #pragma once
 

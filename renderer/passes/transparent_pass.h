@@ -80,7 +80,7 @@ private:
                     const char* forwardShader, const shaders::Defines& defines, bool listRounds);
     void renderForward(const FrameContext& ctx, const ClusteredLighting* lists) const;
     void renderCaptured(const FrameContext& ctx, const ClusteredLighting* lists);
-    // The three dispatches of a split frame (glass_shade.comp's kShadeTiles, kShadeDeepParts, kBlendDeep).
+    // The three dispatches of a split frame (glass_shade.comp's kListDeepTiles, kShadeParts, kBlendParts).
     void shadeSplittingDeepTiles(const FrameContext& ctx, int textureSet);
 
     std::string timerName_;

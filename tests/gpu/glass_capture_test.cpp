@@ -78,6 +78,13 @@ std::uint32_t deepTilesListed(const FrameRenderer& renderer) {
     return count;
 }
 
+// Channels of two same-sized HDR images that differ in any bit.
+std::size_t channelsDiffering(const FloatImage& a, const FloatImage& b) {
+    std::size_t differing = 0;
+    for (std::size_t i = 0; i < a.pixels.size(); ++i) differing += a.pixels[i] != b.pixels[i];
+    return differing;
+}
+
 // The deep tiles' split (MethodSettings::glassLayerGroups: 2, 3, 4) against the one-pass
 // shading (1), bit for bit, in every clustered method. Returns the fewest tiles a split listed.
 std::uint32_t expectSplitMatchesOnePass(const Scene& scene, const std::vector<Light>& lights, const FrameSettings& base,
@@ -97,11 +104,9 @@ std::uint32_t expectSplitMatchesOnePass(const Scene& scene, const std::vector<Li
             renderer.render(0);
             const std::uint32_t listed = deepTilesListed(renderer);
             fewest = std::min(fewest, listed);
-            const FloatImage split = renderer.readHdr();
-            std::size_t differing = 0;
-            for (std::size_t i = 0; i < split.pixels.size(); ++i) differing += split.pixels[i] != onePass.pixels[i];
-            EXPECT_EQ(differing, 0u) << label << ", " << methodName(kind) << ", " << groups << " workgroups a deep tile (" << listed
-                                     << " listed): channels differing from one pass";
+            EXPECT_EQ(channelsDiffering(renderer.readHdr(), onePass), 0u)
+                << label << ", " << methodName(kind) << ", " << groups << " workgroups a deep tile (" << listed
+                << " listed): channels differing from one pass";
         }
     }
     return fewest;
@@ -277,10 +282,7 @@ TEST_F(GlassCapture, DeepTilesPastOneDispatchRowAreAllShaded) {
     std::printf("glass strips at %dx%d: %llu fragments, %u deep tiles listed\n", kWide, kTall,
                 static_cast<unsigned long long>(renderer.method().transparentCapture()->fragmentCount()), listed);
     EXPECT_GT(listed, std::uint32_t(ML_GLASS_DEEP_ROW));
-    const FloatImage split = renderer.readHdr();
-    std::size_t differing = 0;
-    for (std::size_t i = 0; i < split.pixels.size(); ++i) differing += split.pixels[i] != onePass.pixels[i];
-    EXPECT_EQ(differing, 0u) << "channels differing from one pass";
+    EXPECT_EQ(channelsDiffering(renderer.readHdr(), onePass), 0u) << "channels differing from one pass";
 }
 
 // The fragments are sized by what the frame needs; a frame whose need passes the budget (the
