@@ -18,13 +18,16 @@
 // rounds, and a tile whose pixels hold fragments at many depths serves one round per list of
 // every depth, each by the few invocations it lights; on an H100 such tiles made the gas
 // station's glass as slow as its whole opaque lighting at a sixth of its work
-// (docs/bench/nvidia-h100/cooperative-rounds/). So a frame may be shaded in three programs
-// (ML_GLASS_SPLIT): kListDeepTiles sorts every tile but shades only those without a pixel of
-// u_deepFragments fragments, and lists the others, each in as many parts as its deepest pixel
-// has fragments (at most u_maxParts); kShadeParts shades each part in a workgroup of its own, a
-// contiguous run of every pixel's sorted fragments, storing their colours; kBlendParts blends
-// them back to front. The colours and the order are those of one dispatch, so the bits are too.
-// Each is a program of its own, so that the one pass carries none of their code.
+// (docs/bench/nvidia-h100/cooperative-rounds/). So a frame may be shaded in four programs
+// (ML_GLASS_SPLIT): kListDeepTiles sorts every tile's pixels and lists the tiles with a pixel of
+// u_deepFragments fragments or more, each in as many parts as its deepest pixel has fragments (at
+// most u_maxParts); then kShadeParts shades each listed part in a workgroup of its own, a
+// contiguous run of every pixel's sorted fragments, storing their colours, while
+// kShadeShallowTiles shades and blends every other tile: the two touch different tiles and run
+// side by side, no barrier between, so the deep tiles' long chains overlap the rest of the screen
+// instead of following it; last kBlendParts blends the parts' colours back to front. The colours
+// and the order are those of one dispatch, so the bits are too. Each is a program of its own, so
+// that the one pass carries none of their code.
 //
 // Order: nearest first by depth, equal depths by triangle id, so every method (and naive)
 // blends the same fragments in the same order, intersecting and interleaved panes included.
@@ -71,11 +74,12 @@ uniform uint u_storesColors; // 1: more than one dispatch; colours go through th
 #define kListDeepTiles 1
 #define kShadeParts 2
 #define kBlendParts 3
+#define kShadeShallowTiles 4
 #ifndef ML_GLASS_SPLIT
 #define ML_GLASS_SPLIT kOnePass
 #endif
 #if ML_GLASS_SPLIT != kOnePass
-uniform uint u_deepFragments;  // kListDeepTiles: a pixel of this many fragments makes its tile deep
+uniform uint u_deepFragments;  // kListDeepTiles, kShadeShallowTiles: a pixel of this many fragments makes its tile deep
 uniform uint u_maxParts;       // kListDeepTiles: the most parts a deep tile is shaded in
 uniform uint u_deepBase;       // the deep tiles' words in glassWords (ML_GLASS_DEEP_*)
 uniform uint u_screenTiles;    // words of the tile list: the parts' follow it
@@ -173,25 +177,26 @@ void growDispatch(uint dispatch, uint last) {
     atomicMax(glassWords[u_deepBase + dispatch + 1u], last / uint(ML_GLASS_DEEP_ROW) + 1u);
 }
 
-// kListDeepTiles: whether a pixel of the tile holds u_deepFragments fragments or more; if so
-// the tile and its parts are listed. Every invocation calls it alike (barriers).
-bool listedAsDeep(ivec2 tile, uint fragments) {
+// kListDeepTiles, kShadeShallowTiles: the most fragments a pixel of the tile holds, where that
+// is u_deepFragments or more (the tile is deep), else 0. Every invocation calls it alike (barriers).
+uint deepestPixel(uint fragments) {
     if (gl_LocalInvocationIndex == 0u) s_deepest = 0u;
     barrier();
     if (fragments >= u_deepFragments) atomicMax(s_deepest, fragments);
     barrier();
-    uint deepest = s_deepest;
-    if (deepest != 0u && gl_LocalInvocationIndex == 0u) {
-        uint listed = atomicAdd(glassWords[u_deepBase + ML_GLASS_DEEP_TILE_COUNT], 1u);
-        glassWords[u_deepBase + ML_GLASS_DEEP_TILES + listed] = uint(tile.x) | (uint(tile.y) << 16);
-        growDispatch(ML_GLASS_DEEP_BLEND_DISPATCH, listed);
-        uint parts = min(deepest, u_maxParts);
-        uint first = atomicAdd(glassWords[u_deepBase + ML_GLASS_DEEP_PART_COUNT], parts);
-        for (uint part = 0u; part < parts; ++part)
-            glassWords[u_deepBase + ML_GLASS_DEEP_TILES + u_screenTiles + first + part] = (listed << 8) | (part << 4) | (parts - 1u);
-        growDispatch(ML_GLASS_DEEP_PARTS_DISPATCH, first + parts - 1u);
-    }
-    return deepest != 0u;
+    return s_deepest;
+}
+
+// kListDeepTiles: lists a deep tile and its parts.
+void listDeepTile(ivec2 tile, uint deepest) {
+    uint listed = atomicAdd(glassWords[u_deepBase + ML_GLASS_DEEP_TILE_COUNT], 1u);
+    glassWords[u_deepBase + ML_GLASS_DEEP_TILES + listed] = uint(tile.x) | (uint(tile.y) << 16);
+    growDispatch(ML_GLASS_DEEP_BLEND_DISPATCH, listed);
+    uint parts = min(deepest, u_maxParts);
+    uint first = atomicAdd(glassWords[u_deepBase + ML_GLASS_DEEP_PART_COUNT], parts);
+    for (uint part = 0u; part < parts; ++part)
+        glassWords[u_deepBase + ML_GLASS_DEEP_TILES + u_screenTiles + first + part] = (listed << 8) | (part << 4) | (parts - 1u);
+    growDispatch(ML_GLASS_DEEP_PARTS_DISPATCH, first + parts - 1u);
 }
 
 // kShadeParts: part `part` of `parts` of the pixel's sorted fragments, a contiguous run.
@@ -239,7 +244,11 @@ void main() {
     imageStore(u_hdr, p, vec4(blended, stored.a));
     return;
 #elif ML_GLASS_SPLIT == kListDeepTiles
-    if (listedAsDeep(ivec2(gl_WorkGroupID.xy), end - begin)) return;
+    uint deepest = deepestPixel(end - begin);
+    if (deepest != 0u && gl_LocalInvocationIndex == 0u) listDeepTile(ivec2(gl_WorkGroupID.xy), deepest);
+    return;
+#elif ML_GLASS_SPLIT == kShadeShallowTiles
+    if (deepestPixel(end - begin) != 0u) return;  // the whole workgroup: kShadeParts shades it
 #elif ML_GLASS_SPLIT == kShadeParts
     takePart(part, parts, begin, end);
 #endif

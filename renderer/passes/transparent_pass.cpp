@@ -1,6 +1,7 @@
 #include "renderer/passes/transparent_pass.h"
 
 #include <algorithm>
+#include <string>
 #include <utility>
 
 #include "glsl/include/bindings.h"
@@ -118,18 +119,17 @@ void TransparentPass::renderCaptured(const FrameContext& ctx, const ClusteredLig
 void TransparentPass::shadeSplittingDeepTiles(const FrameContext& ctx, int textureSet) {
     // Deep from a pixel of two fragments: each further layer is a further chain of rounds.
     constexpr GLuint kDeepFragments = 2;
+    // glass_shade.comp's ML_GLASS_SPLIT values are these plus one.
+    enum Step { kList, kParts, kBlend, kShallow };
     if (!splitPrograms_[0]) {
-        const char* steps[3] = {"1", "2", "3"};  // glass_shade.comp's kListDeepTiles, kShadeParts, kBlendParts
-        const char* labels[3] = {"transparent.list-deep-tiles", "transparent.shade-parts", "transparent.blend-parts"};
-        for (int i = 0; i < 3; ++i) {
+        const char* labels[] = {"transparent.list-deep-tiles", "transparent.shade-parts", "transparent.blend-parts",
+                                "transparent.shade-shallow-tiles"};
+        for (int i = 0; i < int(splitPrograms_.size()); ++i) {
             shaders::Defines defines = splitDefines_;
-            defines.emplace_back("ML_GLASS_SPLIT", steps[i]);
+            defines.emplace_back("ML_GLASS_SPLIT", std::to_string(i + 1));
             splitPrograms_[i] = gl::Program(labels[i], {{GL_COMPUTE_SHADER, "glass_shade.comp"}}, defines);
         }
     }
-    const gl::Program& list = splitPrograms_[0];
-    const gl::Program& parts = splitPrograms_[1];
-    const gl::Program& blend = splitPrograms_[2];
     const gl::Buffer& store = capture_->fragmentBuffer();
     const std::uint32_t base = capture_->deepTileWordOffset();
     // Nothing listed yet: both dispatches empty (0 x 0 x 1).
@@ -141,25 +141,29 @@ void TransparentPass::shadeSplittingDeepTiles(const FrameContext& ctx, int textu
         program.set("u_textureSet", textureSet);
         program.set("u_deepBase", base);
         program.set("u_screenTiles", screenTiles(ctx).x * screenTiles(ctx).y);
+        program.set("u_deepFragments", kDeepFragments);
         program.set("u_sorts", 0u);
+        program.set("u_blends", 0u);
+        program.set("u_storesColors", 0u);
     }
-    // Sorts every tile, shades and blends the shallow ones, lists the deep ones and their parts.
-    list.use();
-    list.set("u_deepFragments", kDeepFragments);
-    list.set("u_maxParts", layerGroups_);
-    list.set("u_sorts", 1u);
-    list.set("u_storesColors", 0u);
-    list.set("u_blends", 1u);
+    // Sorts every tile's pixels, lists the deep tiles and their parts.
+    splitPrograms_[kList].use();
+    splitPrograms_[kList].set("u_maxParts", layerGroups_);
+    splitPrograms_[kList].set("u_sorts", 1u);
     glDispatchCompute(screenTiles(ctx).x, screenTiles(ctx).y, 1);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, store.id());
-    // Every listed part, its colours stored; then each listed tile's blended.
-    parts.use();
-    parts.set("u_storesColors", 1u);
-    parts.set("u_blends", 0u);
+    // Every listed part, its colours stored; beside it (no barrier: other tiles, other words)
+    // every other tile shaded and blended.
+    splitPrograms_[kParts].use();
+    splitPrograms_[kParts].set("u_storesColors", 1u);
     glDispatchComputeIndirect(GLintptr(base + ML_GLASS_DEEP_PARTS_DISPATCH) * 4);
+    splitPrograms_[kShallow].use();
+    splitPrograms_[kShallow].set("u_blends", 1u);
+    glDispatchCompute(screenTiles(ctx).x, screenTiles(ctx).y, 1);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-    blend.use();
+    // Each listed tile's parts blended.
+    splitPrograms_[kBlend].use();
     glDispatchComputeIndirect(GLintptr(base + ML_GLASS_DEEP_BLEND_DISPATCH) * 4);
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
 }

@@ -11,7 +11,7 @@
 //                                 surface from its triangle, shade, blend back to front; with
 //                                 the cluster lists' rounds, tiles with a pixel of two fragments
 //                                 or more are split over up to MethodSettings::glassLayerGroups
-//                                 workgroups, in three programs (the shader's header says why)
+//                                 workgroups, in four programs (the shader's header says why)
 // Deferred and visibility count right after their raster, so the total is long known when the
 // fill needs it (read behind a fence, no pipeline drain).
 // On GPUs where few SMs run graphics work a fragment shader runs ~30x slower than compute
@@ -80,7 +80,8 @@ private:
                     const char* forwardShader, const shaders::Defines& defines, bool listRounds);
     void renderForward(const FrameContext& ctx, const ClusteredLighting* lists) const;
     void renderCaptured(const FrameContext& ctx, const ClusteredLighting* lists);
-    // The three dispatches of a split frame (glass_shade.comp's kListDeepTiles, kShadeParts, kBlendParts).
+    // The four dispatches of a split frame (glass_shade.comp's kListDeepTiles, then kShadeParts
+    // beside kShadeShallowTiles, then kBlendParts).
     void shadeSplittingDeepTiles(const FrameContext& ctx, int textureSet);
 
     std::string timerName_;
@@ -91,7 +92,8 @@ private:
     // program has no list rounds, or the settings ask for no split).
     std::uint32_t layerGroups_ = 0;
     shaders::Defines splitDefines_;       // shade_'s, for the split's programs
-    std::array<gl::Program, 3> splitPrograms_;  // glass_shade.comp's kListDeepTiles, kShadeParts, kBlendParts
+    // glass_shade.comp's kListDeepTiles, kShadeParts, kBlendParts, kShadeShallowTiles
+    std::array<gl::Program, 4> splitPrograms_;
 };
 
 }  // namespace ml
