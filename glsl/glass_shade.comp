@@ -19,15 +19,18 @@
 // every depth, each by the few invocations it lights; on an H100 such tiles made the gas
 // station's glass as slow as its whole opaque lighting at a sixth of its work
 // (docs/bench/nvidia-h100/cooperative-rounds/). So a frame may be shaded in four programs
-// (ML_GLASS_SPLIT): kListDeepTiles sorts every tile's pixels and lists the tiles with a pixel of
+// (ML_GLASS_SPLIT): kListTiles sorts every tile's pixels and lists the tiles with a pixel of
 // u_deepFragments fragments or more, each in as many parts as its deepest pixel has fragments (at
-// most u_maxParts); then kShadeParts shades each listed part in a workgroup of its own, a
-// contiguous run of every pixel's sorted fragments, storing their colours, while
-// kShadeShallowTiles shades and blends every other tile: the two touch different tiles and run
-// side by side, no barrier between, so the deep tiles' long chains overlap the rest of the screen
-// instead of following it; last kBlendParts blends the parts' colours back to front. The colours
-// and the order are those of one dispatch, so the bits are too. Each is a program of its own, so
-// that the one pass carries none of their code.
+// most u_maxParts), and the other tiles that hold a fragment; then kShadeParts shades each listed
+// part in a workgroup of its own, a contiguous run of every pixel's sorted fragments, storing
+// their colours, while kShadeShallowTiles shades and blends the other listed tiles: the two touch
+// different tiles and run side by side, no barrier between, so the deep tiles' long chains overlap
+// the rest of the screen instead of following it; last kBlendParts blends the parts' colours back
+// to front. The colours and the order are those of one dispatch, so the bits are too. Only the
+// list runs a workgroup per screen tile: a shading workgroup holds the rounds' shared memory, so
+// few fit an SM at once, and a screen of them, most without glass, took 0.14 ms on an H200
+// (docs/bench/nvidia-h200/glass-tiles/). Each is a program of its own, so that the one pass
+// carries none of their code.
 //
 // Order: nearest first by depth, equal depths by triangle id, so every method (and naive)
 // blends the same fragments in the same order, intersecting and interleaved panes included.
@@ -71,7 +74,7 @@ uniform uint u_sorts;        // 1: the first dispatch, which sorts each pixel's 
 uniform uint u_blends;       // 1: the last dispatch, which blends them over the frame
 uniform uint u_storesColors; // 1: more than one dispatch; colours go through the buffer
 #define kOnePass 0        // ML_GLASS_SPLIT: no tile split
-#define kListDeepTiles 1
+#define kListTiles 1
 #define kShadeParts 2
 #define kBlendParts 3
 #define kShadeShallowTiles 4
@@ -79,11 +82,11 @@ uniform uint u_storesColors; // 1: more than one dispatch; colours go through th
 #define ML_GLASS_SPLIT kOnePass
 #endif
 #if ML_GLASS_SPLIT != kOnePass
-uniform uint u_deepFragments;  // kListDeepTiles, kShadeShallowTiles: a pixel of this many fragments makes its tile deep
-uniform uint u_maxParts;       // kListDeepTiles: the most parts a deep tile is shaded in
+uniform uint u_deepFragments;  // kListTiles: a pixel of this many fragments makes its tile deep
+uniform uint u_maxParts;       // kListTiles: the most parts a deep tile is shaded in
 uniform uint u_deepBase;       // the deep tiles' words in glassWords (ML_GLASS_DEEP_*)
 uniform uint u_screenTiles;    // words of the tile list: the parts' follow it
-shared uint s_deepest;
+shared uint s_mostFragments;
 #endif
 
 uvec2 fragmentAt(uint k) { return uvec2(glassWords[2u * k], glassWords[2u * k + 1u]); }
@@ -150,8 +153,8 @@ bool nextFragment(uint begin, inout uint k) {
 #if ML_GLASS_SPLIT != kOnePass
 uint deepWord(uint word) { return glassWords[u_deepBase + word]; }
 
-// kShadeParts, kBlendParts: this workgroup's listed tile and its part of each pixel's fragments
-// (kBlendParts: all of them); false past the list's end.
+// kShadeParts, kBlendParts, kShadeShallowTiles: this workgroup's listed tile and its part of each
+// pixel's fragments (the others: all of them); false past the list's end.
 bool listedTile(out ivec2 tile, out uint part, out uint parts) {
     uint listed = gl_WorkGroupID.y * uint(ML_GLASS_DEEP_ROW) + gl_WorkGroupID.x;
     uint tileIndex = listed;
@@ -163,6 +166,9 @@ bool listedTile(out ivec2 tile, out uint part, out uint parts) {
     tileIndex = entry >> 8;
     part = (entry >> 4) & 15u;
     parts = (entry & 15u) + 1u;
+#elif ML_GLASS_SPLIT == kShadeShallowTiles
+    if (listed >= deepWord(ML_GLASS_SHALLOW_COUNT)) return false;
+    tileIndex = u_screenTiles - 1u - listed;
 #else
     if (listed >= deepWord(ML_GLASS_DEEP_TILE_COUNT)) return false;
 #endif
@@ -177,17 +183,23 @@ void growDispatch(uint dispatch, uint last) {
     atomicMax(glassWords[u_deepBase + dispatch + 1u], last / uint(ML_GLASS_DEEP_ROW) + 1u);
 }
 
-// kListDeepTiles, kShadeShallowTiles: the most fragments a pixel of the tile holds, where that
-// is u_deepFragments or more (the tile is deep), else 0. Every invocation calls it alike (barriers).
-uint deepestPixel(uint fragments) {
-    if (gl_LocalInvocationIndex == 0u) s_deepest = 0u;
+// kListTiles: the most fragments a pixel of the tile holds. Every invocation calls it alike (barriers).
+uint mostFragments(uint fragments) {
+    if (gl_LocalInvocationIndex == 0u) s_mostFragments = 0u;
     barrier();
-    if (fragments >= u_deepFragments) atomicMax(s_deepest, fragments);
+    if (fragments != 0u) atomicMax(s_mostFragments, fragments);
     barrier();
-    return s_deepest;
+    return s_mostFragments;
 }
 
-// kListDeepTiles: lists a deep tile and its parts.
+// kListTiles: lists a tile with glass but none deep, from the tile list's back.
+void listShallowTile(ivec2 tile) {
+    uint listed = atomicAdd(glassWords[u_deepBase + ML_GLASS_SHALLOW_COUNT], 1u);
+    glassWords[u_deepBase + ML_GLASS_DEEP_TILES + u_screenTiles - 1u - listed] = uint(tile.x) | (uint(tile.y) << 16);
+    growDispatch(ML_GLASS_SHALLOW_DISPATCH, listed);
+}
+
+// kListTiles: lists a deep tile and its parts.
 void listDeepTile(ivec2 tile, uint deepest) {
     uint listed = atomicAdd(glassWords[u_deepBase + ML_GLASS_DEEP_TILE_COUNT], 1u);
     glassWords[u_deepBase + ML_GLASS_DEEP_TILES + listed] = uint(tile.x) | (uint(tile.y) << 16);
@@ -218,7 +230,7 @@ uint beginFragment(uint k, ivec2 p, out SurfacePoint s, out vec3 viewDir, out fl
 #endif
 
 void main() {
-#if ML_GLASS_SPLIT == kShadeParts || ML_GLASS_SPLIT == kBlendParts
+#if ML_GLASS_SPLIT == kShadeParts || ML_GLASS_SPLIT == kBlendParts || ML_GLASS_SPLIT == kShadeShallowTiles
     ivec2 tile;
     uint part, parts;
     if (!listedTile(tile, part, parts)) return;  // the whole workgroup: no barrier is left waiting
@@ -243,12 +255,13 @@ void main() {
     for (uint j = end; j-- > begin;) blended = over(colorAt(j), blended);
     imageStore(u_hdr, p, vec4(blended, stored.a));
     return;
-#elif ML_GLASS_SPLIT == kListDeepTiles
-    uint deepest = deepestPixel(end - begin);
-    if (deepest != 0u && gl_LocalInvocationIndex == 0u) listDeepTile(ivec2(gl_WorkGroupID.xy), deepest);
+#elif ML_GLASS_SPLIT == kListTiles
+    uint most = mostFragments(end - begin);
+    if (gl_LocalInvocationIndex == 0u) {
+        if (most >= u_deepFragments) listDeepTile(ivec2(gl_WorkGroupID.xy), most);
+        else if (most != 0u) listShallowTile(ivec2(gl_WorkGroupID.xy));
+    }
     return;
-#elif ML_GLASS_SPLIT == kShadeShallowTiles
-    if (deepestPixel(end - begin) != 0u) return;  // the whole workgroup: kShadeParts shades it
 #elif ML_GLASS_SPLIT == kShadeParts
     takePart(part, parts, begin, end);
 #endif

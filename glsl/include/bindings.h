@@ -51,10 +51,13 @@
 // colours, as llvmpipe offers a compute shader no block to spare.
 #define ML_GLASS_DEEP_PARTS_DISPATCH 0  // the parts' indirect dispatch: parts per row, rows, 1 (words 0-2)
 #define ML_GLASS_DEEP_BLEND_DISPATCH 3  // the blend's: tiles per row, rows, 1 (words 3-5)
-#define ML_GLASS_DEEP_TILE_COUNT 6      // tiles listed
+#define ML_GLASS_DEEP_TILE_COUNT 6      // deep tiles listed
 #define ML_GLASS_DEEP_PART_COUNT 7      // parts listed
-#define ML_GLASS_DEEP_TILES 8           // then a word per screen tile: the tiles, x | y << 16; then the parts, as
-                                        // many words per screen tile as a tile's most parts: tile index << 8 | part << 4 | parts - 1
+#define ML_GLASS_SHALLOW_DISPATCH 8     // the other tiles with glass: their shading's dispatch (words 8-10)
+#define ML_GLASS_SHALLOW_COUNT 11       // and how many are listed
+#define ML_GLASS_DEEP_TILES 12          // then a word per screen tile: the tiles, x | y << 16, the deep ones from the
+                                        // front, the shallow ones from the back; then the parts, as many words per
+                                        // screen tile as a tile's most parts: tile index << 8 | part << 4 | parts - 1
 #define ML_GLASS_DEEP_MAX_PARTS 16      // the most parts a tile may take (4 bits of its part words)
 #define ML_GLASS_DEEP_ROW 65535         // tiles per dispatch row: GL's least maximum work-group count
 // The visibility buffer's compute raster (renderer/passes/compute_raster.h), before anything else

@@ -122,7 +122,7 @@ void TransparentPass::shadeSplittingDeepTiles(const FrameContext& ctx, int textu
     // glass_shade.comp's ML_GLASS_SPLIT values are these plus one.
     enum Step { kList, kParts, kBlend, kShallow };
     if (!splitPrograms_[0]) {
-        const char* labels[] = {"transparent.list-deep-tiles", "transparent.shade-parts", "transparent.blend-parts",
+        const char* labels[] = {"transparent.list-tiles", "transparent.shade-parts", "transparent.blend-parts",
                                 "transparent.shade-shallow-tiles"};
         for (int i = 0; i < int(splitPrograms_.size()); ++i) {
             shaders::Defines defines = splitDefines_;
@@ -132,8 +132,8 @@ void TransparentPass::shadeSplittingDeepTiles(const FrameContext& ctx, int textu
     }
     const gl::Buffer& store = capture_->fragmentBuffer();
     const std::uint32_t base = capture_->deepTileWordOffset();
-    // Nothing listed yet: both dispatches empty (0 x 0 x 1).
-    const GLuint header[ML_GLASS_DEEP_TILES] = {0, 0, 1, 0, 0, 1, 0, 0};
+    // Nothing listed yet: every dispatch empty (0 x 0 x 1).
+    const GLuint header[ML_GLASS_DEEP_TILES] = {0, 0, 1, 0, 0, 1, 0, 0, 0, 0, 1, 0};
     glNamedBufferSubData(store.id(), GLintptr(base) * 4, sizeof(header), header);
     ctx.scene.bindTextureSet(textureSet);
     for (const gl::Program& program : splitPrograms_) {
@@ -141,26 +141,26 @@ void TransparentPass::shadeSplittingDeepTiles(const FrameContext& ctx, int textu
         program.set("u_textureSet", textureSet);
         program.set("u_deepBase", base);
         program.set("u_screenTiles", screenTiles(ctx).x * screenTiles(ctx).y);
-        program.set("u_deepFragments", kDeepFragments);
         program.set("u_sorts", 0u);
         program.set("u_blends", 0u);
         program.set("u_storesColors", 0u);
     }
-    // Sorts every tile's pixels, lists the deep tiles and their parts.
+    // Sorts every tile's pixels, lists the deep tiles and their parts, and the other tiles with glass.
     splitPrograms_[kList].use();
+    splitPrograms_[kList].set("u_deepFragments", kDeepFragments);
     splitPrograms_[kList].set("u_maxParts", layerGroups_);
     splitPrograms_[kList].set("u_sorts", 1u);
     glDispatchCompute(screenTiles(ctx).x, screenTiles(ctx).y, 1);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, store.id());
     // Every listed part, its colours stored; beside it (no barrier: other tiles, other words)
-    // every other tile shaded and blended.
+    // every other listed tile shaded and blended.
     splitPrograms_[kParts].use();
     splitPrograms_[kParts].set("u_storesColors", 1u);
     glDispatchComputeIndirect(GLintptr(base + ML_GLASS_DEEP_PARTS_DISPATCH) * 4);
     splitPrograms_[kShallow].use();
     splitPrograms_[kShallow].set("u_blends", 1u);
-    glDispatchCompute(screenTiles(ctx).x, screenTiles(ctx).y, 1);
+    glDispatchComputeIndirect(GLintptr(base + ML_GLASS_SHALLOW_DISPATCH) * 4);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     // Each listed tile's parts blended.
     splitPrograms_[kBlend].use();

@@ -80,7 +80,7 @@ private:
                     const char* forwardShader, const shaders::Defines& defines, bool listRounds);
     void renderForward(const FrameContext& ctx, const ClusteredLighting* lists) const;
     void renderCaptured(const FrameContext& ctx, const ClusteredLighting* lists);
-    // The four dispatches of a split frame (glass_shade.comp's kListDeepTiles, then kShadeParts
+    // The four dispatches of a split frame (glass_shade.comp's kListTiles, then kShadeParts
     // beside kShadeShallowTiles, then kBlendParts).
     void shadeSplittingDeepTiles(const FrameContext& ctx, int textureSet);
 
@@ -92,7 +92,7 @@ private:
     // program has no list rounds, or the settings ask for no split).
     std::uint32_t layerGroups_ = 0;
     shaders::Defines splitDefines_;       // shade_'s, for the split's programs
-    // glass_shade.comp's kListDeepTiles, kShadeParts, kBlendParts, kShadeShallowTiles
+    // glass_shade.comp's kListTiles, kShadeParts, kBlendParts, kShadeShallowTiles
     std::array<gl::Program, 4> splitPrograms_;
 };
 

@@ -69,12 +69,13 @@ void expectMethodsMatchNaive(const Scene& scene, const std::vector<Light>& light
     test::expectClusteredVariantsMatchNaive(renderer, label);
 }
 
-// The tiles the last frame's split listed as deep (0 where the frame kept no list).
-std::uint32_t deepTilesListed(const FrameRenderer& renderer) {
+// A count the last frame's split kept (ML_GLASS_DEEP_TILE_COUNT: the deep tiles;
+// ML_GLASS_SHALLOW_COUNT: the other tiles with glass), 0 where the frame kept no list.
+std::uint32_t tilesListed(const FrameRenderer& renderer, std::uint32_t countWord = ML_GLASS_DEEP_TILE_COUNT) {
     const GlassFragments* capture = renderer.method().transparentCapture();
     if (!capture || !capture->hasDeepTileList()) return 0;
     std::uint32_t count = 0;
-    capture->fragmentBuffer().download(&count, sizeof(count), (std::size_t(capture->deepTileWordOffset()) + ML_GLASS_DEEP_TILE_COUNT) * 4);
+    capture->fragmentBuffer().download(&count, sizeof(count), (std::size_t(capture->deepTileWordOffset()) + countWord) * 4);
     return count;
 }
 
@@ -96,13 +97,13 @@ std::uint32_t expectSplitMatchesOnePass(const Scene& scene, const std::vector<Li
         s.method.glassLayerGroups = 1;
         FrameRenderer renderer(scene, lights, s);
         renderer.render(0);
-        EXPECT_EQ(deepTilesListed(renderer), 0u) << methodName(kind) << ": listed with no split";
+        EXPECT_EQ(tilesListed(renderer), 0u) << methodName(kind) << ": listed with no split";
         const FloatImage onePass = renderer.readHdr();
         for (std::uint32_t groups : {2u, 3u, 4u}) {
             s.method.glassLayerGroups = groups;
             renderer.setMethod(s.method);
             renderer.render(0);
-            const std::uint32_t listed = deepTilesListed(renderer);
+            const std::uint32_t listed = tilesListed(renderer);
             fewest = std::min(fewest, listed);
             EXPECT_EQ(channelsDiffering(renderer.readHdr(), onePass), 0u)
                 << label << ", " << methodName(kind) << ", " << groups << " workgroups a deep tile (" << listed
@@ -245,44 +246,50 @@ TEST_F(GlassCapture, TexturedNormalMappedPaneMatchesTheForwardPass) {
     EXPECT_EQ(expectSplitMatchesOnePass(scene, fromRight, frame(scene, kFrontView), "textured glass"), 0u);
 }
 
-// More deep tiles than one dispatch row holds (ML_GLASS_DEEP_ROW, 65,535: GL's least maximum
-// work-group count): at 2560x1648 (66,080 tiles) two layers of horizontal glass strips, one
-// every 7 pixel rows, put a pixel of two fragments in every tile; the listed tiles go on in the
-// dispatches' second row, and the frame is the one pass's, bit for bit.
-TEST_F(GlassCapture, DeepTilesPastOneDispatchRowAreAllShaded) {
+// More listed tiles than one dispatch row holds (ML_GLASS_DEEP_ROW, 65,535: GL's least maximum
+// work-group count): at 2560x1648 (65,920 tiles) horizontal glass strips, one every 7 pixel rows,
+// put a fragment in every tile. With two layers of them every tile holds a pixel of two fragments
+// and is listed deep; with one, every tile is listed shallow. Either way the listed tiles go on in
+// the dispatches' second row, and the frame is the one pass's, bit for bit.
+TEST_F(GlassCapture, ListedTilesPastOneDispatchRowAreAllShaded) {
     constexpr int kWide = 2560, kTall = 1648;
     const float pixel = 2.0f * 4.0f * std::tan(glm::radians(30.0f)) / float(kTall);  // world units a pixel at z = 0
-    Gltf g;
-    std::vector<json> prims;
-    for (const auto& [z, colour] : {std::pair{0.0f, glm::vec4(0.9f, 0.3f, 0.2f, 0.5f)}, std::pair{-0.05f, glm::vec4(0.2f, 0.4f, 0.9f, 0.5f)}}) {
-        const float scale = (4.0f - z) / 4.0f;  // the back layer's strips on the front's pixel rows
-        std::vector<glm::vec3> corners, normals;
-        std::vector<std::uint16_t> indices;
-        for (float y = -0.5f * float(kTall) * pixel; y < 0.5f * float(kTall) * pixel; y += 7.0f * pixel) {
-            const auto first = std::uint16_t(corners.size());
-            for (glm::vec2 c : {glm::vec2(-4, 0), glm::vec2(4, 0), glm::vec2(4, 2.5f * pixel), glm::vec2(-4, 2.5f * pixel)})
-                corners.push_back({c.x * scale, (y + c.y) * scale, z});
-            normals.insert(normals.end(), 4, glm::vec3(0, 0, 1));
-            for (int i : {0, 1, 2, 0, 2, 3}) indices.push_back(std::uint16_t(first + i));
+    for (int layers : {2, 1}) {
+        Gltf g;
+        std::vector<json> prims;
+        const std::pair<float, glm::vec4> strips[] = {{0.0f, {0.9f, 0.3f, 0.2f, 0.5f}}, {-0.05f, {0.2f, 0.4f, 0.9f, 0.5f}}};
+        for (int layer = 0; layer < layers; ++layer) {
+            const auto& [z, colour] = strips[layer];
+            const float scale = (4.0f - z) / 4.0f;  // the back layer's strips on the front's pixel rows
+            std::vector<glm::vec3> corners, normals;
+            std::vector<std::uint16_t> indices;
+            for (float y = -0.5f * float(kTall) * pixel; y < 0.5f * float(kTall) * pixel; y += 7.0f * pixel) {
+                const auto first = std::uint16_t(corners.size());
+                for (glm::vec2 c : {glm::vec2(-4, 0), glm::vec2(4, 0), glm::vec2(4, 2.5f * pixel), glm::vec2(-4, 2.5f * pixel)})
+                    corners.push_back({c.x * scale, (y + c.y) * scale, z});
+                normals.insert(normals.end(), 4, glm::vec3(0, 0, 1));
+                for (int i : {0, 1, 2, 0, 2, 3}) indices.push_back(std::uint16_t(first + i));
+            }
+            prims.push_back(primitive({{"POSITION", g.vec3(corners)}, {"NORMAL", g.vec3(normals)}}, g.indices(indices),
+                                      paneMaterial(g, colour, "BLEND")));
         }
-        prims.push_back(primitive({{"POSITION", g.vec3(corners)}, {"NORMAL", g.vec3(normals)}}, g.indices(indices),
-                                  paneMaterial(g, colour, "BLEND")));
+        const Scene scene = writeAndLoad(g, prims, "glass_strips_" + std::to_string(layers));
+        FrameSettings s = test::smallFrame(scene, kFrontView, kWide, kTall);
+        s.method.kind = MethodKind::Visibility;
+        s.method.glassLayerGroups = 1;
+        FrameRenderer renderer(scene, kFrontAndBackLights, s);
+        renderer.render(0);
+        const FloatImage onePass = renderer.readHdr();
+        s.method.glassLayerGroups = 4;
+        renderer.setMethod(s.method);
+        renderer.render(0);
+        const std::uint32_t deep = tilesListed(renderer), shallow = tilesListed(renderer, ML_GLASS_SHALLOW_COUNT);
+        std::printf("glass strips, %d layer(s), at %dx%d: %llu fragments, %u deep and %u shallow tiles listed\n", layers, kWide,
+                    kTall, static_cast<unsigned long long>(renderer.method().transparentCapture()->fragmentCount()), deep, shallow);
+        EXPECT_GT(layers == 2 ? deep : shallow, std::uint32_t(ML_GLASS_DEEP_ROW)) << layers << " layer(s)";
+        if (layers == 1) EXPECT_EQ(deep, 0u);
+        EXPECT_EQ(channelsDiffering(renderer.readHdr(), onePass), 0u) << layers << " layer(s): channels differing from one pass";
     }
-    const Scene scene = writeAndLoad(g, prims, "glass_strips");
-    FrameSettings s = test::smallFrame(scene, kFrontView, kWide, kTall);
-    s.method.kind = MethodKind::Visibility;
-    s.method.glassLayerGroups = 1;
-    FrameRenderer renderer(scene, kFrontAndBackLights, s);
-    renderer.render(0);
-    const FloatImage onePass = renderer.readHdr();
-    s.method.glassLayerGroups = 4;
-    renderer.setMethod(s.method);
-    renderer.render(0);
-    const std::uint32_t listed = deepTilesListed(renderer);
-    std::printf("glass strips at %dx%d: %llu fragments, %u deep tiles listed\n", kWide, kTall,
-                static_cast<unsigned long long>(renderer.method().transparentCapture()->fragmentCount()), listed);
-    EXPECT_GT(listed, std::uint32_t(ML_GLASS_DEEP_ROW));
-    EXPECT_EQ(channelsDiffering(renderer.readHdr(), onePass), 0u) << "channels differing from one pass";
 }
 
 // The fragments are sized by what the frame needs; a frame whose need passes the budget (the
