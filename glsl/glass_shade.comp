@@ -28,9 +28,9 @@
 // the rest of the screen instead of following it; last kBlendParts blends the parts' colours back
 // to front. The colours and the order are those of one dispatch, so the bits are too. Only the
 // list runs a workgroup per screen tile: a shading workgroup holds the rounds' shared memory, so
-// few fit an SM at once, and a screen of them, most without glass, took 0.14 ms on an H200
-// (docs/bench/nvidia-h200/glass-tiles/). Each is a program of its own, so that the one pass
-// carries none of their code.
+// few fit an SM at once, and a screen of them, most without glass, cost the atrium's glass
+// 0.03-0.04 ms on an H200 (docs/bench/nvidia-h200/glass-tiles/). Each is a program of its own,
+// so that the one pass carries none of their code.
 //
 // Order: nearest first by depth, equal depths by triangle id, so every method (and naive)
 // blends the same fragments in the same order, intersecting and interleaved panes included.
