@@ -20,7 +20,7 @@
 #define ML_SSBO_CLUSTER_ACTIVE 8   // 1 where a visible sample falls in the cluster (--active-only)
 #define ML_SSBO_ASSIGN_STATS 9     // overflow counters of capped lists
 #define ML_SSBO_SCAN_DATA 10       // prefix sum: the values, scanned in place
-#define ML_SSBO_SCAN_BLOCKS 11     // prefix sum: one total per block
+#define ML_SSBO_SCAN_BLOCKS 11     // prefix sum: the ticket, the total, and each block's published sums
 #define ML_SSBO_FILL_CURSORS 12    // per-cluster write positions of the fill pass
 // Scene geometry for compute passes that rebuild surfaces from triangle ids (the visibility
 // resolve, the transparent pass's shading). The vertices share the exact fill's cursors' point
@@ -180,8 +180,9 @@
 
 // The light animation's compute workgroup size.
 #define ML_ANIMATE_WORKGROUP 256
-// Prefix sum: threads per workgroup; each scans two elements, so a block is twice this.
+// Prefix sum: threads per workgroup, and the consecutive elements each sums (a block is their product).
 #define ML_SCAN_WORKGROUP 256
+#define ML_SCAN_PER_INVOCATION 16
 // Screen-space compute passes (depth reduction, active clusters, compute resolve): tile edge.
 #define ML_SCREEN_TILE 8
 // Fitted slicing's depth reduction: pixels per invocation along each axis.

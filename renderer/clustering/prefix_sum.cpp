@@ -1,10 +1,16 @@
 #include "renderer/clustering/prefix_sum.h"
 
-#include <string>
+#include <algorithm>
 
 #include "glsl/include/bindings.h"
 
 namespace ml {
+
+namespace {
+constexpr std::size_t kStateHeaderBytes = 16;  // ticket, total, two unused words
+constexpr std::size_t kBlockStateBytes = 16;   // flag, aggregate, inclusive, unused
+constexpr std::uint32_t kEpochs = 1u << 30;    // the flag keeps two bits for the status
+}  // namespace
 
 PrefixSum::PrefixSum() : program_(gl::Program::compute("prefix_sum.comp")) {}
 
@@ -15,38 +21,29 @@ void PrefixSum::run(const gl::Buffer& data, std::uint32_t count, const gl::Buffe
                                   GL_UNSIGNED_INT, &zero);
         return;
     }
-    program_.use();
-    scanLevel(data.id(), count, 0, total, totalOffset);
-}
-
-void PrefixSum::scanLevel(GLuint data, std::uint32_t count, std::size_t level, const gl::Buffer& total,
-                          std::size_t totalOffset) {
-    const std::uint32_t blocks = (count + kBlockSize - 1) / kBlockSize;
-    while (levels_.size() <= level) levels_.emplace_back("scan.blocks." + std::to_string(levels_.size()));
-    gl::GrowableBuffer& sums = levels_[level];
-    sums.ensure(std::size_t(blocks) * 4);
-
-    dispatchPhase(0, data, sums.buffer(), count, blocks);
-
-    if (blocks == 1) {
-        // One block: its total is the total of everything.
-        glCopyNamedBufferSubData(sums.buffer().id(), total.id(), 0, static_cast<GLintptr>(totalOffset), 4);
-        return;
+    const std::uint32_t blocks = (count - 1) / kBlockSize + 1;
+    // A new buffer, or the epochs run out: every flag to 0 (no run's) and the tickets to 0.
+    epoch_ = (epoch_ + 1) % kEpochs;
+    if (state_.ensure(kStateHeaderBytes + std::size_t(blocks) * kBlockStateBytes) || epoch_ == 0) {
+        glClearNamedBufferData(state_.buffer().id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, nullptr);
+        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+        epoch_ = 1;
+        firstTicket_ = 0;
     }
-    scanLevel(sums.buffer().id(), blocks, level + 1, total, totalOffset);
-
+    // Past the device's limit along x the dispatch goes on in y; the spare workgroups' tickets
+    // name no block.
+    const std::uint32_t groupsX = std::min(blocks, gl::maxWorkGroupsX());
+    const std::uint32_t groupsY = (blocks - 1) / groupsX + 1;
     program_.use();
-    dispatchPhase(1, data, sums.buffer(), count, blocks);
-}
-
-void PrefixSum::dispatchPhase(unsigned phase, GLuint data, const gl::Buffer& sums, std::uint32_t count,
-                              std::uint32_t blocks) const {
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_SCAN_DATA, data);
-    sums.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_SCAN_BLOCKS);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_SCAN_DATA, data.id());
+    state_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_SCAN_BLOCKS);
     program_.set("u_count", count);
-    program_.set("u_phase", phase);
-    glDispatchCompute(blocks, 1, 1);
+    program_.set("u_epoch", epoch_);
+    program_.set("u_firstTicket", firstTicket_);
+    glDispatchCompute(groupsX, groupsY, 1);
+    firstTicket_ += groupsX * groupsY;  // wraps, as the shader's counter does
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+    glCopyNamedBufferSubData(state_.buffer().id(), total.id(), 4, static_cast<GLintptr>(totalOffset), 4);
 }
 
 }  // namespace ml

@@ -1,10 +1,10 @@
-// Exclusive prefix sum of a uint buffer on the GPU (glsl/prefix_sum.comp), any length.
-// Used to turn per-cluster light counts into list offsets, so the lists are sized by what
-// the frame needs rather than by a cap.
+// Exclusive prefix sum of a uint buffer on the GPU (glsl/prefix_sum.comp), any length, in one
+// dispatch (a chained scan with decoupled look-back). Used to turn per-cluster light counts into
+// list offsets, so the lists are sized by what the frame needs rather than by a cap, and the
+// glass's per-pixel fragment counts into where each pixel's fragments go.
 #pragma once
 
 #include <cstdint>
-#include <deque>
 
 #include "glsl/include/bindings.h"
 #include "renderer/gl/buffer.h"
@@ -20,14 +20,15 @@ public:
     void run(const gl::Buffer& data, std::uint32_t count, const gl::Buffer& total, std::size_t totalOffset);
 
     // Elements one workgroup scans.
-    static constexpr std::uint32_t kBlockSize = 2u * ML_SCAN_WORKGROUP;
+    static constexpr std::uint32_t kBlockSize = ML_SCAN_WORKGROUP * ML_SCAN_PER_INVOCATION;
 
 private:
-    // Phase 0 scans each block and writes block totals to sums; phase 1 adds them back.
-    void dispatchPhase(unsigned phase, GLuint data, const gl::Buffer& sums, std::uint32_t count, std::uint32_t blocks) const;
-    void scanLevel(GLuint data, std::uint32_t count, std::size_t level, const gl::Buffer& total, std::size_t totalOffset);
     gl::Program program_;
-    std::deque<gl::GrowableBuffer> levels_;  // block totals, one buffer per recursion level (deque: references stay valid as levels are added)
+    // The ticket counter, the total, and each block's published sums (the shader's ScanState).
+    gl::GrowableBuffer state_{"scan.state"};
+    // Each run's number, in the blocks' flags: a flag left by an earlier run never reads as set.
+    std::uint32_t epoch_ = 0;
+    std::uint32_t firstTicket_ = 0;  // the shader's ticket counter before this run
 };
 
 }  // namespace ml

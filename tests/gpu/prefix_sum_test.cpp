@@ -1,4 +1,5 @@
-// The GPU prefix sum against the CPU, on sizes around the block size and not multiples of it.
+// The GPU prefix sum against the CPU, on sizes around the block size and not multiples of it, up to
+// a 2560x1440 screen's glass counts (900 blocks looking back).
 #include <gtest/gtest.h>
 
 #include <numeric>
@@ -35,8 +36,53 @@ TEST_P(PrefixSumTest, MatchesTheCpuExclusiveScan) {
     EXPECT_EQ(sum, std::accumulate(values.begin(), values.end(), 0u));
 }
 
+// One scan object run again and again, its blocks' state kept between runs: a run must not read
+// an earlier run's sums as its own, whether the next is longer (the state re-created) or shorter.
+using PrefixSumRunsTest = GpuTest;
+
+TEST_F(PrefixSumRunsTest, EachRunScansOnlyItsOwnValues) {
+    PrefixSum scan;
+    gl::Buffer total("test.total", 4);
+    for (std::uint32_t n : {5000u, 70000u, 3000u, 70000u, 1u, 1025u, 70000u}) {
+        std::vector<std::uint32_t> values(n);
+        for (std::uint32_t i = 0; i < n; ++i) values[i] = pcgHash(i * 7u + n) % 9u;
+        gl::Buffer data = gl::Buffer::fromSpan<std::uint32_t>("test.scan", values);
+        scan.run(data, n, total, 0);
+        glMemoryBarrier(GL_ALL_BARRIER_BITS);
+        const auto gpu = data.downloadAll<std::uint32_t>();
+        std::vector<std::uint32_t> expected(n);
+        std::exclusive_scan(values.begin(), values.end(), expected.begin(), 0u);
+        ASSERT_EQ(gpu, expected) << n << " values";
+        std::uint32_t sum = 0;
+        total.download(&sum, 4, 0);
+        EXPECT_EQ(sum, std::accumulate(values.begin(), values.end(), 0u)) << n << " values";
+    }
+}
+
+// Thousands of blocks looking back at once, run after run: a block that took an earlier block's
+// sum for 0 shifts every offset after it. (A look-back whose loads of the sums were plain, or
+// atomic only in the branch its flag chose, did so on llvmpipe in most runs of 40.)
+TEST_F(PrefixSumRunsTest, ThousandsOfBlocksScanAlikeRunAfterRun) {
+    const std::uint32_t n = 2560u * 1648u;
+    std::vector<std::uint32_t> values(n);
+    for (std::uint32_t i = 0; i < n; ++i) values[i] = pcgHash(i) % 3u;
+    std::vector<std::uint32_t> expected(n);
+    std::exclusive_scan(values.begin(), values.end(), expected.begin(), 0u);
+    PrefixSum scan;
+    gl::Buffer total("test.total", 4);
+    gl::Buffer data = gl::Buffer::fromSpan<std::uint32_t>("test.scan", values);
+    for (int run = 0; run < 12; ++run) {
+        data.upload(values.data(), n * 4, 0);
+        scan.run(data, n, total, 0);
+        glMemoryBarrier(GL_ALL_BARRIER_BITS);
+        const auto gpu = data.downloadAll<std::uint32_t>();
+        for (std::uint32_t i = 0; i < n; ++i) ASSERT_EQ(gpu[i], expected[i]) << "index " << i << ", run " << run;
+    }
+}
+
 INSTANTIATE_TEST_SUITE_P(Sizes, PrefixSumTest,
-    ::testing::Values(0u, 1u, 7u, 255u, 256u, 511u, 512u, 513u, 1000u, 4097u, 262143u, 262144u, 262145u, 300001u),
+    ::testing::Values(0u, 1u, 7u, 255u, 256u, 511u, 512u, 513u, 1000u, 1023u, 1024u, 1025u, 4095u, 4096u, 4097u, 8193u, 262143u,
+                      262144u, 262145u, 300001u, 3686400u),
     [](const auto& info) { return std::to_string(info.param) + "_values"; });
 
 }  // namespace
