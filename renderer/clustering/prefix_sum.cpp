@@ -12,7 +12,7 @@ constexpr std::size_t kBlockStateBytes = 16;   // flag, aggregate, inclusive, un
 constexpr std::uint32_t kEpochs = 1u << 30;    // the flag keeps two bits for the status
 }  // namespace
 
-PrefixSum::PrefixSum() : program_(gl::Program::compute("prefix_sum.comp")) {}
+PrefixSum::PrefixSum() : program_(gl::Program::compute("prefix_sum.comp")), maxGroupsX_(gl::maxWorkGroupsX()) {}
 
 void PrefixSum::run(const gl::Buffer& data, std::uint32_t count, const gl::Buffer& total, std::size_t totalOffset) {
     if (count == 0) {
@@ -32,7 +32,7 @@ void PrefixSum::run(const gl::Buffer& data, std::uint32_t count, const gl::Buffe
     }
     // Past the device's limit along x the dispatch goes on in y; the spare workgroups' tickets
     // name no block.
-    const std::uint32_t groupsX = std::min(blocks, gl::maxWorkGroupsX());
+    const std::uint32_t groupsX = std::min(blocks, maxGroupsX_);
     const std::uint32_t groupsY = (blocks - 1) / groupsX + 1;
     program_.use();
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_SCAN_DATA, data.id());

@@ -24,6 +24,7 @@ public:
 
 private:
     gl::Program program_;
+    std::uint32_t maxGroupsX_;  // the device's limit on workgroups along x
     // The ticket counter, the total, and each block's published sums (the shader's ScanState).
     gl::GrowableBuffer state_{"scan.state"};
     // Each run's number, in the blocks' flags: a flag left by an earlier run never reads as set.

@@ -287,7 +287,9 @@ TEST_F(GlassCapture, ListedTilesPastOneDispatchRowAreAllShaded) {
         std::printf("glass strips, %d layer(s), at %dx%d: %llu fragments, %u deep and %u shallow tiles listed\n", layers, kWide,
                     kTall, static_cast<unsigned long long>(renderer.method().transparentCapture()->fragmentCount()), deep, shallow);
         EXPECT_GT(layers == 2 ? deep : shallow, std::uint32_t(ML_GLASS_DEEP_ROW)) << layers << " layer(s)";
-        if (layers == 1) EXPECT_EQ(deep, 0u);
+        if (layers == 1) {
+            EXPECT_EQ(deep, 0u);
+        }
         EXPECT_EQ(channelsDiffering(renderer.readHdr(), onePass), 0u) << layers << " layer(s): channels differing from one pass";
     }
 }

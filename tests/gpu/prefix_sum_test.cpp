@@ -11,6 +11,12 @@
 namespace ml::test {
 namespace {
 
+std::vector<std::uint32_t> cpuExclusiveScan(const std::vector<std::uint32_t>& values) {
+    std::vector<std::uint32_t> scanned(values.size());
+    std::exclusive_scan(values.begin(), values.end(), scanned.begin(), 0u);
+    return scanned;
+}
+
 class PrefixSumTest : public GpuTest, public ::testing::WithParamInterface<std::uint32_t> {};
 
 TEST_P(PrefixSumTest, MatchesTheCpuExclusiveScan) {
@@ -27,8 +33,7 @@ TEST_P(PrefixSumTest, MatchesTheCpuExclusiveScan) {
     glMemoryBarrier(GL_ALL_BARRIER_BITS);
 
     const auto gpu = data.downloadAll<std::uint32_t>();
-    std::vector<std::uint32_t> expected(n);
-    std::exclusive_scan(values.begin(), values.end(), expected.begin(), 0u);
+    const std::vector<std::uint32_t> expected = cpuExclusiveScan(values);
     for (std::uint32_t i = 0; i < n; ++i) ASSERT_EQ(gpu[i], expected[i]) << "index " << i << " of " << n;
     EXPECT_EQ(gpu[n], 0xDEADBEEFu) << "wrote past the end";
     std::uint32_t sum = 0;
@@ -50,9 +55,7 @@ TEST_F(PrefixSumRunsTest, EachRunScansOnlyItsOwnValues) {
         scan.run(data, n, total, 0);
         glMemoryBarrier(GL_ALL_BARRIER_BITS);
         const auto gpu = data.downloadAll<std::uint32_t>();
-        std::vector<std::uint32_t> expected(n);
-        std::exclusive_scan(values.begin(), values.end(), expected.begin(), 0u);
-        ASSERT_EQ(gpu, expected) << n << " values";
+        ASSERT_EQ(gpu, cpuExclusiveScan(values)) << n << " values";
         std::uint32_t sum = 0;
         total.download(&sum, 4, 0);
         EXPECT_EQ(sum, std::accumulate(values.begin(), values.end(), 0u)) << n << " values";
@@ -66,8 +69,7 @@ TEST_F(PrefixSumRunsTest, ThousandsOfBlocksScanAlikeRunAfterRun) {
     const std::uint32_t n = 2560u * 1648u;
     std::vector<std::uint32_t> values(n);
     for (std::uint32_t i = 0; i < n; ++i) values[i] = pcgHash(i) % 3u;
-    std::vector<std::uint32_t> expected(n);
-    std::exclusive_scan(values.begin(), values.end(), expected.begin(), 0u);
+    const std::vector<std::uint32_t> expected = cpuExclusiveScan(values);
     PrefixSum scan;
     gl::Buffer total("test.total", 4);
     gl::Buffer data = gl::Buffer::fromSpan<std::uint32_t>("test.scan", values);
