@@ -28,8 +28,8 @@
 
 const float kPi = 3.14159265358979;
 
-// The falloff of a point or spot light of radius r and brightest channel `intensity` at distance
-// d, by the frame's falloff mode (bindings.h, ML_FALLOFF_*; renderer/lights/light_model.h):
+// The falloff of a point or spot light of radius r and brightest channel `intensity` at squared
+// distance d2, by the frame's falloff mode (bindings.h, ML_FALLOFF_*; renderer/lights/light_model.h):
 //   smooth       saturate(1 - (d/r)^4)^2 / (d^2 + 1)                  zero at r
 //   gltf         saturate(1 - (d/r)^4) / max(d, dmin)^2                zero at r
 //   stochastic   saturate(1 - (d/r)^4) / max(d, dmin)^2 / A(d), r drawn per light and frame
@@ -38,27 +38,29 @@ const float kPi = 3.14159265358979;
 //   untruncated  1 / max(d, dmin)^2 everywhere: the physical reference
 // Every windowed falloff is continuous and zero at r, so a surface point rebuilt from depth a
 // little off its true place is lit by a light at its edge almost as much as the true point.
+// Every term is a function of d^2, so no light needs a square root for its falloff, and one beyond
+// its radius (about half of those a list serves a point) costs a dot product and a compare.
 
 // The stochastic cut-off's mean window. r = r_E / sqrt(xi), xi uniform in (0, 1], r_E where the
 // light's inverse square falls to E; with u = (d / r_E)^2 the window is 1 - u^2 xi^2, whose mean
 // over xi is 1 - u^2 / 3 for u <= 1 and 2 / (3 u) beyond (zero for xi > 1/u).
-float stochasticAcceptance(float d, float intensity) {
-    float u = d * d * lightCutoff() / intensity;
+float stochasticAcceptance(float d2, float intensity) {
+    float u = d2 * lightCutoff() / intensity;
     return u <= 1.0 ? 1.0 - u * u / 3.0 : 2.0 / (3.0 * u);
 }
 
-float lightFalloff(float d, float radius, float intensity) {
+float lightFalloff(float d2, float radius, float intensity) {
+    const float kMinDistance2 = ML_LIGHT_MIN_DISTANCE * ML_LIGHT_MIN_DISTANCE;
     uint mode = falloffMode();
-    float guarded = max(d, ML_LIGHT_MIN_DISTANCE);
-    float inverseSquare = 1.0 / (guarded * guarded);
-    if (mode == ML_FALLOFF_UNTRUNCATED) return inverseSquare;
-    if (d >= radius) return 0.0;
-    float x = d / radius;
-    float x2 = x * x;
+    if (mode == ML_FALLOFF_UNTRUNCATED) return 1.0 / max(d2, kMinDistance2);
+    float r2 = radius * radius;
+    if (d2 >= r2) return 0.0;
+    float x2 = d2 / r2;
     float w = clamp(1.0 - x2 * x2, 0.0, 1.0);
+    if (mode == ML_FALLOFF_SMOOTH) return (w * w) / (d2 + 1.0);
+    float inverseSquare = 1.0 / max(d2, kMinDistance2);
     if (mode == ML_FALLOFF_GLTF) return w * inverseSquare;
-    if (mode == ML_FALLOFF_STOCHASTIC) return w * inverseSquare / stochasticAcceptance(d, intensity);
-    return (w * w) / (d * d + 1.0);
+    return w * inverseSquare / stochasticAcceptance(d2, intensity);
 }
 
 struct SurfacePoint {
@@ -118,9 +120,10 @@ vec3 ggxBrdf(SurfacePoint s, vec3 viewDir, vec3 l, float nDotL) {
     float q2 = q * q;
     vec3 fresnel = s.f0 + (1.0 - s.f0) * (q2 * q2 * q);
     float dDenominator = dot(nCrossH, nCrossH) + nDotH * nDotH * a2;  // (N.H)^2 (alpha^2 - 1) + 1
-    float distribution = a2 / (kPi * dDenominator * dDenominator);
-    float visibility = 0.5 / (nDotL * sqrt(nDotV * nDotV * (1.0 - a2) + a2) + nDotV * sqrt(nDotL * nDotL * (1.0 - a2) + a2));
-    return (1.0 - fresnel) * s.diffuse * (1.0 / kPi) + fresnel * (distribution * visibility);
+    float visibilityDenominator = nDotL * sqrt(nDotV * nDotV * (1.0 - a2) + a2) + nDotV * sqrt(nDotL * nDotL * (1.0 - a2) + a2);
+    // D * Vis = (a2 / pi) / dDenominator^2 * 0.5 / visibilityDenominator, in one division.
+    float distributionVisibility = (0.5 / kPi) * a2 / (dDenominator * dDenominator * visibilityDenominator);
+    return (1.0 - fresnel) * s.diffuse * (1.0 / kPi) + fresnel * distributionVisibility;
 }
 
 // A light of colour `color` arriving from unit direction l, weighted by its falloff (and cone),
@@ -142,11 +145,11 @@ vec3 shadeIncoming(SurfacePoint s, vec3 viewDir, vec3 l, vec3 color, float weigh
 // ML_POINT_LIGHT_CONE_COS, and the branch on them is uniform where a scene has no spots.
 vec3 shadeLight(SurfacePoint s, vec3 viewDir, vec4 positionRadius, vec4 colorCosInner, vec4 directionCosOuter) {
     vec3 toLight = positionRadius.xyz - s.position;
-    float d = length(toLight);
+    float d2 = dot(toLight, toLight);
     vec3 color = colorCosInner.rgb;
-    float falloff = lightFalloff(d, positionRadius.w, max(color.r, max(color.g, color.b)));
+    float falloff = lightFalloff(d2, positionRadius.w, max(color.r, max(color.g, color.b)));
     if (falloff <= 0.0) return vec3(0.0);
-    vec3 l = toLight / max(d, 1e-6);
+    vec3 l = toLight * inversesqrt(max(d2, 1e-12));
     if (ML_SPOT_LIGHTS != 0 && directionCosOuter.w > -1.5) {
         falloff *= spotAttenuation(dot(-l, directionCosOuter.xyz), colorCosInner.w, directionCosOuter.w);
         if (falloff <= 0.0) return vec3(0.0);

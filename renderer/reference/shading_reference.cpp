@@ -7,24 +7,33 @@ namespace ml {
 
 namespace {
 constexpr float kPi = 3.14159265358979f;
+
+// stochasticAcceptance at squared distance d2, as the shader has it.
+float stochasticAcceptanceAtSquaredDistance(float d2, float intensity, float cutoff) {
+    const float u = d2 * cutoff / intensity;
+    return u <= 1.0f ? 1.0f - u * u / 3.0f : 2.0f / (3.0f * u);
+}
 }  // namespace
 
 float stochasticAcceptance(float d, float intensity, float cutoff) {
-    const float u = d * d * cutoff / intensity;
-    return u <= 1.0f ? 1.0f - u * u / 3.0f : 2.0f / (3.0f * u);
+    return stochasticAcceptanceAtSquaredDistance(d * d, intensity, cutoff);
+}
+
+float lightFalloffAtSquaredDistance(float d2, float radius, float intensity, const LightModel& model) {
+    constexpr float kMinDistance2 = static_cast<float>(ML_LIGHT_MIN_DISTANCE) * static_cast<float>(ML_LIGHT_MIN_DISTANCE);
+    if (model.falloff == Falloff::Untruncated) return 1.0f / std::max(d2, kMinDistance2);
+    const float r2 = radius * radius;
+    if (d2 >= r2) return 0.0f;
+    const float x2 = d2 / r2;
+    const float w = std::clamp(1.0f - x2 * x2, 0.0f, 1.0f);
+    if (model.falloff == Falloff::Smooth) return (w * w) / (d2 + 1.0f);
+    const float inverseSquare = 1.0f / std::max(d2, kMinDistance2);
+    if (model.falloff == Falloff::Gltf) return w * inverseSquare;
+    return w * inverseSquare / stochasticAcceptanceAtSquaredDistance(d2, intensity, model.cutoff);
 }
 
 float lightFalloff(float d, float radius, float intensity, const LightModel& model) {
-    const float guarded = std::max(d, static_cast<float>(ML_LIGHT_MIN_DISTANCE));
-    const float inverseSquare = 1.0f / (guarded * guarded);
-    if (model.falloff == Falloff::Untruncated) return inverseSquare;
-    if (d >= radius) return 0.0f;
-    const float x = d / radius;
-    const float x2 = x * x;
-    const float w = std::clamp(1.0f - x2 * x2, 0.0f, 1.0f);
-    if (model.falloff == Falloff::Gltf) return w * inverseSquare;
-    if (model.falloff == Falloff::Stochastic) return w * inverseSquare / stochasticAcceptance(d, intensity, model.cutoff);
-    return (w * w) / (d * d + 1.0f);
+    return lightFalloffAtSquaredDistance(d * d, radius, intensity, model);
 }
 
 float spotAttenuation(float cosToAxis, float cosInner, float cosOuter) {
@@ -56,10 +65,10 @@ glm::vec3 ggxBrdf(const ShadingTerms& t, const glm::vec3& n, const glm::vec3& v,
     const float a2 = t.alpha * t.alpha;
     const glm::vec3 fresnel = t.f0 + (1.0f - t.f0) * std::pow(1.0f - vDotH, 5.0f);
     const float dDenominator = glm::dot(nCrossH, nCrossH) + nDotH * nDotH * a2;
-    const float distribution = a2 / (kPi * dDenominator * dDenominator);
-    const float visibility =
-        0.5f / (nDotL * std::sqrt(nDotV * nDotV * (1.0f - a2) + a2) + nDotV * std::sqrt(nDotL * nDotL * (1.0f - a2) + a2));
-    return (1.0f - fresnel) * t.diffuse / kPi + fresnel * (distribution * visibility);
+    const float visibilityDenominator =
+        nDotL * std::sqrt(nDotV * nDotV * (1.0f - a2) + a2) + nDotV * std::sqrt(nDotL * nDotL * (1.0f - a2) + a2);
+    const float distributionVisibility = (0.5f / kPi) * a2 / (dDenominator * dDenominator * visibilityDenominator);
+    return (1.0f - fresnel) * t.diffuse / kPi + fresnel * distributionVisibility;
 }
 
 glm::vec3 shadeReference(const SurfaceSample& s, const glm::vec3& eye, const std::vector<Light>& lights, float ambient,
@@ -86,10 +95,10 @@ glm::vec3 shadeReference(const SurfaceSample& s, const glm::vec3& eye, const std
     for (const Light& l : lights) {
         if (l.type == LightType::Directional) continue;
         const glm::vec3 toLight = l.position - s.position;
-        const float d = glm::length(toLight);
-        float falloff = lightFalloff(d, l.radius, std::max({l.color.r, l.color.g, l.color.b}), model);
+        const float d2 = glm::dot(toLight, toLight);
+        float falloff = lightFalloffAtSquaredDistance(d2, l.radius, std::max({l.color.r, l.color.g, l.color.b}), model);
         if (falloff <= 0.0f) continue;
-        const glm::vec3 dir = toLight / std::max(d, 1e-6f);
+        const glm::vec3 dir = toLight * (1.0f / std::sqrt(std::max(d2, 1e-12f)));
         if (l.type == LightType::Spot) {
             falloff *= spotAttenuation(glm::dot(-dir, glm::normalize(l.direction)), std::cos(l.innerConeAngle),
                                        std::cos(l.outerConeAngle));

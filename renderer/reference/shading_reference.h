@@ -13,6 +13,8 @@ namespace ml {
 // The falloff of a light of radius r and brightest channel `intensity` at `distance`, in the
 // model's falloff mode (glsl/include/shading.glsl); the seeds' smooth one by default.
 float lightFalloff(float distance, float radius, float intensity = 1.0f, const LightModel& model = {});
+// The same at squared distance d2, as the shader computes it (no square root per light).
+float lightFalloffAtSquaredDistance(float d2, float radius, float intensity = 1.0f, const LightModel& model = {});
 // The stochastic cut-off's window 1 - (d/r)^4 averaged over the drawn ranges r (shading.glsl).
 float stochasticAcceptance(float distance, float intensity, float cutoff);
 
