@@ -8,7 +8,10 @@
 #   run.sh round <n>     targets.sweep.json (every scene of the targets but Sponza), main then the change
 #   run.sh atrium <n>    atrium.sweep.json (the targets' atrium rows), main then the change
 #   run.sh headline      the README's results table: main, then the change
-#   run.sh sponza        Sponza's four cameras at 1,048,576 lights (from .corpus-sponza), main then the change
+#   run.sh sponza <n>    sponza.sweep.json: Sponza's four cameras at 1,048,576 lights, both rasters, main then
+#                        the change. Sponza's 14 MB do not travel beside the tree and the builds: one call
+#                        carries .corpus-sponza alone and copies it to /root, the next (the machine still
+#                        warm) carries the builds and takes it back from there.
 #   run.sh targets-4m    4,194,304 lights at 3840x2160 (list-sync's sweep), main then the change
 #   run.sh tests         the GPU tests that hold methods to naive and the shading to its CPU mirror, on the change
 #   run.sh accuracy      tools/gpu-accuracy on the atrium and the gas station, the change
@@ -36,6 +39,7 @@ atrium)
       > $OUT/atrium-${build%:*}-$2.log 2>&1
   done ;;
 sponza)
+  [ -d .corpus-sponza ] || cp -r /root/.corpus-sponza .
   for build in $BUILDS; do
     timeout 240 ${build#*:}/manylights bench --sweep $S/sponza.sweep.json --backend egl --out $OUT --name sponza-${build%:*}-$2 \
       > $OUT/sponza-${build%:*}-$2.log 2>&1
