@@ -19,9 +19,9 @@ FrameRenderer::FrameRenderer(const Scene& scene, const std::vector<Light>& light
       targets_(settings.width, settings.height, false, TargetSampling{settings.method.msaa, settings.supersample}),
       frameUniformBuffer_("frame.uniforms", sizeof(FrameUniforms)),
       animate_(lights_.hasSpots()),
-      method_(createMethod(forLights(settings.method), scene_.materialFeatures())),
+      method_(createMethod(forFrame(settings.method), scene_.materialFeatures())),
       timer_(settings.timing, settings.clock, settings.readback) {
-    settings_.method = forLights(settings_.method);
+    settings_.method = forFrame(settings_.method);
     configureTargets();
 }
 
@@ -35,13 +35,28 @@ void FrameRenderer::resize(int width, int height) {
     targets_.resize(width, height);
 }
 
-MethodSettings FrameRenderer::forLights(MethodSettings method) const {
+MethodSettings FrameRenderer::forFrame(MethodSettings method) const {
     method.clustering.spotLights = lights_.hasSpots();
+    method.clustering.shading = ShadingSwitches{settings_.lightModel.brdf, settings_.specular, settings_.lightModel.falloff};
     return method;
 }
 
+void FrameRenderer::setSpecular(bool on) {
+    settings_.specular = on;
+    rebuildForShadingSwitches();
+}
+
+void FrameRenderer::setLightModel(const LightModel& model) {
+    settings_.lightModel = model;
+    rebuildForShadingSwitches();
+}
+
+void FrameRenderer::rebuildForShadingSwitches() {
+    if (forFrame(settings_.method).clustering.shading != settings_.method.clustering.shading) setMethod(settings_.method);
+}
+
 void FrameRenderer::setMethod(const MethodSettings& method) {
-    settings_.method = forLights(method);
+    settings_.method = forFrame(method);
     method_ = createMethod(settings_.method, scene_.materialFeatures());
     configureTargets();
 }

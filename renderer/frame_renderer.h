@@ -52,8 +52,8 @@ struct FrameSettings {
     bool backfaceCulling = true;                   // --backface-culling (SceneGpu::setBackfaceCulling)
     bool transparency = true;                      // --transparency: draw glTF BLEND surfaces (SceneGpu::setTransparency)
     TriangleOrder triangleOrder = TriangleOrder::Overdraw;  // --triangle-order, applied at upload
-    bool specular = true;  // the BRDF's specular term (--specular), a frame uniform: no recompile
-    LightModel lightModel;  // --brdf, --light-cutoff, --cutoff: frame uniforms, no recompile
+    bool specular = true;  // the BRDF's specular term (--specular), compiled in (ShadingSwitches)
+    LightModel lightModel;  // --brdf, --cutoff compiled in (ShadingSwitches); --light-cutoff a frame uniform
     BloomSettings bloom;
     LightAnimation animation;
     SceneAnimationSettings sceneAnimation;
@@ -95,9 +95,10 @@ public:
     void setDrawSubmission(DrawSubmission draw) { settings_.draw = draw; }
     void setBackfaceCulling(bool on) { settings_.backfaceCulling = on; }
     void setTransparency(bool on) { settings_.transparency = on; }
-    void setSpecular(bool on) { settings_.specular = on; }
+    // Both rebuild the method's programs when a compiled-in switch changes (ShadingSwitches).
+    void setSpecular(bool on);
     void setAmbient(float ambient) { settings_.ambient = ambient; }
-    void setLightModel(const LightModel& model) { settings_.lightModel = model; }
+    void setLightModel(const LightModel& model);
     void setBloom(const BloomSettings& bloom) { settings_.bloom = bloom; }
     const BloomPass& bloom() const { return bloom_; }
     const ShadingMethod& method() const { return *method_; }
@@ -115,8 +116,11 @@ private:
     void updateUniforms(float time);
     // The targets' stencil and sampling as the method needs them.
     void configureTargets();
-    // The method's settings with ClusteringSettings::spotLights from the current lights.
-    MethodSettings forLights(MethodSettings method) const;
+    // The method's settings with what the frame decides: ClusteringSettings::spotLights from the
+    // current lights, ClusteringSettings::shading from --brdf, --specular and --cutoff.
+    MethodSettings forFrame(MethodSettings method) const;
+    // Rebuilds the method where the frame's shading switches no longer match its programs'.
+    void rebuildForShadingSwitches();
 
     FrameSettings settings_;
     SceneGpu scene_;

@@ -76,6 +76,7 @@ struct SurfacePoint {
     // Derived by deriveShadingTerms: what the light loop reads, and the unlit term, worked out
     // before the loop so that the material's inputs need not stay in registers through it.
     vec3 diffuse;
+    vec3 diffuseOverPi;  // GGX's Lambert term, diffuse / pi
     vec3 f0;          // GGX
     float alpha;      // GGX: roughness^2, floored at ML_GGX_MIN_ALPHA
     vec3 specular;    // Blinn-Phong: f0 * (s + 8) / 8
@@ -90,6 +91,7 @@ void deriveShadingTerms(inout SurfacePoint s) {
     s.shininess = clamp(2.0 / max(alpha * alpha, 1e-6) - 2.0, 1.0, 8192.0);
     s.alpha = max(alpha, ML_GGX_MIN_ALPHA);
     s.diffuse = s.baseColor * (1.0 - m);
+    s.diffuseOverPi = s.diffuse * (1.0 / kPi);
     s.f0 = mix(vec3(0.04), s.baseColor, m);
     s.specular = s.f0 * ((s.shininess + 8.0) / 8.0);
     s.unlit = ambientStrength() * s.occlusion * (s.diffuse + s.f0) + s.emissive;
@@ -123,7 +125,8 @@ vec3 ggxBrdf(SurfacePoint s, vec3 viewDir, vec3 l, float nDotL) {
     float visibilityDenominator = nDotL * sqrt(nDotV * nDotV * (1.0 - a2) + a2) + nDotV * sqrt(nDotL * nDotL * (1.0 - a2) + a2);
     // D * Vis = (a2 / pi) / dDenominator^2 * 0.5 / visibilityDenominator, in one division.
     float distributionVisibility = (0.5 / kPi) * a2 / (dDenominator * dDenominator * visibilityDenominator);
-    return (1.0 - fresnel) * s.diffuse * (1.0 / kPi) + fresnel * distributionVisibility;
+    // (1 - F) diffuse / pi + F D Vis, as one multiply-add a channel.
+    return s.diffuseOverPi + fresnel * (distributionVisibility - s.diffuseOverPi);
 }
 
 // A light of colour `color` arriving from unit direction l, weighted by its falloff (and cone),
@@ -132,7 +135,7 @@ vec3 shadeIncoming(SurfacePoint s, vec3 viewDir, vec3 l, vec3 color, float weigh
     float nDotL = dot(s.normal, l);
     if (nDotL <= 0.0) return vec3(0.0);
     if (ggxEnabled()) {
-        if (!specularEnabled()) return color * (weight * nDotL * (1.0 / kPi)) * s.diffuse;
+        if (!specularEnabled()) return color * (weight * nDotL) * s.diffuseOverPi;
         return color * (weight * nDotL) * ggxBrdf(s, viewDir, l, nDotL);
     }
     if (!specularEnabled()) return color * (weight * nDotL) * s.diffuse;

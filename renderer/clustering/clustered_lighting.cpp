@@ -555,7 +555,13 @@ std::pair<std::string, std::string> depthSamplesDefine(const ClusteringSettings&
 }
 
 shaders::Defines lightShadingDefines(const ClusteringSettings& settings) {
-    return {spotLightsDefine(settings.spotLights), lightSumDefine(settings.lightSum)};
+    shaders::Defines defines{spotLightsDefine(settings.spotLights), lightSumDefine(settings.lightSum)};
+    if (const auto& s = settings.shading) {
+        defines.emplace_back("ML_BRDF_GGX", s->brdf == Brdf::Ggx ? "1" : "0");
+        defines.emplace_back("ML_SPECULAR", s->specular ? "1" : "0");
+        defines.emplace_back("ML_FALLOFF", std::to_string(static_cast<std::uint32_t>(s->falloff)));
+    }
+    return defines;
 }
 
 shaders::Defines lightListDefines(const ClusteringSettings& settings) {

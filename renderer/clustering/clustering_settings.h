@@ -2,11 +2,13 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 
 #include "renderer/clustering/cluster_grid.h"
 #include "renderer/debug_view.h"
 #include "renderer/gl/shader_sources.h"
+#include "renderer/lights/light_model.h"
 #include "renderer/lights/light_sum.h"
 
 namespace ml {
@@ -42,6 +44,10 @@ struct ClusteringSettings {
     // Whether the light set holds spots. FrameRenderer sets it from its lights; without spots
     // every program that reads lights compiles its spot paths out (ML_SPOT_LIGHTS 0).
     bool spotLights = true;
+    // The light model's switches, compiled into every program that shades lights. FrameRenderer
+    // sets them from its frame settings (and rebuilds the method when they change); unset, the
+    // programs branch on the frame's uniforms.
+    std::optional<ShadingSwitches> shading;
     // --light-sum, for every method's shading (naive's too). With Fixed the lists are not sorted
     // (glsl/include/light_sum.glsl says why they need not be).
     LightSum lightSum = LightSum::Float;
@@ -50,8 +56,8 @@ struct ClusteringSettings {
     std::uint32_t depthSamples = 1;
 };
 
-// Defines of every program that shades point and spot lights, naive's included: ML_SPOT_LIGHTS
-// and ML_FIXED_LIGHT_SUM.
+// Defines of every program that shades point and spot lights, naive's included: ML_SPOT_LIGHTS,
+// ML_FIXED_LIGHT_SUM and, where the settings carry them, the shading switches.
 shaders::Defines lightShadingDefines(const ClusteringSettings& settings);
 // Defines of the shading programs that read the lists (cluster_lists.glsl picks its light loop,
 // and with --normal-cones its list by the normal's bin).

@@ -1,6 +1,6 @@
 // How light leaves a light and what a surface does with it: the BRDF, the falloff with distance,
-// and where a light is cut off (README, "The light model"). Frame uniforms, the same in every
-// method and in the CPU mirror (renderer/reference/shading_reference.h).
+// and where a light is cut off (README, "The light model"). The same in every method (compiled in,
+// ShadingSwitches, or frame uniforms) and in the CPU mirror (renderer/reference/shading_reference.h).
 #pragma once
 
 #include <cstdint>
@@ -45,6 +45,17 @@ struct LightModel {
     // --light-cutoff E: a light's unwindowed contribution max(colour) / d^2 falls to E at its
     // cut-off radius; 0 when not given.
     float cutoff = 0.0f;
+};
+
+// What the shading programs compile in of the frame's light model: the BRDF, its specular term
+// (--specular) and the falloff (ML_BRDF_GGX, ML_SPECULAR, ML_FALLOFF; glsl/include/frame_uniforms.glsl).
+// Branches on the frame's uniforms inside every (point, light) pair cost the H200's lighting pass
+// 9 % (docs/bench/nvidia-h200/light-terms/); the cut-off E stays a uniform.
+struct ShadingSwitches {
+    Brdf brdf = Brdf::Ggx;
+    bool specular = true;
+    Falloff falloff = Falloff::Smooth;
+    bool operator==(const ShadingSwitches&) const = default;
 };
 
 // The distance at which max(colour) / d^2 falls to `cutoff`: sqrt(max(colour) / cutoff).

@@ -68,7 +68,8 @@ glm::vec3 ggxBrdf(const ShadingTerms& t, const glm::vec3& n, const glm::vec3& v,
     const float visibilityDenominator =
         nDotL * std::sqrt(nDotV * nDotV * (1.0f - a2) + a2) + nDotV * std::sqrt(nDotL * nDotL * (1.0f - a2) + a2);
     const float distributionVisibility = (0.5f / kPi) * a2 / (dDenominator * dDenominator * visibilityDenominator);
-    return (1.0f - fresnel) * t.diffuse / kPi + fresnel * distributionVisibility;
+    const glm::vec3 diffuseOverPi = t.diffuse * (1.0f / kPi);
+    return diffuseOverPi + fresnel * (distributionVisibility - diffuseOverPi);
 }
 
 glm::vec3 shadeReference(const SurfaceSample& s, const glm::vec3& eye, const std::vector<Light>& lights, float ambient,
@@ -81,7 +82,7 @@ glm::vec3 shadeReference(const SurfaceSample& s, const glm::vec3& eye, const std
         const float nDotL = glm::dot(s.normal, dir);
         if (nDotL <= 0.0f) return glm::vec3(0.0f);
         if (model.brdf == Brdf::Ggx) {
-            if (!specular) return c * (weight * nDotL / kPi) * t.diffuse;
+            if (!specular) return c * (weight * nDotL) * (t.diffuse * (1.0f / kPi));
             return c * (weight * nDotL) * ggxBrdf(t, s.normal, v, dir);
         }
         if (!specular) return c * (weight * nDotL) * t.diffuse;

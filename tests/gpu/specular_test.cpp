@@ -1,5 +1,6 @@
-// --specular on|off: the shading model's switch, a frame uniform read by every method and the
-// CPU reference alike, so every method stays exact against naive in both modes.
+// --specular on|off: the shading model's switch, compiled into every method's shading
+// (ShadingSwitches) and read by the CPU reference alike, so every method stays exact against
+// naive in both modes; and the switches changed on a live renderer, as the view's panel does.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -48,6 +49,32 @@ TEST_F(SpecularSwitch, OffRemovesTheHighlights) {
     EXPECT_EQ(brighter, 0u) << "specular off must never add light";
     EXPECT_GT(largestDrop, 0.01) << "specular on and off gave the same frame";
     EXPECT_LT(compareImages(off, on).psnrDb, 50.0) << "the highlights should be a visible difference";
+}
+
+// The view changes --brdf, --specular and --cutoff on a live renderer: the method's programs,
+// which compile the switches in, are rebuilt, and the frame is the one a renderer built with the
+// new switches draws, bit for bit.
+TEST_F(SpecularSwitch, SwitchesChangedLiveRenderAsIfBuiltWithThem) {
+    const TestScene t = testScene("atrium", 256, 7, 0.6f);
+    FrameSettings s = smallFrame(t.scene, 160, 90);
+    s.method.kind = MethodKind::Visibility;
+    FrameRenderer live(t.scene, t.lights, s);
+    live.render(30);
+    ASSERT_TRUE(live.settings().method.clustering.shading.has_value());
+    EXPECT_EQ(live.settings().method.clustering.shading->brdf, Brdf::Ggx);
+
+    FrameSettings built = s;
+    built.specular = false;
+    built.lightModel.brdf = Brdf::BlinnPhong;
+    live.setLightModel(built.lightModel);
+    live.setSpecular(false);
+    EXPECT_EQ(live.settings().method.clustering.shading, (ShadingSwitches{Brdf::BlinnPhong, false, Falloff::Smooth}));
+    live.render(30);
+    FrameRenderer fresh(t.scene, t.lights, built);
+    fresh.render(30);
+    const FloatImage a = live.readHdr(), b = fresh.readHdr();
+    ASSERT_EQ(a.pixels.size(), b.pixels.size());
+    EXPECT_TRUE(a.pixels == b.pixels) << "max difference " << compareImages(a, b).maxAbs;
 }
 
 }  // namespace

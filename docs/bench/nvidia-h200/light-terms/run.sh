@@ -4,6 +4,8 @@
 # against main, on an H200 (nvidia-h200). Carry .gl, .corpus-glass (corpus/amd/gas_station alone) and:
 #   .devbin-scan.txz  before: main (c005f13; 9f20e06 changed no shader)
 #   .devbin-d2.txz    the change (manylights, ml_gpu_tests; built in /work/main/build)
+# Part 2, the switches compiled in and the Lambert term per point, against part 1:
+#   BUILDS='d2:.devbin-l1 v2:.devbin-v2' NEW=.devbin-v2 run.sh ...   (.devbin-l1: part 1 without its tests)
 #   run.sh warm          a few seconds of frames, so that the SM clock has risen before a round
 #   run.sh round <n>     targets.sweep.json (every scene of the targets but Sponza), main then the change
 #   run.sh atrium <n>    atrium.sweep.json (the targets' atrium rows), main then the change
@@ -23,9 +25,10 @@ export LD_LIBRARY_PATH=$(ls -d $PWD/.devbin*/lib | head -1)
 S=docs/bench/nvidia-h200/light-terms
 nvidia-smi --query-gpu=name,driver_version,clocks.sm,clocks.max.sm --format=csv > $OUT/gpu.txt
 BUILDS=${BUILDS:-'main:.devbin-scan new:.devbin-d2'}
+NEW=${NEW:-.devbin-d2}  # the change the tests and the accuracy run
 case "$1" in
 warm)
-  timeout 60 .devbin-d2/manylights bench --scene atrium --lights 1048576 --size 2560x1440 --warmup 5 --timed-frames 600 \
+  timeout 60 $NEW/manylights bench --scene atrium --lights 1048576 --size 2560x1440 --warmup 5 --timed-frames 600 \
     --backend egl --out $OUT/warm --name warm > /dev/null 2>&1
   rm -rf $OUT/warm ;;
 round)
@@ -63,9 +66,9 @@ headline)
   done ;;
 tests)
   # The paths the test binary was built with: the executable beside it.
-  mkdir -p /work/main/build && ln -sf $PWD/.devbin-d2/manylights /work/main/build/manylights
-  ML_TEST_TMP=/tmp/ml-tests timeout 400 .devbin-d2/ml_gpu_tests \
-    --gtest_filter='*ClusteredAccuracy*:*ExactGBuffer*:*WorkgroupCulledLighting*:*MixedLights*:*SpotLights*:*StochasticCutoff*:*LightSumTest*:*SpecularOff*:*SpecularSwitch*:GlassCapture.*:*Transparen*:*GoldenImage*:NaiveForwardTest.*:*BenchPhysicalReference*' 2>&1 \
+  mkdir -p /work/main/build && ln -sf $PWD/$NEW/manylights /work/main/build/manylights
+  ML_TEST_TMP=/tmp/ml-tests timeout 400 $NEW/ml_gpu_tests \
+    --gtest_filter='*ClusteredAccuracy*:*ExactGBuffer*:*WorkgroupCulledLighting*:*MixedLights*:*SpotLights*:*StochasticCutoff*:*LightSumTest*:*SpecularOff*:SpecularSwitch.*:GlassCapture.*:*Transparen*:*GoldenImage*:NaiveForwardTest.*:*BenchPhysicalReference*' 2>&1 \
     | grep -v "^\[ RUN\|^\[--" > $OUT/gpu-tests.txt ;;
 golden)
   # The golden images are llvmpipe's frames: does the H200 drift from them with main's shading too?
@@ -75,7 +78,7 @@ golden)
       | grep -v "^\[ RUN\|^\[--" > $OUT/golden-${build%:*}.txt
   done ;;
 accuracy)
-  timeout 400 python3 tools/gpu-accuracy --manylights .devbin-d2/manylights --corpus .corpus-glass/corpus \
+  timeout 400 python3 tools/gpu-accuracy --manylights $NEW/manylights --corpus .corpus-glass/corpus \
     --only atrium,GasStation --out $OUT/accuracy > $OUT/accuracy.log 2>&1
   echo "gpu-accuracy exit $?" >> $OUT/accuracy.log
   rm -rf $OUT/accuracy/worst ;;
