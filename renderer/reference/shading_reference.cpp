@@ -7,16 +7,11 @@ namespace ml {
 
 namespace {
 constexpr float kPi = 3.14159265358979f;
-
-// stochasticAcceptance at squared distance d2, as the shader has it.
-float stochasticAcceptanceAtSquaredDistance(float d2, float intensity, float cutoff) {
-    const float u = d2 * cutoff / intensity;
-    return u <= 1.0f ? 1.0f - u * u / 3.0f : 2.0f / (3.0f * u);
-}
 }  // namespace
 
-float stochasticAcceptance(float d, float intensity, float cutoff) {
-    return stochasticAcceptanceAtSquaredDistance(d * d, intensity, cutoff);
+float stochasticAcceptance(float d2, float intensity, float cutoff) {
+    const float u = d2 * cutoff / intensity;
+    return u <= 1.0f ? 1.0f - u * u / 3.0f : 2.0f / (3.0f * u);
 }
 
 float lightFalloffAtSquaredDistance(float d2, float radius, float intensity, const LightModel& model) {
@@ -29,7 +24,7 @@ float lightFalloffAtSquaredDistance(float d2, float radius, float intensity, con
     if (model.falloff == Falloff::Smooth) return (w * w) / (d2 + 1.0f);
     const float inverseSquare = 1.0f / std::max(d2, kMinDistance2);
     if (model.falloff == Falloff::Gltf) return w * inverseSquare;
-    return w * inverseSquare / stochasticAcceptanceAtSquaredDistance(d2, intensity, model.cutoff);
+    return w * inverseSquare / stochasticAcceptance(d2, intensity, model.cutoff);
 }
 
 float lightFalloff(float d, float radius, float intensity, const LightModel& model) {

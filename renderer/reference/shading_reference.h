@@ -15,8 +15,9 @@ namespace ml {
 float lightFalloff(float distance, float radius, float intensity = 1.0f, const LightModel& model = {});
 // The same at squared distance d2, as the shader computes it (no square root per light).
 float lightFalloffAtSquaredDistance(float d2, float radius, float intensity = 1.0f, const LightModel& model = {});
-// The stochastic cut-off's window 1 - (d/r)^4 averaged over the drawn ranges r (shading.glsl).
-float stochasticAcceptance(float distance, float intensity, float cutoff);
+// The stochastic cut-off's window 1 - (d/r)^4 averaged over the drawn ranges r, at squared
+// distance d2 (shading.glsl).
+float stochasticAcceptance(float d2, float intensity, float cutoff);
 
 // glTF's angular attenuation of a spot (KHR_lights_punctual): saturate((cos - cosOuter) /
 // (cosInner - cosOuter))^2, exactly 0 at and outside the outer cone, 1 inside the inner.
