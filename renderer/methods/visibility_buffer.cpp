@@ -6,6 +6,20 @@
 
 namespace ml {
 
+namespace {
+
+// Pixels a classifying invocation reads along each axis, and tiles a workgroup covers: the pass
+// waits on three dependent reads a pixel, so an invocation keeps several pixels' in flight.
+constexpr int kClassifyBlock = 2;
+
+shaders::Defines classifyDefines(const GBuffer& gbuffer) {
+    shaders::Defines defines = gbuffer.defines();
+    defines.emplace_back("ML_CLASSIFY_BLOCK", std::to_string(kClassifyBlock));
+    return defines;
+}
+
+}  // namespace
+
 VisibilityBuffer::VisibilityBuffer(const ClusteringSettings& settings, GBufferFormat gbuffer, std::uint32_t materialFeatures,
                                    const TransparencySettings& transparency, VisibilityRaster raster)
     : raster_(raster),
@@ -13,7 +27,7 @@ VisibilityBuffer::VisibilityBuffer(const ClusteringSettings& settings, GBufferFo
       rasterProgram_("visibility.raster", {{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "visibility.frag"}},
                      materialFeatures, RasterProgram::Reads::CoverageOnly),
       clearIdsProgram_(gl::Program::compute("visibility_clear_ids.comp")),
-      classifyProgram_(gl::Program::compute("visibility_classify.comp", gbuffer_.defines())),
+      classifyProgram_(gl::Program::compute("visibility_classify.comp", classifyDefines(gbuffer_))),
       resolveProgram_(gl::Program::compute("visibility_resolve.comp", gbuffer_.defines())),
       lightingProgram_(gl::Program::compute("deferred_lighting.comp", deferredLightingDefines(settings, gbuffer_))),
       clustering_(settings, materialFeatures, gbuffer_.defines()),
@@ -41,7 +55,7 @@ void VisibilityBuffer::classifyTiles(std::size_t slots, GLuint groupsX, GLuint g
     resolveTiles_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_RESOLVE_TILES);
     resolveDispatch_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_RESOLVE_DISPATCH);
     classifyProgram_.use();
-    glDispatchCompute(groupsX, groupsY, 1);
+    glDispatchCompute(gl::groupsFor(groupsX, kClassifyBlock), gl::groupsFor(groupsY, kClassifyBlock), 1);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, resolveDispatch_.id());
 }

@@ -80,6 +80,9 @@ shaders::Defines withDefine(shaders::Defines defines, const char* name, const ch
 
 constexpr GLbitfield kComputeToCompute = GL_SHADER_STORAGE_BARRIER_BIT;
 
+// Pixels a finishing invocation reads and writes (glsl/compute_raster_finish.comp).
+constexpr int kFinishPixels = 2;
+
 }  // namespace
 
 bool ComputeRaster::supported() { return gl::hasExtension("GL_ARB_gpu_shader_int64"); }
@@ -131,7 +134,8 @@ ComputeRaster::ComputeRaster(std::uint32_t materialFeatures, bool packedAtomics)
     bin_ = gl::Program::compute("compute_raster_bin.comp", rasterDefines(packed_, 0));
     if (materialFeatures & ML_FEATURE_ALPHA_TEST)
         alphaBin_ = gl::Program::compute("compute_raster_bin.comp", withDefine(rasterDefines(packed_, 0), "ML_RASTER_ALPHA_TEST", "1"));
-    finish_ = gl::Program::compute("compute_raster_finish.comp", rasterDefines(packed_, 0));
+    finish_ = gl::Program::compute("compute_raster_finish.comp",
+                                   withDefine(rasterDefines(packed_, 0), "ML_RASTER_FINISH_PIXELS", std::to_string(kFinishPixels).c_str()));
     if (materialFeatures & ML_FEATURE_BLEND)
         depthCopy_ = gl::Program("visibility.compute-raster.depth-copy",
                                  {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "compute_raster_depth.frag"}});
@@ -200,7 +204,7 @@ void ComputeRaster::finish(const FrameContext& ctx, const gl::Texture2D& ids) {
     finish_.use();
     glBindImageTexture(ML_IMG_VISIBILITY_IDS, ids.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32UI);
     glBindImageTexture(ML_IMG_RASTER_DEPTH, depth_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
-    glDispatchCompute(gl::groupsFor(stamp_.width(), ML_RASTER_FINISH_ROW), stamp_.height(), 1);
+    glDispatchCompute(gl::groupsFor(stamp_.width(), ML_RASTER_FINISH_ROW * kFinishPixels), stamp_.height(), 1);
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | kComputeToCompute);
 }
 
