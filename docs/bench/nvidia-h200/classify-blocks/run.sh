@@ -16,6 +16,8 @@
 #                        1,048,576, the gas station), every build
 #   run.sh frames        the HDR frames (PFM) and the 8-bit ones of main and $NEW at 1280x720, 4,096
 #                        lights, compared: the atrium's cameras with both rasters, the gas station's two
+#   run.sh sponza <n>    Sponza's four cameras at 1,048,576 lights, compute raster (raster-tiles' sweep), every build
+#   run.sh targets-4m    4,194,304 lights at 3840x2160 (list-sync's sweep), every build
 #   run.sh headline      the README's results table's visibility rows (both rasters; the other rows run
 #                        none of this code): main and $HEADLINE
 set -u
@@ -54,6 +56,19 @@ gas-0 --scene $G --camera gltf:0
 gas-1 --scene $G --camera gltf:1
 LIST
   ;;
+sponza)
+  # Sponza's 14 MB do not travel beside the tree and the builds: two earlier calls carry it in two
+  # halves into /root/.corpus-sponza (the machine still warm); this step takes it from there.
+  [ -d .corpus-sponza ] || cp -r /root/.corpus-sponza .
+  for build in $BUILDS; do
+    timeout 240 ${build#*:}/manylights bench --sweep docs/bench/nvidia-h200/raster-tiles/sponza.sweep.json --backend egl \
+      --out $OUT --name sponza-${build%:*}-$2 > $OUT/sponza-${build%:*}-$2.log 2>&1
+  done ;;
+targets-4m)
+  for build in $BUILDS; do
+    timeout 150 ${build#*:}/manylights bench --sweep docs/bench/nvidia-h100/list-sync/targets-4m/targets-4m.sweep.json \
+      --backend egl --out $OUT --name targets-4m-${build%:*} > $OUT/targets-4m-${build%:*}.log 2>&1
+  done ;;
 headline)
   P='--preset scale --warmup 5 --timed-frames 30 --camera atrium-set --backend egl --method visibility'
   for build in main:.devbin-main ${HEADLINE:-x2:.devbin-x2}; do
