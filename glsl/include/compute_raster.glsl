@@ -175,13 +175,20 @@ RasterTriangle rasterReversed(RasterTriangle t) {
 }
 
 // Coverage and depth at one pixel, in 64-bit edge arithmetic (any triangle within the guard band).
-// The three edge values at a pixel centre (e0 opposite v0, ...), exact in 64 bits.
+// The three edge values at a pixel centre (e0 opposite v0, ...), exact in 64 bits. Within the
+// guard band every difference of two snapped positions (a pixel centre's among them) fits 32
+// bits, so each product is of two 32-bit integers widened: one 32x32 -> 64-bit multiply, where
+// 64-bit operands would take a full 64-bit one (the tile pass's invocations spend most of their
+// time here: docs/bench/nvidia-h200/raster-tiles/).
+int64_t rasterWideProduct(int x, int y) { return int64_t(x) * int64_t(y); }
+
 i64vec3 rasterEdges64(RasterTriangle t, ivec2 pixel) {
-    i64vec2 p = i64vec2(pixel) * ML_SUBPIXEL_ONE + ML_SUBPIXEL_HALF;
-    i64vec2 a = i64vec2(t.v0), b = i64vec2(t.v1), c = i64vec2(t.v2);
-    int64_t e2 = (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x);  // edge v0->v1, opposite v2
-    int64_t e0 = (c.x - b.x) * (p.y - b.y) - (c.y - b.y) * (p.x - b.x);  // edge v1->v2, opposite v0
-    int64_t e1 = (a.x - c.x) * (p.y - c.y) - (a.y - c.y) * (p.x - c.x);  // edge v2->v0, opposite v1
+    ivec2 p = pixel * ML_SUBPIXEL_ONE + ML_SUBPIXEL_HALF;
+    ivec2 ab = t.v1 - t.v0, bc = t.v2 - t.v1, ca = t.v0 - t.v2;
+    ivec2 pa = p - t.v0, pb = p - t.v1, pc = p - t.v2;
+    int64_t e2 = rasterWideProduct(ab.x, pa.y) - rasterWideProduct(ab.y, pa.x);  // edge v0->v1, opposite v2
+    int64_t e0 = rasterWideProduct(bc.x, pb.y) - rasterWideProduct(bc.y, pb.x);  // edge v1->v2, opposite v0
+    int64_t e1 = rasterWideProduct(ca.x, pc.y) - rasterWideProduct(ca.y, pc.x);  // edge v2->v0, opposite v1
     return i64vec3(e0, e1, e2);
 }
 
