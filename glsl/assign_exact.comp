@@ -2,12 +2,19 @@
 // Exact light assignment. Per light (--assign exact, the default), fully parallel: serial
 // per-light loops over clusters leave the GPU idle when lights are few or large and scale with
 // the grid, so every (light, candidate cluster) pair gets its own invocation:
+//   ML_EXACT_CLEAR   (per list)       every list's count and offset and the totals to 0
 //   ML_EXACT_RANGES  (per light)      the light's block of candidate clusters and their number
 //   [prefix sum of candidates per light, on the host side of the pipeline]
-//   ML_EXACT_DISPATCH (one invocation) indirect dispatch arguments for the candidate passes
-//   ML_EXACT_COUNT   (per candidate)  the --cull test and a spot's cone (include/light_cluster_test.glsl); count per list
-//   [prefix sum of counts: list offsets]
-//   ML_EXACT_FILL    (per candidate)  the same test; write the light into the list
+//   ML_EXACT_DISPATCH (one invocation) indirect dispatch arguments for the candidate passes, and
+//                                     the candidates for the CPU, which sizes the lists by them
+//   ML_EXACT_COUNT   (per candidate)  the --cull test and a spot's cone (include/light_cluster_test.glsl); count per list,
+//                                     into the offsets' buffer
+//   [prefix sum of the counts in place: list offsets]
+//   ML_EXACT_FILL    (per candidate)  the same test; write the light into the list, counting again
+//                                     into the counts' buffer, which leaves each list's length there
+// The clear is one dispatch, and no buffer is cleared or copied between the passes: on an H200 a
+// glClearNamedBufferSubData or a buffer copy between two passes cost 5-7 us, as much as a pass's
+// own work at a thousand lights (docs/bench/nvidia-h200/fewer-steps/).
 // A workgroup takes ML_ASSIGN_CANDIDATE_RUN rounds of consecutive candidates, one an invocation;
 // an invocation finds its first candidate's light by binary search over the candidate offsets,
 // and each later one's by stepping forward from there.
@@ -37,10 +44,9 @@
 layout(local_size_x = ML_WORKGROUP) in;
 
 layout(std430, binding = ML_SSBO_CLUSTER_COUNTS) buffer ClusterCounts { uint clusterCounts[]; };
-layout(std430, binding = ML_SSBO_CLUSTER_OFFSETS) readonly buffer ClusterOffsets { uint clusterOffsets[]; };
+layout(std430, binding = ML_SSBO_CLUSTER_OFFSETS) buffer ClusterOffsets { uint clusterOffsets[]; };
 layout(std430, binding = ML_SSBO_LIGHT_INDICES) writeonly buffer LightIndices { uint lightIndices[]; };
 layout(std430, binding = ML_SSBO_CLUSTER_ACTIVE) readonly buffer ClusterActive { uint clusterActive[]; };
-layout(std430, binding = ML_SSBO_FILL_CURSORS) buffer FillCursors { uint cursors[]; };
 // [0] dropped (capped only), [1] list entries, [2] candidates: totals written by the prefix sums;
 // --normal-cones: [3] pairs that pass the cull test in clusters holding a visible sample, [4] of
 // those, pairs kept in at least one normal bin
@@ -50,12 +56,24 @@ layout(std430, binding = ML_SSBO_LIGHT_RANGES) buffer LightRanges { uvec4 lightR
 layout(std430, binding = ML_SSBO_LIGHT_VIEW) buffer LightView { vec4 lightView[]; };        // bounding sphere: centre, radius
 layout(std430, binding = ML_SSBO_CANDIDATE_OFFSETS) buffer CandidateOffsets { uint candidateOffsets[]; };
 layout(std430, binding = ML_SSBO_DISPATCH) writeonly buffer DispatchArgs { uvec4 dispatchArgs; };
+// [0] candidates, [1] their wrap flag: AssignStats [5] and [6] where the CPU reads them behind a fence.
+layout(std430, binding = ML_SSBO_ASSIGN_CANDIDATES) writeonly buffer AssignCandidates { uint candidatesForHost[2]; };
 layout(std430, binding = ML_SSBO_NORMAL_BIN_MASKS) readonly buffer NormalBinMasks { uint normalBinMasks[]; };
 layout(std430, binding = ML_SSBO_NORMAL_CONES) readonly buffer NormalCones { ivec4 normalCones[]; };
 
 uniform uint u_maxGroupsX;
+uniform uint u_lists;  // ML_EXACT_CLEAR: the lists (clusters, or clusters x normal bins)
 
-#if defined(ML_EXACT_RANGES)
+#if defined(ML_EXACT_CLEAR)
+void main() {
+    uint i = gl_GlobalInvocationID.x;
+    if (i < u_lists) {
+        clusterCounts[i] = 0u;
+        clusterOffsets[i] = 0u;
+    }
+    if (i < 8u) totals[i] = 0u;
+}
+#elif defined(ML_EXACT_RANGES)
 shared uint s_candidates;
 shared uint s_wrapped;
 
@@ -96,6 +114,8 @@ void main() {
 void main() {
     // At least one group (it finds nothing to do when there are no candidates); beyond the
     // device's limit in x, the rest goes to y.
+    candidatesForHost[0] = totals[5];
+    candidatesForHost[1] = totals[6];
     if (totals[6] != 0u) totals[2] = 0u;  // wrapped: test nothing; the host reports it
     const uint span = ML_WORKGROUP * ML_CANDIDATE_RUN;  // candidates a workgroup takes
     uint groups = max(totals[2] / span + uint(totals[2] % span != 0u), 1u);
@@ -112,12 +132,13 @@ void main() {
 shared uint s_pairsTested, s_pairsKept;
 #endif
 
-// One list entry: counted, or written at the list's next slot.
+// One list entry: counted (where the scan then makes the offsets), or written at the list's next
+// slot, which counts it again where the lists' lengths are read.
 void addToList(uint key, uint light) {
 #if defined(ML_COUNTING)
-    atomicAdd(clusterCounts[key], 1u);
+    atomicAdd(clusterOffsets[key], 1u);
 #else
-    uint slot = atomicAdd(cursors[key], 1u);
+    uint slot = atomicAdd(clusterCounts[key], 1u);
     lightIndices[clusterOffsets[key] + slot] = light;
 #endif
 }

@@ -63,6 +63,7 @@
 
 layout(local_size_x = ML_SCREEN_TILE, local_size_y = ML_SCREEN_TILE) in;
 layout(binding = ML_IMG_HDR, rgba32f) uniform image2D u_hdr;
+// Where each pixel's fragments end, then the scan's block bases (renderer/passes/glass_fragments.h).
 layout(std430, binding = ML_SSBO_GLASS_PIXELS) readonly buffer GlassPixels { uint glassEnds[]; };
 // The fragments (two words each) and, from word u_colorBase, a colour per fragment (four words)
 // where there is more than one set: one block, as llvmpipe offers a compute shader 16 and
@@ -90,6 +91,14 @@ shared uint s_mostFragments;
 #endif
 
 uvec2 fragmentAt(uint k) { return uvec2(glassWords[2u * k], glassWords[2u * k + 1u]); }
+// Where a pixel's fragments start: where the pixel before it ends, or for the first pixel of one
+// of the scan's blocks, the block's base (the blocks lie in any order in the fragment buffer).
+uint glassBegin(uint pixel) {
+    const uint kBlock = ML_SCAN_WORKGROUP * ML_SCAN_PER_INVOCATION;
+    if (pixel % kBlock != 0u) return glassEnds[pixel - 1u];
+    return glassEnds[uint(u_viewport.x) * uint(u_viewport.y) + pixel / kBlock];
+}
+
 void storeFragment(uint k, uvec2 f) {
     glassWords[2u * k] = f.x;
     glassWords[2u * k + 1u] = f.y;
@@ -245,7 +254,7 @@ void main() {
     if (inside) {
         uint pixel = uint(p.y) * uint(u_viewport.x) + uint(p.x);
         end = glassEnds[pixel];
-        begin = pixel == 0u ? 0u : glassEnds[pixel - 1u];
+        begin = glassBegin(pixel);
         if (begin != end && u_sorts != 0u) sortFragments(begin, end);
     }
 #if ML_GLASS_SPLIT == kBlendParts
@@ -294,7 +303,7 @@ void main() {
     if (!inside) return;
     uint pixel = uint(p.y) * uint(u_viewport.x) + uint(p.x);
     uint end = glassEnds[pixel];
-    uint begin = pixel == 0u ? 0u : glassEnds[pixel - 1u];
+    uint begin = glassBegin(pixel);
     if (begin == end) return;
     if (u_sorts != 0u) sortFragments(begin, end);
     vec4 frame = imageLoad(u_hdr, p);

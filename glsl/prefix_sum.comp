@@ -8,6 +8,12 @@
 // an inclusive prefix. It waits only on blocks that took their tickets earlier, which have
 // started and so run, so it cannot deadlock however the GPU schedules workgroups. Elements at or
 // past u_count are read as 0 and never written.
+//
+// ML_SCAN_BLOCK_BASES: no look-back. A block reserves its total's room by one atomic add and
+// writes its elements' places from there, and where it starts, its base, at data[u_count + block]:
+// the blocks follow one another in whatever order they finish. For a buffer whose readers find an
+// element's start from the element before it in its block, or from the base for a block's first,
+// it saves the look-back's chain of waits (the glass's per-pixel counts at 2560x1440: 900 blocks).
 #include "include/bindings.h"
 
 layout(local_size_x = ML_SCAN_WORKGROUP) in;
@@ -22,10 +28,17 @@ struct BlockState {
 // coherent: the blocks' sums pass between workgroups while they run.
 layout(std430, binding = ML_SSBO_SCAN_BLOCKS) coherent buffer ScanState {
     uint ticket;  // tickets handed out, over every run (wrapping)
-    uint total;   // the sum of every element, written by the last block
-    uint unusedWords[2];
+    // ML_SCAN_BLOCK_BASES: the room reserved so far and the blocks done, both left at 0 by the
+    // last block done
+    uint reserved;
+    uint blocksDone;
+    uint unused;
     BlockState blocks[];
 };
+// The sum of every element, at word u_totalWord: written by the last block, where the caller
+// reads it (on an H200 a 4-byte buffer copy after the scan cost 5-7 us of a 17-us scan).
+layout(std430, binding = ML_SSBO_SCAN_TOTAL) writeonly buffer ScanTotal { uint scanTotal[]; };
+uniform uint u_totalWord;
 
 uniform uint u_count;
 uniform uint u_epoch;  // this run's number (1 to 2^30 - 1): earlier runs' flags are not this one's
@@ -135,6 +148,18 @@ void main() {
     }
 
     uint blockTotal = s_sums[ML_SCAN_WORKGROUP - 1u];
+#if defined(ML_SCAN_BLOCK_BASES)
+    if (t == 0u) {
+        s_prefix = atomicAdd(reserved, blockTotal);
+        data[u_count + block] = s_prefix;
+        memoryBarrierBuffer();  // the reservation before the count of blocks done
+        if (atomicAdd(blocksDone, 1u) == lastBlock) {
+            // Every block has reserved its room: the sum is final, and the next run starts at 0.
+            scanTotal[u_totalWord] = atomicExchange(reserved, 0u);
+            atomicExchange(blocksDone, 0u);
+        }
+    }
+#else
     if (t == 0u) {
         s_prefix = 0u;
         publish(block, block == 0u ? kInclusive : kAggregate, blockTotal);
@@ -143,7 +168,8 @@ void main() {
         lookBack(block, t);
         if (t == 0u) publish(block, kInclusive, s_prefix + blockTotal);
     }
-    if (t == 0u && block == lastBlock) total = s_prefix + blockTotal;
+    if (t == 0u && block == lastBlock) scanTotal[u_totalWord] = s_prefix + blockTotal;
+#endif
     barrier();
 
     uint running = s_prefix + s_sums[t] - run;

@@ -5,7 +5,7 @@
 // shaded frame a pure function of the flags and the seed (byte-identical runs, issue 7).
 //
 // Three programs from this file. ML_SORT_CLASSIFY (one invocation per list) appends every list of
-// two or more entries to the short or the long work list, and ML_SORT_ARGS (one invocation) turns
+// two or more entries to the short or the long work list, and its last workgroup to finish turns
 // their lengths into indirect dispatches: most lists hold 0 or 1 lights (every empty normal bin
 // of --normal-cones, the empty space of a frame), and a workgroup launched per list only to
 // return cost 1.5 s a frame on llvmpipe at 160x90 with normal cones, 15 s at 16x4096.
@@ -18,9 +18,6 @@
 
 #if defined(ML_SORT_CLASSIFY)
 #define ML_SORT_WORKGROUP 64
-#define ML_SORT_CAPACITY 1
-#elif defined(ML_SORT_ARGS)
-#define ML_SORT_WORKGROUP 1
 #define ML_SORT_CAPACITY 1
 #elif defined(ML_SORT_LONG)
 #define ML_SORT_WORKGROUP ML_SORT_LONG_WORKGROUP
@@ -37,17 +34,22 @@ layout(std430, binding = ML_SSBO_LIGHT_INDICES) coherent buffer LightIndices { u
 // Long lists past shared memory: each entry at its merged place, at the list's own offset.
 layout(std430, binding = ML_SSBO_SORT_SCRATCH) coherent buffer SortScratch { uint sortScratch[]; };
 
-// The work lists: the two indirect dispatches (short at word 0, long at word 3), the two lengths,
-// then the short lists' indices from word ML_SORT_WORK_LISTS and the long ones' u_listCount after.
+// The work lists: the two indirect dispatches (short at word 0, long at word 3), the two lengths
+// as the classification counts them and the classifying workgroups done (left at 0 for the next
+// run by the last), the two lengths for the sorting programs, then the short lists' indices from
+// word ML_SORT_WORK_LISTS and the long ones' u_listCount after.
 layout(std430, binding = ML_SSBO_SORT_WORK) coherent buffer SortWork { uint sortWork[]; };
-#define ML_SORT_SHORT_LENGTH 6
-#define ML_SORT_LONG_LENGTH 7
-#define ML_SORT_WORK_LISTS 8
+#define ML_SORT_SHORT_COUNTED 6
+#define ML_SORT_LONG_COUNTED 7
+#define ML_SORT_GROUPS_DONE 8
+#define ML_SORT_SHORT_LENGTH 9
+#define ML_SORT_LONG_LENGTH 10
+#define ML_SORT_WORK_LISTS 11
 
 // Lists: one per cluster, or one per (cluster, normal bin) with --normal-cones.
 uniform uint u_listCount;
 uniform uint u_listCap;     // capped lists: entries a list holds; 0 for exact lists
-uniform uint u_maxGroupsX;  // ML_SORT_ARGS: the device's limit on workgroups in x
+uniform uint u_maxGroupsX;  // ML_SORT_CLASSIFY: the device's limit on workgroups in x
 
 // Where a list starts and how long it is. Capped lists live at list * cap and keep at most cap
 // entries.
@@ -143,16 +145,6 @@ void chunkSortAndMerge(uint first, uint n) {
 }
 
 #if defined(ML_SORT_CLASSIFY)
-void main() {
-    uint list = gl_GlobalInvocationID.y * gl_NumWorkGroups.x * ML_SORT_WORKGROUP + gl_GlobalInvocationID.x;
-    if (list >= u_listCount) return;
-    uint n = listRange(list).y;
-    if (n < 2u) return;
-    bool isLong = n > ML_SORT_SHORT_MAX;
-    uint slot = atomicAdd(sortWork[isLong ? ML_SORT_LONG_LENGTH : ML_SORT_SHORT_LENGTH], 1u);
-    sortWork[ML_SORT_WORK_LISTS + (isLong ? u_listCount : 0u) + slot] = list;
-}
-#elif defined(ML_SORT_ARGS)
 // One workgroup per listed list; past the device's limit in x, the rest goes to y.
 void writeDispatch(uint at, uint lists) {
     uint x = min(lists, u_maxGroupsX);
@@ -160,9 +152,31 @@ void writeDispatch(uint at, uint lists) {
     sortWork[at + 1u] = x == 0u ? 0u : (lists + x - 1u) / x;
     sortWork[at + 2u] = 1u;
 }
+
 void main() {
-    writeDispatch(0u, sortWork[ML_SORT_SHORT_LENGTH]);
-    writeDispatch(3u, sortWork[ML_SORT_LONG_LENGTH]);
+    uint list = gl_GlobalInvocationID.y * gl_NumWorkGroups.x * ML_SORT_WORKGROUP + gl_GlobalInvocationID.x;
+    uint n = list < u_listCount ? listRange(list).y : 0u;
+    if (n >= 2u) {
+        bool isLong = n > ML_SORT_SHORT_MAX;
+        uint slot = atomicAdd(sortWork[isLong ? ML_SORT_LONG_COUNTED : ML_SORT_SHORT_COUNTED], 1u);
+        sortWork[ML_SORT_WORK_LISTS + (isLong ? u_listCount : 0u) + slot] = list;
+    }
+    // The last workgroup to finish writes the dispatches, not a pass of its own, and leaves the
+    // counters at 0 for the next run, not a buffer upload before it: every workgroup's appends are
+    // in before it counts itself done, so the lengths it takes are final.
+    memoryBarrierBuffer();
+    barrier();
+    if (gl_LocalInvocationIndex == 0u &&
+        atomicAdd(sortWork[ML_SORT_GROUPS_DONE], 1u) == gl_NumWorkGroups.x * gl_NumWorkGroups.y - 1u) {
+        memoryBarrierBuffer();
+        uint shortLists = atomicExchange(sortWork[ML_SORT_SHORT_COUNTED], 0u);
+        uint longLists = atomicExchange(sortWork[ML_SORT_LONG_COUNTED], 0u);
+        atomicExchange(sortWork[ML_SORT_GROUPS_DONE], 0u);
+        sortWork[ML_SORT_SHORT_LENGTH] = shortLists;
+        sortWork[ML_SORT_LONG_LENGTH] = longLists;
+        writeDispatch(0u, shortLists);
+        writeDispatch(3u, longLists);
+    }
 }
 #else
 void main() {

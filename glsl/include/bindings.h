@@ -20,12 +20,13 @@
 #define ML_SSBO_CLUSTER_ACTIVE 8   // 1 where a visible sample falls in the cluster (--active-only)
 #define ML_SSBO_ASSIGN_STATS 9     // overflow counters of capped lists
 #define ML_SSBO_SCAN_DATA 10       // prefix sum: the values, scanned in place
-#define ML_SSBO_SCAN_BLOCKS 11     // prefix sum: the ticket, the total, and each block's published sums
-#define ML_SSBO_FILL_CURSORS 12    // per-cluster write positions of the fill pass
+#define ML_SSBO_SCAN_BLOCKS 11     // prefix sum: the ticket, and each block's published sums
+// prefix sum: where the total goes (the scan writes it, rather than a buffer copy after the scan).
+// It shares the vertices' point below: every pass binds what it reads before it runs.
+#define ML_SSBO_SCAN_TOTAL 12
 // Scene geometry for compute passes that rebuild surfaces from triangle ids (the visibility
-// resolve, the transparent pass's shading). The vertices share the exact fill's cursors' point
-// (every pass binds what it reads before it runs), away from the spot cones, which the
-// transparent shading reads with them.
+// resolve, the transparent pass's shading), away from the spot cones, which the transparent
+// shading reads with them.
 #define ML_SSBO_VERTICES 12        // scene vertices as floats
 #define ML_SSBO_INDICES 14         // scene triangle indices
 // Spot cones (where the light set has spots): animated, read with the lights; at time 0, read by
@@ -37,6 +38,9 @@
 #define ML_SSBO_LIGHT_VIEW 17      // exact assignment: each light's view-space centre and radius
 #define ML_SSBO_CANDIDATE_OFFSETS 18   // exact assignment: prefix sum of candidates per light
 #define ML_SSBO_DISPATCH 19        // exact assignment: indirect dispatch arguments of the test passes
+// exact assignment: the candidates and their wrap flag, for the CPU (a mapped buffer); the point
+// of the radix sort's keys and the vertex tangents, which no pass of the assignment reads
+#define ML_SSBO_ASSIGN_CANDIDATES 20
 #define ML_SSBO_SORT_WORK 16       // list sort: the lists of two or more entries and their dispatches (after assignment)
 #define ML_SSBO_SORT_SCRATCH 17    // list sort: lists longer than shared memory, merged, before they are copied back
 // The visibility resolve's tile lists (renderer/methods/visibility_buffer.h); free in that pass.

@@ -74,6 +74,7 @@ ClusteredLighting::ClusteredLighting(const ClusteringSettings& settings, std::ui
       bounds_(gl::Program::compute("cluster_bounds.comp")),
       active_(gl::Program::compute("cluster_active.comp", {depthSamplesDefine(settings)})),
       normalBins_(settings.normalCones ? gl::Program::compute("cluster_normal_bins.comp", gbufferDefines) : gl::Program()),
+      clear_(exactProgram("assign.clear", "ML_EXACT_CLEAR", settings)),
       ranges_(exactProgram("assign.ranges", "ML_EXACT_RANGES", settings)),
       dispatch_(exactProgram("assign.dispatch", "ML_EXACT_DISPATCH", settings)),
       count_(countProgram(settings)),
@@ -121,7 +122,6 @@ void ClusteredLighting::ensureStorage(std::uint32_t clusters) {
     aabbs_.ensure(std::size_t(clusters) * sizeof(ClusterAabbGpu));
     counts_.ensure(perList);
     offsets_.ensure(perList);
-    cursors_.ensure(perList);
     activeFlags_.ensure(perCluster);
     if (settings_.normalCones) {
         checkListFits(perList * 4, "normal cones");
@@ -280,7 +280,6 @@ void ClusteredLighting::dispatchAssignment(const gl::Program& program, std::uint
 void ClusteredLighting::buildExact(const FrameContext& ctx) {
     const std::uint32_t clusters = grid_.clusterCount();
     const std::uint32_t lists = clusters * listsPerCluster();
-    const std::size_t perList = std::size_t(lists) * 4;
     const std::uint32_t lights = ctx.lights.count();
     const bool perCluster = settings_.assign == AssignMode::PerCluster;
     lightRanges_.ensure(std::size_t(lights) * 16);
@@ -292,7 +291,6 @@ void ClusteredLighting::buildExact(const FrameContext& ctx) {
     dispatchArgs_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_DISPATCH);
     counts_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_CLUSTER_COUNTS);
     offsets_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_CLUSTER_OFFSETS);
-    cursors_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_FILL_CURSORS);
     if (settings_.normalCones) {
         normalBinMasks_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_NORMAL_BIN_MASKS);
         normalCones_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_NORMAL_CONES);
@@ -305,7 +303,11 @@ void ClusteredLighting::buildExact(const FrameContext& ctx) {
     {
         // Each light's candidate block; per light, where its candidates start among all of them.
         auto pass = ctx.timer.pass("assign.ranges");
-        clearToZero(counters_, 32);
+        // The lists' counts and offsets and the totals: one dispatch for every buffer the
+        // assignment adds into (glsl/assign_exact.comp says why).
+        clear_.use();
+        clear_.set("u_lists", lists);
+        glDispatchCompute(gl::groupsFor(std::max(lists, 8u), settings_.grid.workgroup), 1, 1);
         glMemoryBarrier(kComputeToCompute);
         dispatchAssignment(ranges_, lights);
         if (!perCluster) {
@@ -313,33 +315,25 @@ void ClusteredLighting::buildExact(const FrameContext& ctx) {
             glMemoryBarrier(kComputeToCompute);
             candidateOffsets_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_CANDIDATE_OFFSETS);
             counters_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_ASSIGN_STATS);
-            dispatchArgs_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_DISPATCH);
-            dispatch_.use();
-            glDispatchCompute(1, 1, 1);
-            glMemoryBarrier(GL_COMMAND_BARRIER_BIT | kComputeToCompute);
         }
-        // The candidates and the wrap flag (AssignStats [5], [6]), for the CPU to read once the
-        // fence passes, while the GPU runs the count and its scan.
-        glCopyNamedBufferSubData(counters_.id(), candidates_.buffer().id(), 5 * 4, 0, 2 * 4);
+        // The count's indirect dispatch (unused per cluster), and the candidates and their wrap
+        // flag for the CPU to read once the fence passes, while the GPU runs the count and its scan.
+        dispatchArgs_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_DISPATCH);
+        candidates_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_ASSIGN_CANDIDATES);
+        dispatch_.use();
+        glDispatchCompute(1, 1, 1);
+        glMemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_CLIENT_MAPPED_BUFFER_BARRIER_BIT | kComputeToCompute);
         candidates_.fence();
     }
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, dispatchArgs_.id());
     {
         auto pass = ctx.timer.pass(perCluster ? "assign.per-cluster-count" : "assign.count");
-        clearToZero(counts_.buffer(), perList);
-        if (settings_.normalCones) {
-            const std::uint32_t zero[2] = {0, 0};
-            counters_.upload(zero, sizeof zero, 12);
-        }
-        glMemoryBarrier(kComputeToCompute);
         count_.use();
         dispatchPairs();
         glMemoryBarrier(kComputeToCompute);
     }
     {
         auto pass = ctx.timer.pass("assign.scan");
-        glCopyNamedBufferSubData(counts_.buffer().id(), offsets_.buffer().id(), 0, 0, static_cast<GLsizeiptr>(perList));
-        glMemoryBarrier(kComputeToCompute);
         scan_.run(offsets_.buffer(), lists, counters_, 4);
         glMemoryBarrier(kComputeToCompute);
     }
@@ -364,8 +358,6 @@ void ClusteredLighting::buildExact(const FrameContext& ctx) {
             checkListFits(listBytes, "the light lists");
         }
         indices_.ensure(listBytes);
-        clearToZero(cursors_.buffer(), perList);
-        glMemoryBarrier(kComputeToCompute);
         counts_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_CLUSTER_COUNTS);
         offsets_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_CLUSTER_OFFSETS);
         indices_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_LIGHT_INDICES);
@@ -483,10 +475,10 @@ ClusterStatistics ClusteredLighting::statistics() const {
         s.activeClusters = static_cast<std::uint32_t>(std::count(flags.begin(), flags.end(), 1u));
     }
     s.listBytes = capped ? std::size_t(s.clusters) * settings_.maxPerCluster * 4 : std::size_t(stored) * 4;
-    // Per cluster: active flag, AABB (and normal-bin mask); per list: count, offset, cursor
-    // (and the normal cone).
+    // Per cluster: active flag, AABB (and normal-bin mask); per list: count, offset (and the
+    // normal cone).
     s.gridBytes = std::size_t(s.clusters) * (4 + sizeof(ClusterAabbGpu) + (settings_.normalCones ? 4 : 0)) +
-                  std::size_t(lists) * (settings_.normalCones ? 28 : 12) + 16;
+                  std::size_t(lists) * (settings_.normalCones ? 24 : 8) + 16;
     return s;
 }
 

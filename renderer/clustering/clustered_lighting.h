@@ -19,12 +19,12 @@
 //           no cluster bounds: bins and tile frusta replace the clusters)
 //
 // Every assignment tests pairs with the --cull test. With --normal-cones a list belongs to a
-// (cluster, normal bin) key, cluster * ML_NORMAL_BINS + bin; the per-list buffers (counts,
-// offsets, cursors: 12 B) grow 24-fold, and each list keeps the cone of its samples' normals
-// (16 B): 28 B x 24 per cluster, 17.7 MiB for 32 x 18 x 48 clusters.
+// (cluster, normal bin) key, cluster * ML_NORMAL_BINS + bin; the per-list buffers (counts and
+// offsets: 8 B) grow 24-fold, and each list keeps the cone of its samples' normals (16 B):
+// 24 B x 24 per cluster, 15.2 MiB for 32 x 18 x 48 clusters.
 //
-// Memory per cluster: count, offset, fill cursor, active flag (4 B each) and an AABB (32 B):
-// 48 B, so 32 x 18 x 24 clusters take 648 KiB. Exact lists take 4 B per light reference, in a
+// Memory per cluster: count, offset, active flag (4 B each) and an AABB (32 B): 44 B, so
+// 32 x 18 x 24 clusters take 594 KiB. Exact lists take 4 B per light reference, in a
 // buffer sized by the frame's (light, candidate cluster) pairs, which bound the references;
 // capped lists take clusters x cap x 4 B whatever the frame needs (42x24x12 x 2048: 99 MiB).
 // With float sums the sort (list_sort.h) keeps a scratch buffer as large as the lists.
@@ -102,7 +102,7 @@ private:
     ClusterGrid grid_;
     std::size_t maxStorageBlock_ = 0;
 
-    gl::Program depthRange_, bounds_, active_, normalBins_, ranges_, dispatch_, count_, fill_, capped_;
+    gl::Program depthRange_, bounds_, active_, normalBins_, clear_, ranges_, dispatch_, count_, fill_, capped_;
     PrefixSum scan_;
     ListSort sort_;
     RasterProgram transparentSamples_;  // only with transparency and --active-only or --normal-cones
@@ -117,7 +117,6 @@ private:
     gl::GrowableBuffer aabbs_{"clusters.aabbs"};
     gl::GrowableBuffer counts_{"clusters.counts"};
     gl::GrowableBuffer offsets_{"clusters.offsets"};
-    gl::GrowableBuffer cursors_{"clusters.fill-cursors"};
     gl::GrowableBuffer activeFlags_{"clusters.active"};
     gl::GrowableBuffer normalBinMasks_{"clusters.normal-bin-masks"};  // 4 B per cluster
     gl::GrowableBuffer normalCones_{"clusters.normal-cones"};         // 16 B per (cluster, bin) list

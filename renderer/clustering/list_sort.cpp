@@ -13,19 +13,20 @@ constexpr GLbitfield kComputeToCompute = GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFF
 
 ListSort::ListSort()
     : classify_(gl::Program::compute("sort_cluster_lists.comp", {{"ML_SORT_CLASSIFY", "1"}})),
-      args_(gl::Program::compute("sort_cluster_lists.comp", {{"ML_SORT_ARGS", "1"}})),
       short_(gl::Program::compute("sort_cluster_lists.comp")),
       long_(gl::Program::compute("sort_cluster_lists.comp", {{"ML_SORT_LONG", "1"}})),
       maxGroupsX_(gl::maxWorkGroupsX()) {
-    args_.set("u_maxGroupsX", maxGroupsX_);
+    classify_.set("u_maxGroupsX", maxGroupsX_);
 }
 
 void ListSort::sort(const gl::Buffer& counts, const gl::Buffer& offsets, const gl::Buffer& indices, std::uint32_t lists,
                     std::uint32_t cap) {
     if (lists == 0) return;
-    work_.ensure(workBytes(lists));
-    const std::uint32_t noLists[2] = {0, 0};
-    work_.buffer().upload(noLists, sizeof noLists, kWorkLengths * 4);
+    // A new buffer's counters to 0; after that each run leaves them so.
+    if (work_.ensure(workBytes(lists))) {
+        const std::uint32_t counters[3] = {0, 0, 0};
+        work_.buffer().upload(counters, sizeof counters, kWorkCounters * 4);
+    }
     // Lists past the long program's shared memory are merged here, at their own offsets.
     scratch_.ensure(indices.size());
     glMemoryBarrier(kComputeToCompute);
@@ -43,9 +44,6 @@ void ListSort::sort(const gl::Buffer& counts, const gl::Buffer& offsets, const g
     classify_.set("u_listCount", lists);
     classify_.set("u_listCap", cap);
     glDispatchCompute(groupsX, (classifyGroups + groupsX - 1) / groupsX, 1);
-    glMemoryBarrier(kComputeToCompute);
-    args_.use();
-    glDispatchCompute(1, 1, 1);
     glMemoryBarrier(GL_COMMAND_BARRIER_BIT | kComputeToCompute);
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, work_.buffer().id());
     for (const auto& [program, argsOffset] : {std::pair{&short_, 0}, std::pair{&long_, 12}}) {

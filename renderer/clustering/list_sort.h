@@ -4,7 +4,7 @@
 // each, in two indirect dispatches by length: short lists by rank or a bitonic network in shared
 // memory, long ones by a bitonic network in shared memory or, past it, in chunks merged by rank.
 //
-// Memory: the work lists (8 + 2 x lists words) and, for lists longer than shared memory holds, a
+// Memory: the work lists (11 + 2 x lists words) and, for lists longer than shared memory holds, a
 // scratch copy of the list buffer.
 #pragma once
 
@@ -30,11 +30,12 @@ public:
     static std::size_t workBytes(std::uint32_t lists) { return (kWorkLists + 2 * std::size_t(lists)) * 4; }
 
 private:
-    // The work lists' layout: two indirect dispatches (words 0-5), the two lengths, then the
-    // listed lists' indices.
-    static constexpr std::size_t kWorkLengths = 6, kWorkLists = 8;
+    // The work lists' layout: two indirect dispatches (words 0-5), the classification's counters
+    // (the two lengths and its workgroups done: 0 between runs), the two lengths for the sorting
+    // programs, then the listed lists' indices.
+    static constexpr std::size_t kWorkCounters = 6, kWorkLists = 11;
 
-    gl::Program classify_, args_, short_, long_;
+    gl::Program classify_, short_, long_;
     std::uint32_t maxGroupsX_;  // the device's limit on workgroups in x
     gl::GrowableBuffer work_{"clusters.sort-work"};
     gl::GrowableBuffer scratch_{"clusters.sort-scratch"};

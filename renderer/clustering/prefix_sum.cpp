@@ -7,12 +7,15 @@
 namespace ml {
 
 namespace {
-constexpr std::size_t kStateHeaderBytes = 16;  // ticket, total, two unused words
+constexpr std::size_t kStateHeaderBytes = 16;  // ticket, reserved room, blocks done, unused
 constexpr std::size_t kBlockStateBytes = 16;   // flag, aggregate, inclusive, unused
 constexpr std::uint32_t kEpochs = 1u << 30;    // the flag keeps two bits for the status
 }  // namespace
 
-PrefixSum::PrefixSum() : program_(gl::Program::compute("prefix_sum.comp")), maxGroupsX_(gl::maxWorkGroupsX()) {}
+PrefixSum::PrefixSum(ScanOrder order)
+    : program_(gl::Program::compute("prefix_sum.comp", order == ScanOrder::BlockBases ? shaders::Defines{{"ML_SCAN_BLOCK_BASES", "1"}}
+                                                                                        : shaders::Defines{})),
+      maxGroupsX_(gl::maxWorkGroupsX()) {}
 
 void PrefixSum::run(const gl::Buffer& data, std::uint32_t count, const gl::Buffer& total, std::size_t totalOffset) {
     if (count == 0) {
@@ -21,7 +24,7 @@ void PrefixSum::run(const gl::Buffer& data, std::uint32_t count, const gl::Buffe
                                   GL_UNSIGNED_INT, &zero);
         return;
     }
-    const std::uint32_t blocks = (count - 1) / kBlockSize + 1;
+    const std::uint32_t blocks = blocksOf(count);
     // A new buffer, or the epochs run out: every flag to 0 (no run's) and the tickets to 0.
     epoch_ = (epoch_ + 1) % kEpochs;
     if (state_.ensure(kStateHeaderBytes + std::size_t(blocks) * kBlockStateBytes) || epoch_ == 0) {
@@ -37,13 +40,13 @@ void PrefixSum::run(const gl::Buffer& data, std::uint32_t count, const gl::Buffe
     program_.use();
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_SCAN_DATA, data.id());
     state_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_SCAN_BLOCKS);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_SCAN_TOTAL, total.id());
     program_.set("u_count", count);
+    program_.set("u_totalWord", static_cast<std::uint32_t>(totalOffset / 4));
     program_.set("u_epoch", epoch_);
     program_.set("u_firstTicket", firstTicket_);
     glDispatchCompute(groupsX, groupsY, 1);
     firstTicket_ += groupsX * groupsY;  // wraps, as the shader's counter does
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
-    glCopyNamedBufferSubData(state_.buffer().id(), total.id(), 4, static_cast<GLintptr>(totalOffset), 4);
 }
 
 }  // namespace ml

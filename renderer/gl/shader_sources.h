@@ -19,6 +19,12 @@ const std::vector<std::string_view>& fileTable();  // source-string ids used by 
 
 using Defines = std::vector<std::pair<std::string, std::string>>;
 
+// `defines` with one more: a program's variant of another's list.
+inline Defines withDefine(Defines defines, std::string name, std::string value) {
+    defines.emplace_back(std::move(name), std::move(value));
+    return defines;
+}
+
 // The source of a shader with `#define NAME VALUE` lines inserted after #version.
 // Throws std::runtime_error naming the shader if it is not embedded.
 std::string source(std::string_view name, const Defines& defines = {});

@@ -12,12 +12,6 @@ namespace {
 // waits on three dependent reads a pixel, so an invocation keeps several pixels' in flight.
 constexpr int kClassifyBlock = 2;
 
-shaders::Defines classifyDefines(const GBuffer& gbuffer) {
-    shaders::Defines defines = gbuffer.defines();
-    defines.emplace_back("ML_CLASSIFY_BLOCK", std::to_string(kClassifyBlock));
-    return defines;
-}
-
 }  // namespace
 
 VisibilityBuffer::VisibilityBuffer(const ClusteringSettings& settings, GBufferFormat gbuffer, std::uint32_t materialFeatures,
@@ -27,7 +21,7 @@ VisibilityBuffer::VisibilityBuffer(const ClusteringSettings& settings, GBufferFo
       rasterProgram_("visibility.raster", {{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "visibility.frag"}},
                      materialFeatures, RasterProgram::Reads::CoverageOnly),
       clearIdsProgram_(gl::Program::compute("visibility_clear_ids.comp")),
-      classifyProgram_(gl::Program::compute("visibility_classify.comp", classifyDefines(gbuffer_))),
+      classifyProgram_(gl::Program::compute("visibility_classify.comp", shaders::withDefine(gbuffer_.defines(), "ML_CLASSIFY_BLOCK", std::to_string(kClassifyBlock)))),
       resolveProgram_(gl::Program::compute("visibility_resolve.comp", gbuffer_.defines())),
       lightingProgram_(gl::Program::compute("deferred_lighting.comp", deferredLightingDefines(settings, gbuffer_))),
       clustering_(settings, materialFeatures, gbuffer_.defines()),

@@ -73,11 +73,6 @@ shaders::Defines rasterDefines(bool packed, int pass) {
             {"ML_RASTER_EDGE_RULE", std::to_string(hardwareEdgeRule())}};
 }
 
-shaders::Defines withDefine(shaders::Defines defines, const char* name, const char* value) {
-    defines.emplace_back(name, value);
-    return defines;
-}
-
 constexpr GLbitfield kComputeToCompute = GL_SHADER_STORAGE_BARRIER_BIT;
 
 // Pixels a finishing invocation reads and writes (glsl/compute_raster_finish.comp).
@@ -115,27 +110,27 @@ ComputeRaster::ComputeRaster(std::uint32_t materialFeatures, bool packedAtomics)
         const std::string suffix = passes_ == 1 ? "" : (pass == 0 ? ".depth" : ".ids");
         setup_[pass] = gl::Program::compute("compute_raster_triangles.comp", defines);
         tiles_[pass] = gl::Program::compute("compute_raster_tiles.comp", defines);
-        shaders::Defines list = withDefine(defines, "ML_COMPUTE_RASTER", "1");
+        shaders::Defines list = shaders::withDefine(defines, "ML_COMPUTE_RASTER", "1");
         const shaders::Defines features = materialFeatureDefines(materialFeatures);
         list.insert(list.end(), features.begin(), features.end());
         hardwareList_[pass] = gl::Program("visibility.compute-raster.hardware" + suffix,
                                           {{GL_VERTEX_SHADER, "compute_raster_hardware.vert"}, {GL_FRAGMENT_SHADER, "visibility.frag"}},
                                           list);
         if (materialFeatures & ML_FEATURE_ALPHA_TEST) {
-            shaders::Defines alpha = withDefine(defines, "ML_RASTER_ALPHA_TEST", "1");
+            shaders::Defines alpha = shaders::withDefine(defines, "ML_RASTER_ALPHA_TEST", "1");
             alpha.insert(alpha.end(), features.begin(), features.end());
             alphaSetup_[pass] = gl::Program::compute("compute_raster_triangles.comp", alpha);
             alphaTiles_[pass] = gl::Program::compute("compute_raster_tiles.comp", alpha);
             alphaHardwareList_[pass] = gl::Program("visibility.compute-raster.alpha-tested" + suffix,
                                                    {{GL_VERTEX_SHADER, "compute_raster_hardware.vert"}, {GL_FRAGMENT_SHADER, "visibility.frag"}},
-                                                   withDefine(list, "ML_ALPHA_TEST", "1"));
+                                                   shaders::withDefine(list, "ML_ALPHA_TEST", "1"));
         }
     }
     bin_ = gl::Program::compute("compute_raster_bin.comp", rasterDefines(packed_, 0));
     if (materialFeatures & ML_FEATURE_ALPHA_TEST)
-        alphaBin_ = gl::Program::compute("compute_raster_bin.comp", withDefine(rasterDefines(packed_, 0), "ML_RASTER_ALPHA_TEST", "1"));
+        alphaBin_ = gl::Program::compute("compute_raster_bin.comp", shaders::withDefine(rasterDefines(packed_, 0), "ML_RASTER_ALPHA_TEST", "1"));
     finish_ = gl::Program::compute("compute_raster_finish.comp",
-                                   withDefine(rasterDefines(packed_, 0), "ML_RASTER_FINISH_PIXELS", std::to_string(kFinishPixels).c_str()));
+                                   shaders::withDefine(rasterDefines(packed_, 0), "ML_RASTER_FINISH_PIXELS", std::to_string(kFinishPixels)));
     if (materialFeatures & ML_FEATURE_BLEND)
         depthCopy_ = gl::Program("visibility.compute-raster.depth-copy",
                                  {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "compute_raster_depth.frag"}});

@@ -41,8 +41,9 @@ void GlassFragments::count(const FrameContext& ctx, GlassColors colors, std::uin
     colors_ = colors;
     deepPartsPerTile_ = deepPartsPerTile;
     pixelCount_ = std::uint32_t(ctx.targets.width()) * std::uint32_t(ctx.targets.height());
-    // Padded to whole groups of four counts, which the clear writes as one uvec4.
-    pixels_.ensure((std::size_t(pixelCount_) + 3) / 4 * 16);
+    // Padded to whole groups of four counts, which the clear writes as one uvec4; the scan's
+    // block bases after the counts.
+    pixels_.ensure(std::max((std::size_t(pixelCount_) + 3) / 4 * 16, (std::size_t(pixelCount_) + PrefixSum::blocksOf(pixelCount_)) * 4));
     pixels_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_GLASS_PIXELS);
     {
         auto pass = ctx.timer.pass(timerName_ + "-clear");

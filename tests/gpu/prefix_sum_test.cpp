@@ -2,7 +2,9 @@
 // a 2560x1440 screen's glass counts (900 blocks looking back).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <numeric>
+#include <utility>
 
 #include "gpu_test.h"
 #include "renderer/clustering/prefix_sum.h"
@@ -79,6 +81,46 @@ TEST_F(PrefixSumRunsTest, ThousandsOfBlocksScanAlikeRunAfterRun) {
         glMemoryBarrier(GL_ALL_BARRIER_BITS);
         const auto gpu = data.downloadAll<std::uint32_t>();
         for (std::uint32_t i = 0; i < n; ++i) ASSERT_EQ(gpu[i], expected[i]) << "index " << i << ", run " << run;
+    }
+}
+
+// ScanOrder::BlockBases (the glass's per-pixel counts): each block's elements in order from its
+// base, written after the elements; the blocks' ranges, in any order, tile [0, total) without a gap
+// or an overlap, run after run of one object (its room and count of blocks left at 0 by each).
+TEST_F(PrefixSumRunsTest, BlocksInAnyOrderTileTheTotal) {
+    PrefixSum scan(ScanOrder::BlockBases);
+    gl::Buffer total("test.total", 4);
+    for (std::uint32_t n : {1u, 4096u, 4097u, 70000u, 3000u, 2560u * 1440u, 5000u, 2560u * 1440u}) {
+        std::vector<std::uint32_t> values(n);
+        for (std::uint32_t i = 0; i < n; ++i) values[i] = pcgHash(i * 3u + n) % 5u;
+        const std::uint32_t blocks = PrefixSum::blocksOf(n);
+        std::vector<std::uint32_t> padded = values;
+        padded.resize(std::size_t(n) + blocks + 1, 0u);
+        padded.back() = 0xDEADBEEFu;  // past the bases: never written
+        gl::Buffer data = gl::Buffer::fromSpan<std::uint32_t>("test.scan", padded);
+        scan.run(data, n, total, 0);
+        glMemoryBarrier(GL_ALL_BARRIER_BITS);
+        const auto gpu = data.downloadAll<std::uint32_t>();
+        std::uint32_t sum = 0;
+        total.download(&sum, 4, 0);
+        ASSERT_EQ(sum, std::accumulate(values.begin(), values.end(), 0u)) << n << " values";
+        std::vector<std::pair<std::uint32_t, std::uint32_t>> ranges;  // each block's [base, end)
+        for (std::uint32_t b = 0; b < blocks; ++b) {
+            std::uint32_t place = gpu[n + b];
+            for (std::uint32_t i = b * PrefixSum::kBlockSize; i < std::min(n, (b + 1) * PrefixSum::kBlockSize); ++i) {
+                ASSERT_EQ(gpu[i], place) << "index " << i << " of " << n;
+                place += values[i];
+            }
+            ranges.emplace_back(gpu[n + b], place);
+        }
+        std::sort(ranges.begin(), ranges.end());
+        std::uint32_t next = 0;
+        for (const auto& [begin, end] : ranges) {
+            ASSERT_EQ(begin, next) << n << " values: a gap or an overlap";
+            next = end;
+        }
+        EXPECT_EQ(next, sum);
+        EXPECT_EQ(gpu.back(), 0xDEADBEEFu) << "wrote past the bases";
     }
 }
 
