@@ -12,8 +12,8 @@
 #   round <n>     $S/targets.sweep.json, every build
 #   frames        the HDR and 8-bit frames of the first build and $NEW at 1280x720, 4,096 lights
 #   sponza <n>    Sponza's four cameras at 1,048,576 lights, every build (Sponza's 14 MB do not
-#                 travel beside the tree and the builds: two earlier calls carry it in two halves
-#                 into /root/.corpus-sponza while the machine stays warm)
+#                 travel beside the tree and the builds: earlier calls carry it in parts
+#                 into /root/.corpus-sponza/corpus/amd/sponza while the machine stays warm)
 #   targets-4m    4,194,304 lights at 3840x2160, every build
 #   headline      the README's visibility rows, both rasters: the first build and $HEADLINE
 set -u
