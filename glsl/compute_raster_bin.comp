@@ -42,11 +42,12 @@ shared uint s_count;
 shared uint s_first;
 
 // Whether a screen tile may hold pixels of the triangle: no edge has every pixel centre of the
-// tile outside it. Edges are linear, so the tile's extremes are at its corner pixels.
+// tile outside it. Edges are linear, so an edge's largest value over the tile is at the corner
+// its gradient points to: one value an edge, the same integers rasterEdges64 gives there.
 bool tileTouches(bool clipped, uint index, uvec2 tile) {
     ivec2 lo = ivec2(tile) * ML_RASTER_TILE, hi = lo + (ML_RASTER_TILE - 1);
-    ivec2 corners[4] = ivec2[](lo, ivec2(hi.x, lo.y), ivec2(lo.x, hi.y), hi);
     if (clipped) {
+        ivec2 corners[4] = ivec2[](lo, ivec2(hi.x, lo.y), ivec2(lo.x, hi.y), hi);
         uvec4 q0 = clippedTriangles[5u * index], q1 = clippedTriangles[5u * index + 1u], q2 = clippedTriangles[5u * index + 2u];
         vec3 edges[3] = vec3[](uintBitsToFloat(q0.xyz), uintBitsToFloat(uvec3(q0.w, q1.xy)), uintBitsToFloat(uvec3(q1.zw, q2.x)));
         for (int e = 0; e < 3; ++e) {
@@ -57,18 +58,15 @@ bool tileTouches(bool clipped, uint index, uvec2 tile) {
         return true;
     }
     uvec4 r0 = largeTriangles[3u * index], r1 = largeTriangles[3u * index + 1u];
-    RasterTriangle t;
-    t.v0 = ivec2(r0.xy);
-    t.v1 = ivec2(r0.zw);
-    t.v2 = ivec2(r1.xy);
-    bool inside0 = false, inside1 = false, inside2 = false;
-    for (int k = 0; k < 4; ++k) {
-        i64vec3 e = rasterEdges64(t, corners[k]);
-        inside0 = inside0 || e.x >= 0l;
-        inside1 = inside1 || e.y >= 0l;
-        inside2 = inside2 || e.z >= 0l;
+    ivec2 v[3] = ivec2[](ivec2(r0.xy), ivec2(r0.zw), ivec2(r1.xy));
+    for (int k = 0; k < 3; ++k) {
+        // Edge a->b: a pixel's value grows with x where d.y < 0 and with y where d.x > 0.
+        ivec2 a = v[k], d = v[(k + 1) % 3] - a;
+        ivec2 corner = ivec2(d.y < 0 ? hi.x : lo.x, d.x > 0 ? hi.y : lo.y);
+        ivec2 p = corner * ML_SUBPIXEL_ONE + ML_SUBPIXEL_HALF - a;
+        if (rasterWideProduct(d.x, p.y) - rasterWideProduct(d.y, p.x) < 0l) return false;
     }
-    return inside0 && inside1 && inside2;
+    return true;
 }
 
 void main() {

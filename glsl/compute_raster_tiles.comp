@@ -1,6 +1,9 @@
 #version 450 core
 // The compute raster's tile pass (renderer/passes/compute_raster.h): a workgroup per (large
-// triangle, screen tile) from the binning, a pixel per invocation. With ML_RASTER_ALPHA_TEST, one
+// triangle, screen tile) from the binning, ML_RASTER_TILE_ROWS pixels of a column per invocation.
+// The pass waits on memory (the pair, its triangle, the store: one after another), so an
+// invocation that takes several pixels keeps more pairs in flight; it steps its edges down the
+// column (the same integers as rasterEdges64 at each pixel). With ML_RASTER_ALPHA_TEST, one
 // texture set's alpha-tested triangles among the alpha-tested pairs (a dispatch per set, its
 // textures bound), each pixel alpha-tested (include/compute_raster_coverage.glsl).
 #extension GL_ARB_gpu_shader_int64 : require
@@ -13,7 +16,12 @@
 #include "include/compute_raster.glsl"
 #include "include/compute_raster_coverage.glsl"
 
-layout(local_size_x = ML_RASTER_TILE, local_size_y = ML_RASTER_TILE) in;
+#ifndef ML_RASTER_TILE_ROWS
+#define ML_RASTER_TILE_ROWS 4
+#endif
+const int kRows = ML_RASTER_TILE_ROWS;
+
+layout(local_size_x = ML_RASTER_TILE, local_size_y = ML_RASTER_TILE / ML_RASTER_TILE_ROWS) in;
 
 layout(std430, binding = ML_SSBO_RASTER_WORK) readonly buffer RasterWork { uint rasterWork[]; };
 layout(std430, binding = ML_SSBO_RASTER_LARGE) readonly buffer RasterLarge { uvec4 largeTriangles[]; };
@@ -29,8 +37,9 @@ void main() {
     uint count = min(rasterWork[ML_RASTER_PAIR_COUNT], u_pairCapacity);
     for (uint pair = gl_WorkGroupID.x; pair < count; pair += gl_NumWorkGroups.x) {
         uvec2 entry = pairs[pair];
-        ivec2 pixel = ivec2(entry.y & 0xffffu, entry.y >> 16) * ML_RASTER_TILE + ivec2(gl_LocalInvocationID.xy);
-        if (any(greaterThanEqual(pixel, ivec2(u_viewport.xy)))) continue;
+        ivec2 first = ivec2(entry.y & 0xffffu, entry.y >> 16) * ML_RASTER_TILE + ivec2(gl_LocalInvocationID.x, gl_LocalInvocationID.y * kRows);
+        if (any(greaterThanEqual(first, ivec2(u_viewport.xy)))) continue;
+        int rows = min(kRows, int(u_viewport.y) - first.y);
         if ((entry.x & ML_RASTER_CLIPPED_PAIR) != 0u) {
             uint at = 5u * (entry.x & ~ML_RASTER_CLIPPED_PAIR);
             uvec4 q0 = clippedTriangles[at], q1 = clippedTriangles[at + 1u], q2 = clippedTriangles[at + 2u], q3 = clippedTriangles[at + 3u];
@@ -40,8 +49,11 @@ void main() {
             c.edge2 = uintBitsToFloat(uvec3(q1.zw, q2.x));
             c.depthNumerator = uintBitsToFloat(q2.yzw);
             c.depthDenominator = uintBitsToFloat(q3.xyz);
-            float clippedDepth;
-            if (rasterCoversClipped(c, pixel, clippedDepth)) rasterStore(pixel, clippedDepth, q3.w);
+            for (int row = 0; row < rows; ++row) {
+                float clippedDepth;
+                ivec2 pixel = first + ivec2(0, row);
+                if (rasterCoversClipped(c, pixel, clippedDepth)) rasterStore(pixel, clippedDepth, q3.w);
+            }
             continue;
         }
         uvec4 r0 = largeTriangles[3u * entry.x], r1 = largeTriangles[3u * entry.x + 1u], r2 = largeTriangles[3u * entry.x + 2u];
@@ -53,7 +65,16 @@ void main() {
 #if ML_RASTER_ALPHA_TEST
         if (r2.y - u_firstTriangle >= u_triangles) continue;  // another set's
 #endif
-        float depth;
-        if (rasterCovers64(t, pixel, depth)) rasterStoreCovered(pixel, depth, r2.y);
+        // Every pixel's coverage and depth first, then the stores: their reads issue together.
+        i64vec3 e = rasterEdges64(t, first);
+        i64vec3 down = rasterEdgeStepsY(t);
+        float depths[kRows];
+        bool covered[kRows];
+        for (int row = 0; row < kRows; ++row) {
+            covered[row] = row < rows && rasterCoversEdges(t, e, depths[row]);
+            e += down;
+        }
+        for (int row = 0; row < kRows; ++row)
+            if (covered[row]) rasterStoreCovered(first + ivec2(0, row), depths[row], r2.y);
     }
 }

@@ -192,8 +192,14 @@ i64vec3 rasterEdges64(RasterTriangle t, ivec2 pixel) {
     return i64vec3(e0, e1, e2);
 }
 
-bool rasterCovers64(RasterTriangle t, ivec2 pixel, out float depth) {
-    i64vec3 e = rasterEdges64(t, pixel);
+// What rasterEdges64 adds when the pixel moves one row up: each edge's value is linear in the
+// pixel centre, so rows stepped to are exact.
+i64vec3 rasterEdgeStepsY(RasterTriangle t) {
+    return i64vec3(t.v2.x - t.v1.x, t.v0.x - t.v2.x, t.v1.x - t.v0.x) * int64_t(ML_SUBPIXEL_ONE);
+}
+
+// Coverage and depth at a pixel centre from its edge values (rasterEdges64's).
+bool rasterCoversEdges(RasterTriangle t, i64vec3 e, out float depth) {
     int64_t e0 = e.x, e1 = e.y, e2 = e.z;
     if (e0 + (ownsEdge(t.v1, t.v2) ? 1l : 0l) <= 0l || e1 + (ownsEdge(t.v2, t.v0) ? 1l : 0l) <= 0l ||
         e2 + (ownsEdge(t.v0, t.v1) ? 1l : 0l) <= 0l)
