@@ -43,7 +43,7 @@ shared uint s_first;
 
 // Whether a screen tile may hold pixels of the triangle: no edge has every pixel centre of the
 // tile outside it. Edges are linear, so an edge's largest value over the tile is at the corner
-// its gradient points to: one value an edge, the same integers rasterEdges64 gives there.
+// its gradient points to: one value an edge.
 bool tileTouches(bool clipped, uint index, uvec2 tile) {
     ivec2 lo = ivec2(tile) * ML_RASTER_TILE, hi = lo + (ML_RASTER_TILE - 1);
     if (clipped) {
@@ -60,11 +60,10 @@ bool tileTouches(bool clipped, uint index, uvec2 tile) {
     uvec4 r0 = largeTriangles[3u * index], r1 = largeTriangles[3u * index + 1u];
     ivec2 v[3] = ivec2[](ivec2(r0.xy), ivec2(r0.zw), ivec2(r1.xy));
     for (int k = 0; k < 3; ++k) {
-        // Edge a->b: a pixel's value grows with x where d.y < 0 and with y where d.x > 0.
-        ivec2 a = v[k], d = v[(k + 1) % 3] - a;
+        // Edge a->b: its value grows with x where d.y < 0 and with y where d.x > 0.
+        ivec2 a = v[k], b = v[(k + 1) % 3], d = b - a;
         ivec2 corner = ivec2(d.y < 0 ? hi.x : lo.x, d.x > 0 ? hi.y : lo.y);
-        ivec2 p = corner * ML_SUBPIXEL_ONE + ML_SUBPIXEL_HALF - a;
-        if (rasterWideProduct(d.x, p.y) - rasterWideProduct(d.y, p.x) < 0l) return false;
+        if (rasterEdge64(a, b, rasterPixelCentre(corner)) < 0l) return false;
     }
     return true;
 }

@@ -16,9 +16,7 @@
 #include "include/compute_raster.glsl"
 #include "include/compute_raster_coverage.glsl"
 
-#ifndef ML_RASTER_TILE_ROWS
-#define ML_RASTER_TILE_ROWS 4
-#endif
+#define ML_RASTER_TILE_ROWS 4  // 2 and 8 were slower on the H200 (docs/bench/nvidia-h200/tile-columns/)
 const int kRows = ML_RASTER_TILE_ROWS;
 
 layout(local_size_x = ML_RASTER_TILE, local_size_y = ML_RASTER_TILE / ML_RASTER_TILE_ROWS) in;

@@ -182,14 +182,20 @@ RasterTriangle rasterReversed(RasterTriangle t) {
 // time here: docs/bench/nvidia-h200/raster-tiles/).
 int64_t rasterWideProduct(int x, int y) { return int64_t(x) * int64_t(y); }
 
+// The value of the edge a->b at the sub-pixel position p (positive to its left: inside a
+// counter-clockwise triangle).
+int64_t rasterEdge64(ivec2 a, ivec2 b, ivec2 p) {
+    ivec2 d = b - a, pa = p - a;
+    return rasterWideProduct(d.x, pa.y) - rasterWideProduct(d.y, pa.x);
+}
+
+// A pixel centre's sub-pixel position.
+ivec2 rasterPixelCentre(ivec2 pixel) { return pixel * ML_SUBPIXEL_ONE + ML_SUBPIXEL_HALF; }
+
 i64vec3 rasterEdges64(RasterTriangle t, ivec2 pixel) {
-    ivec2 p = pixel * ML_SUBPIXEL_ONE + ML_SUBPIXEL_HALF;
-    ivec2 ab = t.v1 - t.v0, bc = t.v2 - t.v1, ca = t.v0 - t.v2;
-    ivec2 pa = p - t.v0, pb = p - t.v1, pc = p - t.v2;
-    int64_t e2 = rasterWideProduct(ab.x, pa.y) - rasterWideProduct(ab.y, pa.x);  // edge v0->v1, opposite v2
-    int64_t e0 = rasterWideProduct(bc.x, pb.y) - rasterWideProduct(bc.y, pb.x);  // edge v1->v2, opposite v0
-    int64_t e1 = rasterWideProduct(ca.x, pc.y) - rasterWideProduct(ca.y, pc.x);  // edge v2->v0, opposite v1
-    return i64vec3(e0, e1, e2);
+    ivec2 p = rasterPixelCentre(pixel);
+    // e0 is the edge opposite v0 (v1->v2), and so on.
+    return i64vec3(rasterEdge64(t.v1, t.v2, p), rasterEdge64(t.v2, t.v0, p), rasterEdge64(t.v0, t.v1, p));
 }
 
 // What rasterEdges64 adds when the pixel moves one row up: each edge's value is linear in the
