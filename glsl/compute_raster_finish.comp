@@ -23,6 +23,33 @@ layout(local_size_x = ML_RASTER_FINISH_ROW) in;  // a row strip: the store is ro
 layout(binding = ML_IMG_VISIBILITY_IDS, r32ui) uniform writeonly uimage2D u_ids;
 layout(binding = ML_IMG_RASTER_DEPTH, r32f) uniform writeonly image2D u_depth;
 
+#if ML_RASTER_VIEW_DEPTH_RANGE
+// Fitted slicing's range, as cluster_depth_range.comp's phase 0 would reduce it from the depth
+// written here (the same floats, the same function; positive floats order as their bits), so
+// that pass reads no depth: over the workgroup, then into the frame's two words.
+layout(std430, binding = ML_SSBO_RASTER_WORK) coherent buffer RasterWork { uint rasterWork[]; };
+shared uint s_nearest[ML_RASTER_FINISH_ROW], s_farthest[ML_RASTER_FINISH_ROW];
+
+void addViewDepthRange(uint nearest, uint farthest) {
+    uint lane = gl_LocalInvocationIndex;
+    s_nearest[lane] = nearest;
+    s_farthest[lane] = farthest;
+    for (uint stride = uint(ML_RASTER_FINISH_ROW) / 2u; stride > 0u; stride >>= 1) {
+        barrier();
+        if (lane < stride) {
+            s_nearest[lane] = min(s_nearest[lane], s_nearest[lane + stride]);
+            s_farthest[lane] = max(s_farthest[lane], s_farthest[lane + stride]);
+        }
+    }
+    if (lane != 0u) return;
+    // Most workgroups find the frame's words already past theirs: a read spares the atomic (a
+    // stale word is only further from the answer, so the test never skips one that is needed).
+    uint at = ML_RASTER_WORK_VIEW_DEPTH_RANGE;
+    if (s_nearest[0] < rasterWork[at]) atomicMin(rasterWork[at], s_nearest[0]);
+    if (s_farthest[0] > rasterWork[at + 1u]) atomicMax(rasterWork[at + 1u], s_farthest[0]);
+}
+#endif
+
 void main() {
     ivec2 pixels[kPixels];
     bool inside[kPixels];
@@ -56,4 +83,15 @@ void main() {
         imageStore(u_ids, pixels[k], uvec4(drawn ? triangles[k] + 1u : 0u));
         imageStore(u_depth, pixels[k], vec4(rasterKeyDepth(keys[k])));  // the background's key gives depth 0
     }
+#if ML_RASTER_VIEW_DEPTH_RANGE
+    uint nearest = ~0u, farthest = 0u;
+    for (int k = 0; k < kPixels; ++k) {
+        float depth = rasterKeyDepth(keys[k]);
+        if (!inside[k] || isBackgroundDepth(depth)) continue;
+        uint bits = floatBitsToUint(viewDepthFromWindowDepth(depth));
+        nearest = min(nearest, bits);
+        farthest = max(farthest, bits);
+    }
+    addViewDepthRange(nearest, farthest);
+#endif
 }

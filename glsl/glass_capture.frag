@@ -11,6 +11,7 @@ layout(early_fragment_tests) in;
 #include "include/shading.glsl"
 #include "include/material.glsl"
 #include "include/scene_fragment.glsl"
+#include "include/glass_window.glsl"
 
 layout(std430, binding = ML_SSBO_GLASS_PIXELS) buffer GlassPixels { uint glassPixels[]; };
 #if ML_GLASS_FILL
@@ -19,7 +20,7 @@ uniform uint u_capacity;  // fragments the buffer holds: a count that wrapped pa
 #endif
 
 void main() {
-    uint pixel = uint(gl_FragCoord.y) * uint(u_viewport.x) + uint(gl_FragCoord.x);
+    uint pixel = glassPixel(ivec2(gl_FragCoord.xy));
     uint at = atomicAdd(glassPixels[pixel], 1u);
 #if ML_GLASS_FILL
     if (at < u_capacity) glassFragments[at] = uvec2(floatBitsToUint(gl_FragCoord.z), v_firstTriangle + uint(gl_PrimitiveID));

@@ -41,6 +41,7 @@
 #include "include/sun_lights.glsl"
 #include "include/material.glsl"
 #include "include/triangle_surface.glsl"
+#include "include/glass_window.glsl"
 // Here, not only inside the #if below: each include is resolved once per shader, where it first appears.
 #include "include/light_sum.glsl"
 #if ML_GLASS_ALL_LIGHTS
@@ -86,17 +87,18 @@ uniform uint u_storesColors; // 1: more than one dispatch; colours go through th
 uniform uint u_deepFragments;  // kListTiles: a pixel of this many fragments makes its tile deep
 uniform uint u_maxParts;       // kListTiles: the most parts a deep tile is shaded in
 uniform uint u_deepBase;       // the deep tiles' words in glassWords (ML_GLASS_DEEP_*)
-uniform uint u_screenTiles;    // words of the tile list: the parts' follow it
+uniform uint u_windowTiles;    // the glass window's tiles (glass_window.glsl): words of the tile list; the parts' follow it
 shared uint s_mostFragments;
 #endif
 
 uvec2 fragmentAt(uint k) { return uvec2(glassWords[2u * k], glassWords[2u * k + 1u]); }
 // Where a pixel's fragments start: where the pixel before it ends, or for the first pixel of one
 // of the scan's blocks, the block's base (the blocks lie in any order in the fragment buffer).
+// `pixel`: its word in the window (glassPixel).
 uint glassBegin(uint pixel) {
     const uint kBlock = ML_SCAN_WORKGROUP * ML_SCAN_PER_INVOCATION;
     if (pixel % kBlock != 0u) return glassEnds[pixel - 1u];
-    return glassEnds[uint(u_viewport.x) * uint(u_viewport.y) + pixel / kBlock];
+    return glassEnds[glassWindowPixels() + pixel / kBlock];
 }
 
 void storeFragment(uint k, uvec2 f) {
@@ -171,13 +173,13 @@ bool listedTile(out ivec2 tile, out uint part, out uint parts) {
     parts = 1u;
 #if ML_GLASS_SPLIT == kShadeParts
     if (listed >= deepWord(ML_GLASS_DEEP_PART_COUNT)) return false;
-    uint entry = deepWord(ML_GLASS_DEEP_TILES + u_screenTiles + listed);
+    uint entry = deepWord(ML_GLASS_DEEP_TILES + u_windowTiles + listed);
     tileIndex = entry >> 8;
     part = (entry >> 4) & 15u;
     parts = (entry & 15u) + 1u;
 #elif ML_GLASS_SPLIT == kShadeShallowTiles
     if (listed >= deepWord(ML_GLASS_SHALLOW_COUNT)) return false;
-    tileIndex = u_screenTiles - 1u - listed;
+    tileIndex = u_windowTiles - 1u - listed;
 #else
     if (listed >= deepWord(ML_GLASS_DEEP_TILE_COUNT)) return false;
 #endif
@@ -204,7 +206,7 @@ uint mostFragments(uint fragments) {
 // kListTiles: lists a tile with glass but none deep, from the tile list's back.
 void listShallowTile(ivec2 tile) {
     uint listed = atomicAdd(glassWords[u_deepBase + ML_GLASS_SHALLOW_COUNT], 1u);
-    glassWords[u_deepBase + ML_GLASS_DEEP_TILES + u_screenTiles - 1u - listed] = uint(tile.x) | (uint(tile.y) << 16);
+    glassWords[u_deepBase + ML_GLASS_DEEP_TILES + u_windowTiles - 1u - listed] = uint(tile.x) | (uint(tile.y) << 16);
     growDispatch(ML_GLASS_SHALLOW_DISPATCH, listed);
 }
 
@@ -216,7 +218,7 @@ void listDeepTile(ivec2 tile, uint deepest) {
     uint parts = min(deepest, u_maxParts);
     uint first = atomicAdd(glassWords[u_deepBase + ML_GLASS_DEEP_PART_COUNT], parts);
     for (uint part = 0u; part < parts; ++part)
-        glassWords[u_deepBase + ML_GLASS_DEEP_TILES + u_screenTiles + first + part] = (listed << 8) | (part << 4) | (parts - 1u);
+        glassWords[u_deepBase + ML_GLASS_DEEP_TILES + u_windowTiles + first + part] = (listed << 8) | (part << 4) | (parts - 1u);
     growDispatch(ML_GLASS_DEEP_PARTS_DISPATCH, first + parts - 1u);
 }
 
@@ -245,14 +247,14 @@ void main() {
     if (!listedTile(tile, part, parts)) return;  // the whole workgroup: no barrier is left waiting
     ivec2 p = tile * ML_SCREEN_TILE + ivec2(gl_LocalInvocationID.xy);
 #else
-    ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+    ivec2 p = ivec2(u_glassWindow.xy + gl_GlobalInvocationID.xy);  // a workgroup per tile of the window
 #endif
     bool inside = all(lessThan(p, ivec2(u_viewport.xy)));
 #if ML_GLASS_LIST_ROUNDS
     // Every invocation takes part in every round (they hold barriers), with fragments or not.
     uint begin = 0u, end = 0u;
     if (inside) {
-        uint pixel = uint(p.y) * uint(u_viewport.x) + uint(p.x);
+        uint pixel = glassPixel(p);
         end = glassEnds[pixel];
         begin = glassBegin(pixel);
         if (begin != end && u_sorts != 0u) sortFragments(begin, end);
@@ -267,8 +269,9 @@ void main() {
 #elif ML_GLASS_SPLIT == kListTiles
     uint most = mostFragments(end - begin);
     if (gl_LocalInvocationIndex == 0u) {
-        if (most >= u_deepFragments) listDeepTile(ivec2(gl_WorkGroupID.xy), most);
-        else if (most != 0u) listShallowTile(ivec2(gl_WorkGroupID.xy));
+        ivec2 tile = ivec2(u_glassWindow.xy / uint(ML_SCREEN_TILE) + gl_WorkGroupID.xy);
+        if (most >= u_deepFragments) listDeepTile(tile, most);
+        else if (most != 0u) listShallowTile(tile);
     }
     return;
 #elif ML_GLASS_SPLIT == kShadeParts
@@ -301,7 +304,7 @@ void main() {
     imageStore(u_hdr, p, vec4(color, frame.a));
 #else
     if (!inside) return;
-    uint pixel = uint(p.y) * uint(u_viewport.x) + uint(p.x);
+    uint pixel = glassPixel(p);
     uint end = glassEnds[pixel];
     uint begin = glassBegin(pixel);
     if (begin == end) return;

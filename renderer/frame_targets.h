@@ -11,6 +11,7 @@
 
 #include <cstddef>
 
+#include "renderer/gl/buffer.h"
 #include "renderer/gl/framebuffer.h"
 #include "renderer/gl/texture.h"
 
@@ -22,6 +23,14 @@ struct TargetSampling {
     int supersample = 1;  // --supersample: the methods draw at K*W x K*H, box-filtered down
     bool resolves() const { return msaa > 1 || supersample > 1; }
     bool operator==(const TargetSampling&) const = default;
+};
+
+// Where a raster that wrote the opaque depth left the least and greatest view depth of its drawn
+// pixels (two words of `buffer` from word `word`, float bits), so that fitted slicing need not
+// read the depth again (ClusteredLighting; the compute raster's finish). None: no buffer.
+struct ViewDepthRange {
+    const gl::Buffer* buffer = nullptr;
+    unsigned word = 0;
 };
 
 class FrameTargets {
@@ -51,7 +60,12 @@ public:
     // method that rastered by compute (the visibility buffer's compute raster), its R32F depth.
     // FrameRenderer clears it before each method's frame.
     const gl::Texture2D& opaqueDepth() const { return computedDepth_ ? *computedDepth_ : depth_; }
-    void setComputedDepth(const gl::Texture2D* depth) { computedDepth_ = depth; }
+    // The opaque depth's view depth range where the raster that wrote it reduced it (cleared with it).
+    const ViewDepthRange& opaqueViewDepthRange() const { return opaqueRange_; }
+    void setComputedDepth(const gl::Texture2D* depth, ViewDepthRange range = {}) {
+        computedDepth_ = depth;
+        opaqueRange_ = range;
+    }
     const gl::Framebuffer& hdrFramebuffer() const { return hdrFbo_; }
     const gl::Framebuffer& hdrOnlyFramebuffer() const { return hdrOnlyFbo_; }
 
@@ -74,6 +88,7 @@ private:
     TargetSampling sampling_;
     gl::Texture2D hdr_, depth_, resolved_, ldr_;
     const gl::Texture2D* computedDepth_ = nullptr;
+    ViewDepthRange opaqueRange_;
     gl::Framebuffer hdrFbo_, ldrFbo_, hdrOnlyFbo_;
 };
 

@@ -49,7 +49,7 @@
 #define ML_RESOLVE_MAX_SLOTS 32        // slots a tile's mask holds (texture sets + untextured); more: full-screen dispatches
 // The transparent pass's captured fragments (renderer/passes/glass_fragments.h), on the exact
 // assignment's points: the capture and its shading run after the lists are built.
-#define ML_SSBO_GLASS_PIXELS 16        // per pixel: its fragment count, then (scanned, filled) where its fragments end
+#define ML_SSBO_GLASS_PIXELS 16        // per pixel of the glass's window (glass_window.glsl): its fragment count, then (scanned, filled) where its fragments end
 #define ML_SSBO_GLASS_FRAGMENTS 17     // per fragment: depth bits, triangle id; then, where colours are stored, its colour; then the deep tiles
 // The glass shading's deep tiles (glsl/glass_shade.comp): words of the fragment buffer after the
 // colours, as llvmpipe offers a compute shader no block to spare.
@@ -59,9 +59,9 @@
 #define ML_GLASS_DEEP_PART_COUNT 7      // parts listed
 #define ML_GLASS_SHALLOW_DISPATCH 8     // the other tiles with glass: their shading's dispatch (words 8-10)
 #define ML_GLASS_SHALLOW_COUNT 11       // and how many are listed
-#define ML_GLASS_DEEP_TILES 12          // then a word per screen tile: the tiles, x | y << 16, the deep ones from the
+#define ML_GLASS_DEEP_TILES 12          // then a word per tile of the window: the tiles, x | y << 16, the deep ones from the
                                         // front, the shallow ones from the back; then the parts, as many words per
-                                        // screen tile as a tile's most parts: tile index << 8 | part << 4 | parts - 1
+                                        // tile of the window as a tile's most parts: tile index << 8 | part << 4 | parts - 1
 #define ML_GLASS_DEEP_MAX_PARTS 16      // the most parts a tile may take (4 bits of its part words)
 #define ML_GLASS_DEEP_ROW 65535         // tiles per dispatch row: GL's least maximum work-group count
 // The visibility buffer's compute raster (renderer/passes/compute_raster.h), before anything else
@@ -82,7 +82,9 @@
 #define ML_RASTER_WORK_ALPHA_TILE_DISPATCH 16  // (words 16-18)
 #define ML_RASTER_WORK_ALPHA_LARGE_COUNT 19
 #define ML_RASTER_WORK_ALPHA_PAIR_COUNT 20
-#define ML_RASTER_WORK_WORDS 21                // then a DrawArraysIndirectCommand per alpha-tested span
+#define ML_RASTER_WORK_VIEW_DEPTH_RANGE 21     // the drawn pixels' least and greatest view depth, as bits (words 21-22;
+                                               // the finish's, for fitted slicing: cluster_depth_range.comp)
+#define ML_RASTER_WORK_WORDS 23                // then a DrawArraysIndirectCommand per alpha-tested span
 #define ML_RASTER_CLIPPED_PAIR 0x80000000u  // a pair's triangle is in the clipped list
 #define ML_RASTER_WORKGROUP 64       // triangles per workgroup of the setup pass
 #define ML_RASTER_TILE 16            // the tile pass's screen tile edge: a pixel per invocation

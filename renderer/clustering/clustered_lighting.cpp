@@ -181,10 +181,18 @@ void ClusteredLighting::build(const FrameContext& ctx, const GBuffer* gbuffer) {
     if (settings_.grid.slicing == Slicing::Fitted) {
         auto pass = ctx.timer.pass("cluster.depth-range");
         depthRange_.use();
-        depthRange_.set("u_phase", 0u);
-        glDispatchCompute(gl::groupsFor(ctx.targets.width(), ML_SCREEN_TILE * ML_DEPTH_RANGE_BLOCK),
-                          gl::groupsFor(ctx.targets.height(), ML_SCREEN_TILE * ML_DEPTH_RANGE_BLOCK), 1);
-        glMemoryBarrier(kComputeToCompute);
+        const ViewDepthRange& reduced = ctx.targets.opaqueViewDepthRange();
+        if (reduced.buffer) {
+            // The raster reduced its depth as it wrote it: phase 1 takes its words.
+            reduced.buffer->bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_RASTER_WORK);
+            depthRange_.set("u_rasterRangeWord", reduced.word);
+        } else {
+            depthRange_.set("u_rasterRangeWord", ~0u);
+            depthRange_.set("u_phase", 0u);
+            glDispatchCompute(gl::groupsFor(ctx.targets.width(), ML_SCREEN_TILE * ML_DEPTH_RANGE_BLOCK),
+                              gl::groupsFor(ctx.targets.height(), ML_SCREEN_TILE * ML_DEPTH_RANGE_BLOCK), 1);
+            glMemoryBarrier(kComputeToCompute);
+        }
         depthRange_.set("u_phase", 1u);
         glDispatchCompute(1, 1, 1);
         glMemoryBarrier(kComputeToCompute);

@@ -67,6 +67,7 @@ void Program::set(const char* name, const glm::vec3& v) const { glProgramUniform
 void Program::set(const char* name, const glm::vec4& v) const { glProgramUniform4fv(id(), location(name), 1, glm::value_ptr(v)); }
 void Program::set(const char* name, const glm::uvec2& v) const { glProgramUniform2uiv(id(), location(name), 1, glm::value_ptr(v)); }
 void Program::set(const char* name, const glm::uvec3& v) const { glProgramUniform3uiv(id(), location(name), 1, glm::value_ptr(v)); }
+void Program::set(const char* name, const glm::uvec4& v) const { glProgramUniform4uiv(id(), location(name), 1, glm::value_ptr(v)); }
 void Program::set(const char* name, const glm::mat4& v) const {
     glProgramUniformMatrix4fv(id(), location(name), 1, GL_FALSE, glm::value_ptr(v));
 }

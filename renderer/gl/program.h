@@ -43,6 +43,7 @@ public:
     void set(const char* name, const glm::vec4& v) const;
     void set(const char* name, const glm::uvec2& v) const;
     void set(const char* name, const glm::uvec3& v) const;
+    void set(const char* name, const glm::uvec4& v) const;
     void set(const char* name, const glm::mat4& v) const;
 
 private:

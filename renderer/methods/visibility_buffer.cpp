@@ -27,7 +27,8 @@ VisibilityBuffer::VisibilityBuffer(const ClusteringSettings& settings, GBufferFo
       clustering_(settings, materialFeatures, gbuffer_.defines()),
       transparent_(TransparentPass::overClusterLists("visibility.transparent", materialFeatures, settings, transparency)) {
     if (raster_ != VisibilityRaster::Hardware)
-        computeRaster_ = std::make_unique<ComputeRaster>(materialFeatures, raster_ == VisibilityRaster::Compute);
+        computeRaster_ = std::make_unique<ComputeRaster>(materialFeatures, raster_ == VisibilityRaster::Compute,
+                                                         settings.grid.slicing == Slicing::Fitted);
 }
 
 void VisibilityBuffer::prepareTargets(const FrameTargets& frame) {

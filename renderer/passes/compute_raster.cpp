@@ -103,8 +103,8 @@ VisibilityRaster ComputeRaster::resolve(VisibilityRaster choice) {
     return VisibilityRaster::Hardware;
 }
 
-ComputeRaster::ComputeRaster(std::uint32_t materialFeatures, bool packedAtomics)
-    : packed_(packedAtomics), passes_(packedAtomics ? 1 : 2), clipsToViewport_(clipsToViewport()) {
+ComputeRaster::ComputeRaster(std::uint32_t materialFeatures, bool packedAtomics, bool reducesViewDepth)
+    : packed_(packedAtomics), reducesViewDepth_(reducesViewDepth), passes_(packedAtomics ? 1 : 2), clipsToViewport_(clipsToViewport()) {
     for (int pass = 0; pass < passes_; ++pass) {
         const shaders::Defines defines = rasterDefines(packed_, pass);
         const std::string suffix = passes_ == 1 ? "" : (pass == 0 ? ".depth" : ".ids");
@@ -129,8 +129,9 @@ ComputeRaster::ComputeRaster(std::uint32_t materialFeatures, bool packedAtomics)
     bin_ = gl::Program::compute("compute_raster_bin.comp", rasterDefines(packed_, 0));
     if (materialFeatures & ML_FEATURE_ALPHA_TEST)
         alphaBin_ = gl::Program::compute("compute_raster_bin.comp", shaders::withDefine(rasterDefines(packed_, 0), "ML_RASTER_ALPHA_TEST", "1"));
+    shaders::Defines finish = shaders::withDefine(rasterDefines(packed_, 0), "ML_RASTER_FINISH_PIXELS", std::to_string(kFinishPixels));
     finish_ = gl::Program::compute("compute_raster_finish.comp",
-                                   shaders::withDefine(rasterDefines(packed_, 0), "ML_RASTER_FINISH_PIXELS", std::to_string(kFinishPixels)));
+                                   shaders::withDefine(finish, "ML_RASTER_VIEW_DEPTH_RANGE", reducesViewDepth_ ? "1" : "0"));
     if (materialFeatures & ML_FEATURE_BLEND)
         depthCopy_ = gl::Program("visibility.compute-raster.depth-copy",
                                  {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "compute_raster_depth.frag"}});
@@ -166,8 +167,8 @@ void ComputeRaster::prepare(const FrameContext& ctx) {
     }
     // The counters, then each alpha-tested span's draw of its hardware list, which starts at the
     // span's first triangle (the opaque list fills at most the opaque triangles' entries).
-    std::vector<GLuint> initial = {0, 1, 0, 0, 0, 1, 1, 0, 1, 1, 0, 0, 0, 0, 1, 1, 0, 1, 1, 0, 0};
-    static_assert(ML_RASTER_WORK_WORDS == 21);
+    std::vector<GLuint> initial = {0, 1, 0, 0, 0, 1, 1, 0, 1, 1, 0, 0, 0, 0, 1, 1, 0, 1, 1, 0, 0, ~0u, 0};
+    static_assert(ML_RASTER_WORK_WORDS == 23 && ML_RASTER_WORK_VIEW_DEPTH_RANGE == 21);
     for (const SceneGpu::TriangleSpan& span : ctx.scene.alphaTestedSpans()) initial.insert(initial.end(), {0, 1, 3 * span.first, 0});
     if (initial.size() != workWords_ || !work_) {
         workWords_ = initial.size();
@@ -187,7 +188,7 @@ void ComputeRaster::run(const FrameContext& ctx, const gl::Texture2D& ids) {
     clipped_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_RASTER_CLIPPED);
     for (int pass = 0; pass < passes_; ++pass) rasterPass(ctx, pass);
     finish(ctx, ids);
-    ctx.targets.setComputedDepth(&depth_);
+    ctx.targets.setComputedDepth(&depth_, reducesViewDepth_ ? ViewDepthRange{&work_, ML_RASTER_WORK_VIEW_DEPTH_RANGE} : ViewDepthRange{});
     if (ctx.scene.hasTransparent()) {
         auto timed = ctx.timer.pass("visibility.raster-glass-depth");
         copyDepthUnderGlass(ctx);

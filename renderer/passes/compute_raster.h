@@ -10,7 +10,8 @@
 //   alpha-tested ranges, a setup per texture set ──small──> rastered there, each pixel alpha-tested
 //        │                                        ──large──> their own binning and tile pass (per set)
 //        └─ across the eye plane or past the guard band ──> the hardware, per set, into the same store
-//   finish: the store ──> the id target (index + 1) and an R32F depth, the store reset
+//   finish: the store ──> the id target (index + 1) and an R32F depth, the store reset; for fitted
+//           slicing, the least and greatest view depth drawn (cluster.depth-range then reduces nothing)
 //
 // Which pixels a triangle covers and at what depth follows the hardware's rules (snapped
 // vertices, the fill rule, the depth plane; glsl/include/compute_raster.glsl), so the ids equal
@@ -49,11 +50,13 @@ public:
     // std::invalid_argument naming the flag where this GPU cannot run the compute raster.
     static VisibilityRaster resolve(VisibilityRaster choice);
 
-    ComputeRaster(std::uint32_t materialFeatures, bool packedAtomics);
+    // reducesViewDepth: the finish also leaves the drawn pixels' view depth range (fitted slicing).
+    ComputeRaster(std::uint32_t materialFeatures, bool packedAtomics, bool reducesViewDepth);
 
     // Rasters the scene's opaque and alpha-tested ranges into `ids` (triangle index + 1, 0 where
     // nothing is) and depth(); where the scene has glass, copies the depth into the frame's depth
-    // buffer under it. Sets ctx.targets' opaque depth to depth().
+    // buffer under it. Sets ctx.targets' opaque depth to depth(), and with reducesViewDepth its
+    // view depth range.
     void run(const FrameContext& ctx, const gl::Texture2D& ids);
     const gl::Texture2D& depth() const { return depth_; }
     // Whether triangles that cross the viewport's sides or the eye plane go to the hardware (set
@@ -87,6 +90,7 @@ private:
     void copyDepthUnderGlass(const FrameContext& ctx);
 
     bool packed_;
+    bool reducesViewDepth_;
     int passes_;
     bool clipsToViewport_;
     gl::Program setup_[2], tiles_[2], bin_, finish_, depthCopy_;

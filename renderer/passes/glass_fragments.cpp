@@ -16,6 +16,17 @@ RasterProgram captureProgram(const char* label, std::uint32_t materialFeatures, 
     return transparentRangesProgram(label, "glass_capture.frag", materialFeatures, {{"ML_GLASS_FILL", fill ? "1" : "0"}});
 }
 
+// The whole screen tiles around the transparent ranges' projected bounds; one tile where none is
+// on screen (its rasters then keep nothing).
+glm::uvec4 windowAround(const FrameContext& ctx) {
+    constexpr int kTile = ML_SCREEN_TILE;
+    const auto rect = ctx.scene.transparentScreenRect(ctx.uniforms.viewProj, ctx.targets.width(), ctx.targets.height());
+    if (!rect) return {0, 0, kTile, kTile};
+    const glm::ivec2 first = glm::ivec2(rect->x, rect->y) / kTile * kTile;
+    const glm::ivec2 end = (glm::ivec2(rect->x + rect->z, rect->y + rect->w) + (kTile - 1)) / kTile * kTile;
+    return glm::uvec4(glm::uvec2(first), glm::uvec2(end - first));
+}
+
 // Bytes in the unit that reads best: MiB from one MiB up, KiB below.
 std::string byteSize(std::uint64_t bytes) {
     if (bytes >= (1u << 20)) return std::to_string((bytes + (1u << 20) - 1) >> 20) + " MiB";
@@ -40,7 +51,8 @@ GlassFragments::GlassFragments(std::string timerName, std::uint32_t materialFeat
 void GlassFragments::count(const FrameContext& ctx, GlassColors colors, std::uint32_t deepPartsPerTile) {
     colors_ = colors;
     deepPartsPerTile_ = deepPartsPerTile;
-    pixelCount_ = std::uint32_t(ctx.targets.width()) * std::uint32_t(ctx.targets.height());
+    window_ = windowAround(ctx);
+    pixelCount_ = window_.z * window_.w;
     // Padded to whole groups of four counts, which the clear writes as one uvec4; the scan's
     // block bases after the counts.
     pixels_.ensure(std::max((std::size_t(pixelCount_) + 3) / 4 * 16, (std::size_t(pixelCount_) + PrefixSum::blocksOf(pixelCount_)) * 4));
@@ -55,6 +67,7 @@ void GlassFragments::count(const FrameContext& ctx, GlassColors colors, std::uin
     }
     {
         auto pass = ctx.timer.pass(timerName_ + "-count");
+        count_.variant(false).set("u_glassWindow", window_);
         rasterGlass(ctx, count_);
     }
     {
@@ -84,7 +97,7 @@ void GlassFragments::fill(const FrameContext& ctx) {
     // list (a word per screen tile and its header) after them.
     const std::size_t fragmentBytes = (std::size_t(total) * kBytesPerFragment + 15) / 16 * 16;
     const std::size_t colorBytes = std::size_t(total) * kColorBytesPerFragment;
-    const std::size_t tiles = std::size_t(gl::groupsFor(ctx.targets.width(), ML_SCREEN_TILE)) * gl::groupsFor(ctx.targets.height(), ML_SCREEN_TILE);
+    const std::size_t tiles = std::size_t(windowTiles().x) * windowTiles().y;
     const std::size_t deepTileBytes = (ML_GLASS_DEEP_TILES + tiles * (1 + std::size_t(deepPartsPerTile_))) * 4;
     colorWordOffset_ = static_cast<std::uint32_t>(fragmentBytes / 4);
     deepTileWordOffset_ = 0;
@@ -100,15 +113,20 @@ void GlassFragments::fill(const FrameContext& ctx) {
     fragmentStore_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_GLASS_FRAGMENTS);
     fill_.variant(false).use();
     fill_.variant(false).set("u_capacity", total);
+    fill_.variant(false).set("u_glassWindow", window_);
     rasterGlass(ctx, fill_);
 }
 
 void GlassFragments::rasterGlass(const FrameContext& ctx, const RasterProgram& program) const {
-    // Tested against the opaque depth, writing neither colour nor depth; the masks are restored
-    // before anything can throw, so a refused frame leaves the next one a clean state.
+    // Tested against the opaque depth, writing neither colour nor depth, inside the window; the
+    // masks are restored before anything can throw, so a refused frame leaves the next one a
+    // clean state.
     beginTransparentRaster(ctx.targets);
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(GLint(window_.x), GLint(window_.y), GLsizei(window_.z), GLsizei(window_.w));
     ctx.scene.drawTransparent(program, glm::vec3(ctx.uniforms.cameraPos));
+    glDisable(GL_SCISSOR_TEST);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glDepthMask(GL_TRUE);
     glMemoryBarrier(kComputeToCompute);

@@ -2,6 +2,11 @@
 // the opaque depth, kept per pixel for a compute pass to sort, shade and blend
 // (glsl/glass_shade.comp). Sized by what the frame needs, as the exact light lists are:
 //
+// The pixels are those of the frame's window (glsl/include/glass_window.glsl): the whole screen
+// tiles around the transparent ranges' projected bounds, to which both rasters are scissored, so
+// the clear, the scan and the shading's tiles cover the glass and not the screen (the atrium's
+// panes take 4-10 % of it).
+//
 //   count():  [-clear]  pixels[p] = 0                                (compute)
 //             [-count]  raster, no colour, no depth write, early depth test:
 //                       pixels[p] = fragments at p
@@ -19,7 +24,7 @@
 // nothing reads across pixels, and a scan in order waited on a chain of its 900 blocks at
 // 2560x1440.
 //
-// Memory: 4 B per pixel (14.1 MiB at 2560x1440, 31.6 MiB at 3840x2160) and 8 B per fragment
+// Memory: 4 B per pixel of the window (at most 14.1 MiB at 2560x1440, 31.6 MiB at 3840x2160) and 8 B per fragment
 // (the depth, to sort by, and the triangle, to rebuild the surface from); where the glass spans
 // more than one texture set, 16 B more per fragment for its shaded colour (the shading runs
 // once per set, the blend after the last); where the shading splits deep tiles
@@ -32,6 +37,9 @@
 #include <cstdint>
 #include <string>
 
+#include <glm/glm.hpp>
+
+#include "glsl/include/bindings.h"
 #include "renderer/clustering/prefix_sum.h"
 #include "renderer/frame_context.h"
 #include "renderer/gl/buffer.h"
@@ -70,6 +78,10 @@ public:
     bool counted() const { return total_.fenced(); }
     // Binds the pixels and the fragments (with colours after them) at their ML_SSBO_GLASS_* points.
     void bindForShading() const;
+    // The frame's window (glsl/include/glass_window.glsl's u_glassWindow): its first pixel, a
+    // multiple of ML_SCREEN_TILE, and its size, whole tiles; and its size in tiles.
+    const glm::uvec4& window() const { return window_; }
+    glm::uvec2 windowTiles() const { return glm::uvec2(window_.z, window_.w) / std::uint32_t(ML_SCREEN_TILE); }
     // Where the colours start in the fragment buffer, in 4-byte words (after the last fragment).
     std::uint32_t colorWordOffset() const { return colorWordOffset_; }
     // After fill() with GlassColors::WhereRoom: whether the colours and the deep tiles' list fit,
@@ -91,7 +103,8 @@ private:
     gl::Program clear_;  // the counts to zero (glsl/glass_clear_counts.comp)
     PrefixSum scan_{ScanOrder::BlockBases};
     gl::MappedWords total_;  // the scan's total, fenced after count()'s scan until fill() reads it
-    std::uint32_t pixelCount_ = 0;
+    glm::uvec4 window_{0, 0, ML_SCREEN_TILE, ML_SCREEN_TILE};
+    std::uint32_t pixelCount_ = 0;  // the window's
     GlassColors colors_ = GlassColors::None;
     std::uint32_t deepPartsPerTile_ = 0;
     std::size_t budget_ = 0;

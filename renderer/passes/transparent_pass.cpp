@@ -11,13 +11,6 @@
 
 namespace ml {
 
-namespace {
-// The shading's workgroups: one per screen tile.
-glm::uvec2 screenTiles(const FrameContext& ctx) {
-    return {gl::groupsFor(ctx.targets.width(), ML_SCREEN_TILE), gl::groupsFor(ctx.targets.height(), ML_SCREEN_TILE)};
-}
-}  // namespace
-
 TransparentPass::TransparentPass(std::string timerName, std::uint32_t materialFeatures, const TransparencySettings& transparency,
                                  const char* forwardShader, const shaders::Defines& defines, bool listRounds)
     : timerName_(std::move(timerName)) {
@@ -103,12 +96,13 @@ void TransparentPass::renderCaptured(const FrameContext& ctx, const ClusteredLig
         shade_.use();
         shade_.set("u_colorBase", capture_->colorWordOffset());
         shade_.set("u_storesColors", storesColors ? 1u : 0u);
+        shade_.set("u_glassWindow", capture_->window());
         for (std::size_t i = 0; i < sets.size(); ++i) {
             ctx.scene.bindTextureSet(sets[i]);
             shade_.set("u_textureSet", sets[i]);
             shade_.set("u_sorts", i == 0 ? 1u : 0u);
             shade_.set("u_blends", i + 1 == sets.size() ? 1u : 0u);
-            glDispatchCompute(screenTiles(ctx).x, screenTiles(ctx).y, 1);
+            glDispatchCompute(capture_->windowTiles().x, capture_->windowTiles().y, 1);
             glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
         }
     }
@@ -140,17 +134,18 @@ void TransparentPass::shadeSplittingDeepTiles(const FrameContext& ctx, int textu
         program.set("u_colorBase", capture_->colorWordOffset());
         program.set("u_textureSet", textureSet);
         program.set("u_deepBase", base);
-        program.set("u_screenTiles", screenTiles(ctx).x * screenTiles(ctx).y);
+        program.set("u_glassWindow", capture_->window());
+        program.set("u_windowTiles", capture_->windowTiles().x * capture_->windowTiles().y);
         program.set("u_sorts", 0u);
         program.set("u_blends", 0u);
         program.set("u_storesColors", 0u);
     }
-    // Sorts every tile's pixels, lists the deep tiles and their parts, and the other tiles with glass.
+    // Sorts every window tile's pixels, lists the deep tiles and their parts, and the other tiles with glass.
     splitPrograms_[kList].use();
     splitPrograms_[kList].set("u_deepFragments", kDeepFragments);
     splitPrograms_[kList].set("u_maxParts", layerGroups_);
     splitPrograms_[kList].set("u_sorts", 1u);
-    glDispatchCompute(screenTiles(ctx).x, screenTiles(ctx).y, 1);
+    glDispatchCompute(capture_->windowTiles().x, capture_->windowTiles().y, 1);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, store.id());
     // Every listed part, its colours stored; beside it (no barrier: other tiles, other words)

@@ -294,6 +294,48 @@ TEST_F(GlassCapture, ListedTilesPastOneDispatchRowAreAllShaded) {
     }
 }
 
+// The capture keeps pixels for a window of whole screen tiles around the glass's projected
+// bounds, its rasters scissored to it: a window too small would drop fragments in every method
+// alike, naive included, so the methods' agreement cannot see it. Here one pane alone captures a
+// fragment for every pixel the same pane covers when opaque: on screen at an odd size and odd
+// places, half off two edges, and as a floor through the camera's plane (its box behind the
+// eye: the whole screen).
+TEST_F(GlassCapture, TheWindowHoldsEveryFragment) {
+    constexpr int kOddWide = 157, kOddTall = 93;
+    struct Case {
+        const char* name;
+        std::array<glm::vec3, 4> corners;
+        CameraPose pose;
+    };
+    const Case cases[] = {
+        {"on screen", {{{-0.93f, -0.41f, 0.1f}, {0.77f, -0.57f, -0.2f}, {0.61f, 0.83f, 0.05f}, {-0.71f, 0.67f, 0.3f}}}, kFrontView},
+        {"half off two edges", {{{-4.1f, -0.3f, 0}, {-1.3f, -0.3f, 0}, {-1.3f, 3.7f, 0}, {-4.1f, 3.7f, 0}}}, kFrontView},
+        {"through the camera's plane", {{{-6, -1, 8}, {6, -1, 8}, {6, -1, -8}, {-6, -1, -8}}}, {{0.0f, 0.0f, 0.0f}, {0.0f, -0.2f, -1.0f}, 60.0f}},
+    };
+    for (const Case& c : cases) {
+        const auto pane = [&](const char* alphaMode) {
+            Gltf g;
+            return writeAndLoad(g, {quad(g, c.corners, paneMaterial(g, {0.5f, 0.6f, 0.7f, 0.5f}, alphaMode))},
+                                std::string("window_pane_") + alphaMode + "_" + std::to_string(&c - cases));
+        };
+        const Scene glass = pane("BLEND"), opaque = pane("OPAQUE");
+        for (MethodKind kind : {MethodKind::Naive, MethodKind::Visibility}) {
+            FrameSettings s = test::smallFrame(glass, c.pose, kOddWide, kOddTall);
+            s.method.kind = kind;
+            FrameRenderer renderer(glass, kFrontAndBackLights, s);
+            renderer.render(0);
+            ASSERT_NE(renderer.method().transparentCapture(), nullptr);
+            const std::uint64_t fragments = renderer.method().transparentCapture()->fragmentCount();
+            const FloatImage solid = render(opaque, kFrontAndBackLights, s);
+            std::uint64_t covered = 0;
+            for (int y = 0; y < kOddTall; ++y)
+                for (int x = 0; x < kOddWide; ++x) covered += pixel(solid, x, y) != glm::vec3(0.0f);
+            EXPECT_GT(covered, 200u) << c.name;
+            EXPECT_EQ(fragments, covered) << c.name << ", " << methodName(kind) << ": fragments captured, pixels the opaque pane covers";
+        }
+    }
+}
+
 // The fragments are sized by what the frame needs; a frame whose need passes the budget (the
 // GPU's storage-buffer limit, lowered here) is refused in one line that names the numbers.
 TEST_F(GlassCapture, AFrameWhoseFragmentsDoNotFitIsRefusedInOneLine) {
