@@ -19,7 +19,15 @@ layout(std430, binding = ML_SSBO_GLASS_FRAGMENTS) writeonly buffer GlassFragment
 uniform uint u_capacity;  // fragments the buffer holds: a count that wrapped past 2^32 writes none out of it
 #endif
 
+// Where the opaque depth was computed (the visibility buffer's compute raster: an R32F texture,
+// none of it in the depth buffer), the capture makes the depth test itself, GL_GREATER against
+// the same float as the hardware's test of a copy would (include/window_depth.glsl), and the
+// raster runs without one.
+uniform uint u_testsComputedDepth;
+layout(binding = ML_TEX_DEPTH) uniform sampler2D u_computedDepth;
+
 void main() {
+    if (u_testsComputedDepth != 0u && !(gl_FragCoord.z > texelFetch(u_computedDepth, ivec2(gl_FragCoord.xy), 0).r)) return;
     uint pixel = glassPixel(ivec2(gl_FragCoord.xy));
     uint at = atomicAdd(glassPixels[pixel], 1u);
 #if ML_GLASS_FILL

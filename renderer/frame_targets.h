@@ -60,6 +60,9 @@ public:
     // method that rastered by compute (the visibility buffer's compute raster), its R32F depth.
     // FrameRenderer clears it before each method's frame.
     const gl::Texture2D& opaqueDepth() const { return computedDepth_ ? *computedDepth_ : depth_; }
+    // Whether opaqueDepth() is a computed depth, not depth() (which then holds no opaque surface,
+    // but where a raster copied some for passes that test in hardware: ComputeRaster::Extras).
+    bool hasComputedDepth() const { return computedDepth_ != nullptr; }
     // The opaque depth's view depth range where the raster that wrote it reduced it (cleared with it).
     const ViewDepthRange& opaqueViewDepthRange() const { return opaqueRange_; }
     void setComputedDepth(const gl::Texture2D* depth, ViewDepthRange range = {}) {

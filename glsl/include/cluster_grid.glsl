@@ -33,21 +33,24 @@ uint clusterForFragment(vec2 fragCoord, float viewDepth) {
     return clusterIndex(uvec3(tileForPixel(fragCoord), sliceForDepth(viewDepth)));
 }
 
-// Depth of the boundary below slice k.
-float sliceBoundary(uint k) {
+// Depth of the boundary below slice k of the depth range `sliced` (grid.slicing.xy).
+float sliceBoundary(uint k, vec2 sliced) {
     float t = float(k) / float(grid.dims.z);
-    float n = grid.slicing.x, f = grid.slicing.y;
+    float n = sliced.x, f = sliced.y;
     return grid.tile.y > 0.5 ? n * pow(f / n, t) : n + (f - n) * t;
 }
 
 // The view depths a cluster's volume spans: the first and last slice reach the camera's near
 // and far planes, and both ends are widened by a relative epsilon so a fragment's slice lookup
 // can never land outside the volume its lights were tested against (mirrors ml::clusterFrustum).
-vec2 clusterDepthExtent(uint slice) {
-    float z0 = slice == 0u ? min(grid.tile.z, grid.slicing.x) : sliceBoundary(slice);
-    float z1 = slice + 1u == grid.dims.z ? max(grid.tile.w, grid.slicing.y) : sliceBoundary(slice + 1u);
+// `sliced`: the depth range sliced, grid.slicing.xy (cluster_bounds.comp passes the range it
+// slices itself before the grid holds it).
+vec2 clusterDepthExtent(uint slice, vec2 sliced) {
+    float z0 = slice == 0u ? min(grid.tile.z, sliced.x) : sliceBoundary(slice, sliced);
+    float z1 = slice + 1u == grid.dims.z ? max(grid.tile.w, sliced.y) : sliceBoundary(slice + 1u, sliced);
     return vec2(z0 * (1.0 - 1e-4), z1 * (1.0 + 1e-4));
 }
+vec2 clusterDepthExtent(uint slice) { return clusterDepthExtent(slice, grid.slicing.xy); }
 
 // The tile's rectangle in NDC: xy the lower-left corner, zw the upper-right (clamped to the
 // screen; needs frame_uniforms).

@@ -178,24 +178,28 @@ void ClusteredLighting::build(const FrameContext& ctx, const GBuffer* gbuffer) {
     const GLuint screenX = gl::groupsFor(ctx.targets.width(), ML_SCREEN_TILE);
     const GLuint screenY = gl::groupsFor(ctx.targets.height(), ML_SCREEN_TILE);
 
-    if (settings_.grid.slicing == Slicing::Fitted) {
+    // Fitted slicing's range: reduced from the depth here, or by the raster as it wrote the depth
+    // (its words then joined with the grid's by the pass that slices the range).
+    const bool fitted = settings_.grid.slicing == Slicing::Fitted;
+    const ViewDepthRange& reduced = ctx.targets.opaqueViewDepthRange();
+    const GLuint rasterRangeWord = fitted && reduced.buffer ? reduced.word : ~0u;
+    if (reduced.buffer) reduced.buffer->bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_RASTER_WORK);
+    if (fitted && (!reduced.buffer || zbin_)) {
         auto pass = ctx.timer.pass("cluster.depth-range");
         depthRange_.use();
-        const ViewDepthRange& reduced = ctx.targets.opaqueViewDepthRange();
-        if (reduced.buffer) {
-            // The raster reduced its depth as it wrote it: phase 1 takes its words.
-            reduced.buffer->bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_RASTER_WORK);
-            depthRange_.set("u_rasterRangeWord", reduced.word);
-        } else {
-            depthRange_.set("u_rasterRangeWord", ~0u);
+        if (!reduced.buffer) {
             depthRange_.set("u_phase", 0u);
             glDispatchCompute(gl::groupsFor(ctx.targets.width(), ML_SCREEN_TILE * ML_DEPTH_RANGE_BLOCK),
                               gl::groupsFor(ctx.targets.height(), ML_SCREEN_TILE * ML_DEPTH_RANGE_BLOCK), 1);
             glMemoryBarrier(kComputeToCompute);
         }
-        depthRange_.set("u_phase", 1u);
-        glDispatchCompute(1, 1, 1);
-        glMemoryBarrier(kComputeToCompute);
+        // Z-binning has no bounds pass to slice the range: one invocation does.
+        if (zbin_) {
+            depthRange_.set("u_rasterRangeWord", rasterRangeWord);
+            depthRange_.set("u_phase", 1u);
+            glDispatchCompute(1, 1, 1);
+            glMemoryBarrier(kComputeToCompute);
+        }
     }
     if (zbin_) {
         // Z-binning needs only the slicing (for its bins) and the tiles; --active-only does not apply.
@@ -207,6 +211,8 @@ void ClusteredLighting::build(const FrameContext& ctx, const GBuffer* gbuffer) {
     {
         auto pass = ctx.timer.pass("cluster.bounds");
         bounds_.use();
+        bounds_.set("u_fitsSlicing", fitted ? 1u : 0u);
+        bounds_.set("u_rasterRangeWord", rasterRangeWord);
         aabbs_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_CLUSTER_AABBS);
         glDispatchCompute(gl::groupsFor(clusters, ML_CLUSTER_WORKGROUP), 1, 1);
         glMemoryBarrier(kComputeToCompute);

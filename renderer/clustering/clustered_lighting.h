@@ -1,9 +1,10 @@
 // Builds this frame's per-cluster light lists on the GPU and binds them for shading; shared by
 // Forward+ and clustered deferred, which differ only in how they shade.
 //
-//   depth ─> [cluster.depth-range]  fitted slicing only: min/max visible depth ─> grid.slicing
-//                                   (held open to the transparent ranges' depth extent)
-//         ─> [cluster.bounds]       view-space AABB per cluster
+//   depth ─> [cluster.depth-range]  fitted slicing only: min/max visible depth (held open to the
+//                                   transparent ranges' depth extent; none where the raster reduced
+//                                   its depth: FrameTargets::opaqueViewDepthRange)
+//         ─> [cluster.bounds]       fitted slicing: the range sliced ─> grid.slicing; view-space AABB per cluster
 //         ─> [cluster.active]       --active-only: flag clusters holding a visible sample
 //         ─> [cluster.normal-bins]  --normal-cones: per cluster, the normal bins its visible samples occupy
 //         ─> [cluster.transparent-samples]  with transparent surfaces and --active-only or

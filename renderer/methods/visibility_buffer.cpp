@@ -27,8 +27,10 @@ VisibilityBuffer::VisibilityBuffer(const ClusteringSettings& settings, GBufferFo
       clustering_(settings, materialFeatures, gbuffer_.defines()),
       transparent_(TransparentPass::overClusterLists("visibility.transparent", materialFeatures, settings, transparency)) {
     if (raster_ != VisibilityRaster::Hardware)
-        computeRaster_ = std::make_unique<ComputeRaster>(materialFeatures, raster_ == VisibilityRaster::Compute,
-                                                         settings.grid.slicing == Slicing::Fitted);
+        computeRaster_ = std::make_unique<ComputeRaster>(
+            materialFeatures, raster_ == VisibilityRaster::Compute,
+            ComputeRaster::Extras{.viewDepthRange = settings.grid.slicing == Slicing::Fitted,
+                                  .depthUnderGlass = settings.activeOnly || settings.normalCones});
 }
 
 void VisibilityBuffer::prepareTargets(const FrameTargets& frame) {

@@ -103,8 +103,8 @@ VisibilityRaster ComputeRaster::resolve(VisibilityRaster choice) {
     return VisibilityRaster::Hardware;
 }
 
-ComputeRaster::ComputeRaster(std::uint32_t materialFeatures, bool packedAtomics, bool reducesViewDepth)
-    : packed_(packedAtomics), reducesViewDepth_(reducesViewDepth), passes_(packedAtomics ? 1 : 2), clipsToViewport_(clipsToViewport()) {
+ComputeRaster::ComputeRaster(std::uint32_t materialFeatures, bool packedAtomics, Extras extras)
+    : packed_(packedAtomics), extras_(extras), passes_(packedAtomics ? 1 : 2), clipsToViewport_(clipsToViewport()) {
     for (int pass = 0; pass < passes_; ++pass) {
         const shaders::Defines defines = rasterDefines(packed_, pass);
         const std::string suffix = passes_ == 1 ? "" : (pass == 0 ? ".depth" : ".ids");
@@ -131,8 +131,8 @@ ComputeRaster::ComputeRaster(std::uint32_t materialFeatures, bool packedAtomics,
         alphaBin_ = gl::Program::compute("compute_raster_bin.comp", shaders::withDefine(rasterDefines(packed_, 0), "ML_RASTER_ALPHA_TEST", "1"));
     shaders::Defines finish = shaders::withDefine(rasterDefines(packed_, 0), "ML_RASTER_FINISH_PIXELS", std::to_string(kFinishPixels));
     finish_ = gl::Program::compute("compute_raster_finish.comp",
-                                   shaders::withDefine(finish, "ML_RASTER_VIEW_DEPTH_RANGE", reducesViewDepth_ ? "1" : "0"));
-    if (materialFeatures & ML_FEATURE_BLEND)
+                                   shaders::withDefine(finish, "ML_RASTER_VIEW_DEPTH_RANGE", extras_.viewDepthRange ? "1" : "0"));
+    if ((materialFeatures & ML_FEATURE_BLEND) && extras_.depthUnderGlass)
         depthCopy_ = gl::Program("visibility.compute-raster.depth-copy",
                                  {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "compute_raster_depth.frag"}});
     GLuint vao = 0;
@@ -188,8 +188,8 @@ void ComputeRaster::run(const FrameContext& ctx, const gl::Texture2D& ids) {
     clipped_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_RASTER_CLIPPED);
     for (int pass = 0; pass < passes_; ++pass) rasterPass(ctx, pass);
     finish(ctx, ids);
-    ctx.targets.setComputedDepth(&depth_, reducesViewDepth_ ? ViewDepthRange{&work_, ML_RASTER_WORK_VIEW_DEPTH_RANGE} : ViewDepthRange{});
-    if (ctx.scene.hasTransparent()) {
+    ctx.targets.setComputedDepth(&depth_, extras_.viewDepthRange ? ViewDepthRange{&work_, ML_RASTER_WORK_VIEW_DEPTH_RANGE} : ViewDepthRange{});
+    if (ctx.scene.hasTransparent() && extras_.depthUnderGlass) {
         auto timed = ctx.timer.pass("visibility.raster-glass-depth");
         copyDepthUnderGlass(ctx);
     }

@@ -21,8 +21,8 @@
 // as on Mesa's llvmpipe, so the tests run the same raster.
 //
 // The depth is a colour target, which the passes that sample depth read (FrameTargets::opaqueDepth);
-// the transparent passes depth-test in hardware, so where the scene has glass it is copied into
-// the depth buffer over the glass's screen bounds alone.
+// the glass's capture tests against it in its fragment shader; for the passes that depth-test the
+// glass in hardware it is copied into the depth buffer over the glass's screen bounds alone.
 #pragma once
 
 #include <cstdint>
@@ -50,13 +50,21 @@ public:
     // std::invalid_argument naming the flag where this GPU cannot run the compute raster.
     static VisibilityRaster resolve(VisibilityRaster choice);
 
-    // reducesViewDepth: the finish also leaves the drawn pixels' view depth range (fitted slicing).
-    ComputeRaster(std::uint32_t materialFeatures, bool packedAtomics, bool reducesViewDepth);
+    // What a frame's later passes need of the raster besides the ids and depth().
+    struct Extras {
+        // Fitted slicing: the drawn pixels' view depth range, reduced by the finish
+        // (FrameTargets::opaqueViewDepthRange), so that cluster.depth-range reads no depth.
+        bool viewDepthRange = false;
+        // Passes that depth-test the glass in hardware (--active-only and --normal-cones mark its
+        // samples): the depth copied into the depth buffer under the glass. The glass's capture
+        // tests against depth() itself.
+        bool depthUnderGlass = false;
+    };
+    ComputeRaster(std::uint32_t materialFeatures, bool packedAtomics, Extras extras);
 
     // Rasters the scene's opaque and alpha-tested ranges into `ids` (triangle index + 1, 0 where
-    // nothing is) and depth(); where the scene has glass, copies the depth into the frame's depth
-    // buffer under it. Sets ctx.targets' opaque depth to depth(), and with reducesViewDepth its
-    // view depth range.
+    // nothing is) and depth(), and what `extras` asks for. Sets ctx.targets' opaque depth to
+    // depth(), and its view depth range where asked.
     void run(const FrameContext& ctx, const gl::Texture2D& ids);
     const gl::Texture2D& depth() const { return depth_; }
     // Whether triangles that cross the viewport's sides or the eye plane go to the hardware (set
@@ -90,7 +98,7 @@ private:
     void copyDepthUnderGlass(const FrameContext& ctx);
 
     bool packed_;
-    bool reducesViewDepth_;
+    Extras extras_;
     int passes_;
     bool clipsToViewport_;
     gl::Program setup_[2], tiles_[2], bin_, finish_, depthCopy_;

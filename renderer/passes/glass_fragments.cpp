@@ -67,7 +67,6 @@ void GlassFragments::count(const FrameContext& ctx, GlassColors colors, std::uin
     }
     {
         auto pass = ctx.timer.pass(timerName_ + "-count");
-        count_.variant(false).set("u_glassWindow", window_);
         rasterGlass(ctx, count_);
     }
     {
@@ -113,7 +112,6 @@ void GlassFragments::fill(const FrameContext& ctx) {
     fragmentStore_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_GLASS_FRAGMENTS);
     fill_.variant(false).use();
     fill_.variant(false).set("u_capacity", total);
-    fill_.variant(false).set("u_glassWindow", window_);
     rasterGlass(ctx, fill_);
 }
 
@@ -122,11 +120,19 @@ void GlassFragments::rasterGlass(const FrameContext& ctx, const RasterProgram& p
     // masks are restored before anything can throw, so a refused frame leaves the next one a
     // clean state.
     beginTransparentRaster(ctx.targets);
+    const gl::Program& shader = program.variant(false);
+    shader.set("u_glassWindow", window_);
+    shader.set("u_testsComputedDepth", ctx.targets.hasComputedDepth() ? 1u : 0u);
+    if (ctx.targets.hasComputedDepth()) {
+        glDisable(GL_DEPTH_TEST);  // the shader tests against the computed depth
+        glBindTextureUnit(ML_TEX_DEPTH, ctx.targets.opaqueDepth().id());
+    }
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
     glEnable(GL_SCISSOR_TEST);
     glScissor(GLint(window_.x), GLint(window_.y), GLsizei(window_.z), GLsizei(window_.w));
     ctx.scene.drawTransparent(program, glm::vec3(ctx.uniforms.cameraPos));
     glDisable(GL_SCISSOR_TEST);
+    glEnable(GL_DEPTH_TEST);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glDepthMask(GL_TRUE);
     glMemoryBarrier(kComputeToCompute);

@@ -40,7 +40,7 @@ RasterFloors::RasterFloors(std::uint32_t materialFeatures)
       fullscreenDepth_("raster-floors.fullscreen-depth",
                        {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "raster_floor_depth.frag"}}),
       clearIds_(gl::Program::compute("visibility_clear_ids.comp")),
-      computeRaster_(ComputeRaster::supported() ? std::make_unique<ComputeRaster>(materialFeatures, ComputeRaster::hasPackedAtomics(), false)
+      computeRaster_(ComputeRaster::supported() ? std::make_unique<ComputeRaster>(materialFeatures, ComputeRaster::hasPackedAtomics(), ComputeRaster::Extras{})
                                                 : nullptr) {
     GLuint vao = 0;
     glCreateVertexArrays(1, &vao);
