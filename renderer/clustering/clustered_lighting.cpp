@@ -183,7 +183,7 @@ void ClusteredLighting::build(const FrameContext& ctx, const GBuffer* gbuffer) {
     const bool fitted = settings_.grid.slicing == Slicing::Fitted;
     const ViewDepthRange& reduced = ctx.targets.opaqueViewDepthRange();
     const GLuint rasterRangeWord = fitted && reduced.buffer ? reduced.word : ~0u;
-    if (reduced.buffer) reduced.buffer->bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_RASTER_WORK);
+    if (rasterRangeWord != ~0u) reduced.buffer->bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_RASTER_WORK);
     if (fitted && (!reduced.buffer || zbin_)) {
         auto pass = ctx.timer.pass("cluster.depth-range");
         depthRange_.use();

@@ -8,7 +8,8 @@
 // panes take 4-10 % of it).
 //
 //   count():  [-clear]  pixels[p] = 0                                (compute)
-//             [-count]  raster, no colour, no depth write, early depth test:
+//             [-count]  raster, no colour, no depth write, early depth test (against a
+//                       computed depth, the shader's own: FrameTargets::hasComputedDepth):
 //                       pixels[p] = fragments at p
 //             [-scan]   pixels[p] = where p's fragments start        (PrefixSum in blocks of
 //                                                                    4,096 pixels, each block's

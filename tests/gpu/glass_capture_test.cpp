@@ -336,6 +336,33 @@ TEST_F(GlassCapture, TheWindowHoldsEveryFragment) {
     }
 }
 
+// With the compute raster the capture tests against the raster's depth in its own shader (no
+// depth buffer holds it), or, with --active-only, in hardware against a copy: either way it keeps
+// the fragments the hardware raster's depth keeps. A glass pane behind an opaque square that
+// hides half of it and one in front of it all: every front fragment and half the back ones.
+TEST_F(GlassCapture, TheComputeRastersDepthHidesWhatTheHardwareRastersDoes) {
+    const auto panes = [](bool hidden) {
+        Gltf g;
+        std::vector<json> prims{square(g, -0.5f, 1.5f, paneMaterial(g, {0.2f, 0.4f, 0.9f, 0.5f}, "BLEND")),
+                                square(g, 0.5f, 0.6f, paneMaterial(g, {0.9f, 0.3f, 0.2f, 0.5f}, "BLEND"))};
+        if (hidden) prims.push_back(quad(g, {{{-3, -2, 0}, {0, -2, 0}, {0, 2, 0}, {-3, 2, 0}}}, paneMaterial(g, {0.6f, 0.6f, 0.6f, 1.0f}, "OPAQUE")));
+        return writeAndLoad(g, prims, hidden ? "half_hidden_glass" : "unhidden_glass");
+    };
+    const Scene scene = panes(true);
+    const auto captured = [&](VisibilityRaster raster, bool activeOnly, const Scene& from) {
+        FrameSettings s = frame(from, kFrontView, MethodKind::Visibility);
+        s.method.visibilityRaster = raster;
+        s.method.clustering.activeOnly = activeOnly;
+        FrameRenderer renderer(from, kFrontAndBackLights, s);
+        renderer.render(0);
+        return renderer.method().transparentCapture()->fragmentCount();
+    };
+    const std::uint64_t hardware = captured(VisibilityRaster::Hardware, false, scene);
+    EXPECT_LT(hardware, captured(VisibilityRaster::Hardware, false, panes(false))) << "the opaque square hides some glass";
+    for (bool activeOnly : {false, true})
+        EXPECT_EQ(captured(VisibilityRaster::ComputeTwoPass, activeOnly, scene), hardware) << (activeOnly ? "--active-only" : "the shader's test");
+}
+
 // The fragments are sized by what the frame needs; a frame whose need passes the budget (the
 // GPU's storage-buffer limit, lowered here) is refused in one line that names the numbers.
 TEST_F(GlassCapture, AFrameWhoseFragmentsDoNotFitIsRefusedInOneLine) {
