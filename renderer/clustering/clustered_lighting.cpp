@@ -169,7 +169,8 @@ void ClusteredLighting::bindForShading() const {
     if (zbin_) zbin_->bindForShading();
 }
 
-void ClusteredLighting::build(const FrameContext& ctx, const GBuffer* gbuffer) {
+void ClusteredLighting::build(const FrameContext& ctx, const GBuffer* gbuffer, const BesideCount* beside) {
+    if (beside && !hasCountPass()) throw std::logic_error("ClusteredLighting::build: work beside a count pass, but the assignment has none");
     uploadGrid(ctx);
     const std::uint32_t clusters = grid_.clusterCount();
     ensureStorage(clusters);
@@ -234,7 +235,7 @@ void ClusteredLighting::build(const FrameContext& ctx, const GBuffer* gbuffer) {
     ctx.lights.bindForReading();
     counters_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_ASSIGN_STATS);
     if (settings_.assign == AssignMode::Capped) buildCapped(ctx);
-    else buildExact(ctx);
+    else buildExact(ctx, beside);
     if (settings_.lightSum == LightSum::Float) sortLists(ctx);
 }
 
@@ -243,7 +244,7 @@ void ClusteredLighting::sortLists(const FrameContext& ctx) {
     // Capped lists are one per cluster; exact ones one per cluster and normal bin.
     const bool capped = settings_.assign == AssignMode::Capped;
     const std::uint32_t lists = grid_.clusterCount() * (capped ? 1u : listsPerCluster());
-    checkListFits(ListSort::workBytes(lists), "the sort's work lists");
+    checkListFits(ListSort::workBytes(lists, indices_.buffer().size()), "the sort's work lists");
     sort_.sort(counts_.buffer(), offsets_.buffer(), indices_.buffer(), lists, capped ? settings_.maxPerCluster : 0u);
 }
 
@@ -291,7 +292,27 @@ void ClusteredLighting::dispatchAssignment(const gl::Program& program, std::uint
     glMemoryBarrier(kComputeToCompute);
 }
 
-void ClusteredLighting::buildExact(const FrameContext& ctx) {
+// Everything the exact passes read and write, but the lists (the fill and the sort bind those).
+void ClusteredLighting::bindAssignmentBuffers(const FrameContext& ctx) const {
+    ctx.lights.bindForReading();
+    gridBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_CLUSTER_GRID);
+    aabbs_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_CLUSTER_AABBS);
+    activeFlags_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_CLUSTER_ACTIVE);
+    counters_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_ASSIGN_STATS);
+    lightRanges_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_LIGHT_RANGES);
+    lightView_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_LIGHT_VIEW);
+    candidateOffsets_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_CANDIDATE_OFFSETS);
+    dispatchArgs_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_DISPATCH);
+    candidates_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_ASSIGN_CANDIDATES);
+    counts_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_CLUSTER_COUNTS);
+    offsets_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_CLUSTER_OFFSETS);
+    if (settings_.normalCones) {
+        normalBinMasks_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_NORMAL_BIN_MASKS);
+        normalCones_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_NORMAL_CONES);
+    }
+}
+
+void ClusteredLighting::buildExact(const FrameContext& ctx, const BesideCount* beside) {
     const std::uint32_t clusters = grid_.clusterCount();
     const std::uint32_t lists = clusters * listsPerCluster();
     const std::uint32_t lights = ctx.lights.count();
@@ -299,16 +320,7 @@ void ClusteredLighting::buildExact(const FrameContext& ctx) {
     lightRanges_.ensure(std::size_t(lights) * 16);
     lightView_.ensure(std::size_t(lights) * 16);
     candidateOffsets_.ensure(std::size_t(lights) * 4);
-    lightRanges_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_LIGHT_RANGES);
-    lightView_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_LIGHT_VIEW);
-    candidateOffsets_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_CANDIDATE_OFFSETS);
-    dispatchArgs_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_DISPATCH);
-    counts_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_CLUSTER_COUNTS);
-    offsets_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_CLUSTER_OFFSETS);
-    if (settings_.normalCones) {
-        normalBinMasks_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_NORMAL_BIN_MASKS);
-        normalCones_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_NORMAL_CONES);
-    }
+    bindAssignmentBuffers(ctx);
     // The per-pair passes run one invocation per candidate (indirect) or per cluster.
     const auto dispatchPairs = [&] {
         if (perCluster) glDispatchCompute(gl::groupsFor(clusters, settings_.grid.workgroup), 1, 1);
@@ -341,9 +353,15 @@ void ClusteredLighting::buildExact(const FrameContext& ctx) {
     }
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, dispatchArgs_.id());
     {
-        auto pass = ctx.timer.pass(perCluster ? "assign.per-cluster-count" : "assign.count");
+        const std::string name = perCluster ? "assign.per-cluster-count" : "assign.count";
+        auto pass = ctx.timer.pass(beside ? name + "+" + beside->name : name);
         count_.use();
         dispatchPairs();
+        if (beside) {
+            beside->issue();
+            bindAssignmentBuffers(ctx);
+            glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, dispatchArgs_.id());
+        }
         glMemoryBarrier(kComputeToCompute);
     }
     {

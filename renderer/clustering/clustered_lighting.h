@@ -31,7 +31,9 @@
 // With float sums the sort (list_sort.h) keeps a scratch buffer as large as the lists.
 #pragma once
 
+#include <functional>
 #include <memory>
+#include <string>
 
 #include <nlohmann/json_fwd.hpp>  // dump(); its callers include json.hpp
 
@@ -63,7 +65,18 @@ public:
     // Builds the lists from the lights and the depth already in ctx.targets.depth(); with
     // --normal-cones also from the G-buffer's normals (required then).
     // Throws std::runtime_error when the lists cannot fit this GPU's storage-buffer limit.
-    void build(const FrameContext& ctx, const GBuffer* gbuffer = nullptr);
+    //
+    // `beside`: work that needs nothing of the lists, issued between the count pass's dispatch and
+    // its barrier so that the GPU runs the two together (the visibility buffer's resolve). It may
+    // bind anything; the build binds what it needs again after it. Its time is in the count's,
+    // whose timer is then named "assign.count+<name>". Only where hasCountPass().
+    struct BesideCount {
+        std::string name;
+        std::function<void()> issue;
+    };
+    void build(const FrameContext& ctx, const GBuffer* gbuffer = nullptr, const BesideCount* beside = nullptr);
+    // Exact and per-cluster lists are counted before they are filled; capped and z-binned are not.
+    bool hasCountPass() const { return settings_.assign == AssignMode::Exact || settings_.assign == AssignMode::PerCluster; }
     // Lists per cluster: ML_NORMAL_BINS with --normal-cones, else 1.
     std::uint32_t listsPerCluster() const;
     // Binds the grid, counts, offsets and light indices at their ML_SSBO_* points.
@@ -91,7 +104,8 @@ private:
     void uploadGrid(const FrameContext& ctx);
     void ensureStorage(std::uint32_t clusters);
     void checkListFits(std::size_t bytes, const char* what) const;
-    void buildExact(const FrameContext& ctx);
+    void buildExact(const FrameContext& ctx, const BesideCount* beside);
+    void bindAssignmentBuffers(const FrameContext& ctx) const;
     void markNormalBins(const FrameContext& ctx, const GBuffer& gbuffer);
     // Rasters the transparent ranges as samples (cluster_transparent_samples.frag), phase 0 or 1.
     void markTransparentSamples(const FrameContext& ctx, unsigned phase) const;

@@ -54,7 +54,37 @@ void VisibilityBuffer::classifyTiles(std::size_t slots, GLuint groupsX, GLuint g
     classifyProgram_.use();
     glDispatchCompute(gl::groupsFor(groupsX, kClassifyBlock), gl::groupsFor(groupsY, kClassifyBlock), 1);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
-    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, resolveDispatch_.id());
+}
+
+std::size_t VisibilityBuffer::resolveSlots(const FrameContext& ctx) { return ctx.scene.textureSetCount() + 1; }
+
+glm::uvec2 VisibilityBuffer::resolveGroups(const FrameContext& ctx) {
+    return {gl::groupsFor(ctx.targets.width(), ML_SCREEN_TILE), gl::groupsFor(ctx.targets.height(), ML_SCREEN_TILE)};
+}
+
+void VisibilityBuffer::issueResolve(const FrameContext& ctx) {
+    const glm::uvec2 groups = resolveGroups(ctx);
+    const bool tileLists = resolveSlots(ctx) <= ML_RESOLVE_MAX_SLOTS;
+    resolveProgram_.use();
+    ctx.scene.bindGeometryStorage();
+    gbuffer_.bindForWriting();
+    glBindTextureUnit(ML_TEX_VISIBILITY, triangleIds_.id());
+    resolveProgram_.set("u_tileLists", tileLists ? 1u : 0u);
+    resolveProgram_.set("u_tileCount", groups.x * groups.y);
+    resolveProgram_.set("u_tilesX", groups.x);
+    if (tileLists) {
+        resolveTiles_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_RESOLVE_TILES);
+        glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, resolveDispatch_.id());
+    }
+    // One dispatch per texture set, and one for untextured materials.
+    for (int set = -1; set < static_cast<int>(ctx.scene.textureSetCount()); ++set) {
+        ctx.scene.bindTextureSet(set);
+        resolveProgram_.set("u_textureSet", set);
+        if (tileLists) glDispatchComputeIndirect(static_cast<GLintptr>(std::size_t(set + 1) * 3 * sizeof(GLuint)));
+        else glDispatchCompute(groups.x, groups.y, 1);
+    }
+    if (tileLists) glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
+    ctx.scene.unbindSamplers();
 }
 
 void VisibilityBuffer::rasterInHardware(const FrameContext& ctx) {
@@ -91,35 +121,29 @@ void VisibilityBuffer::render(const FrameContext& ctx) {
     }
     // The depth is final: the glass is counted now, its total long known when the fill needs it.
     transparent_.countFragments(ctx, clustering_.settings().view);
+    // The resolve's shading needs only the classification, so it runs beside the assignment's
+    // count (0.005-0.04 ms a frame less on an H200: docs/benchmarks.md), unless the lists read the
+    // G-buffer (--normal-cones) or the assignment has no count pass.
+    const bool besideCount = clustering_.hasCountPass() && !clustering_.settings().normalCones;
     {
         auto pass = ctx.timer.pass("visibility.resolve");
-        resolveProgram_.use();
-        ctx.scene.bindGeometryStorage();
-        gbuffer_.bindForWriting();
-        glBindTextureUnit(ML_TEX_VISIBILITY, triangleIds_.id());
-        const GLuint groupsX = gl::groupsFor(ctx.targets.width(), ML_SCREEN_TILE);
-        const GLuint groupsY = gl::groupsFor(ctx.targets.height(), ML_SCREEN_TILE);
-        const std::size_t slots = ctx.scene.textureSetCount() + 1;
-        const bool tileLists = slots <= ML_RESOLVE_MAX_SLOTS;
-        if (tileLists) classifyTiles(slots, groupsX, groupsY);
-        resolveProgram_.use();
-        resolveProgram_.set("u_tileLists", tileLists ? 1u : 0u);
-        resolveProgram_.set("u_tileCount", groupsX * groupsY);
-        resolveProgram_.set("u_tilesX", groupsX);
-        // One dispatch per texture set, and one for untextured materials.
-        for (int set = -1; set < static_cast<int>(ctx.scene.textureSetCount()); ++set) {
-            ctx.scene.bindTextureSet(set);
-            resolveProgram_.set("u_textureSet", set);
-            if (tileLists) glDispatchComputeIndirect(static_cast<GLintptr>(std::size_t(set + 1) * 3 * sizeof(GLuint)));
-            else glDispatchCompute(groupsX, groupsY, 1);
+        const std::size_t slots = resolveSlots(ctx);
+        if (slots <= ML_RESOLVE_MAX_SLOTS) {
+            ctx.scene.bindGeometryStorage();
+            glBindTextureUnit(ML_TEX_VISIBILITY, triangleIds_.id());
+            const glm::uvec2 groups = resolveGroups(ctx);
+            classifyTiles(slots, groups.x, groups.y);
         }
-        if (tileLists) glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
-        ctx.scene.unbindSamplers();
-        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+        if (!besideCount) {
+            issueResolve(ctx);
+            glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+        }
     }
-    clustering_.build(ctx, &gbuffer_);
+    const ClusteredLighting::BesideCount resolve{"visibility.resolve", [&] { issueResolve(ctx); }};
+    clustering_.build(ctx, &gbuffer_, besideCount ? &resolve : nullptr);
     {
         auto pass = ctx.timer.pass("visibility.lighting");
+        if (besideCount) glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
         bindDeferredLightingInputs(gbuffer_, ctx, clustering_);
         lightingProgram_.use();
         dispatchComputeLighting(ctx.targets);

@@ -42,9 +42,14 @@ public:
 private:
     void prepareTargets(const FrameTargets& frame);
     void rasterInHardware(const FrameContext& ctx);
-    // Lists, per texture-set slot, the screen tiles whose pixels need it (visibility_classify.comp),
-    // and leaves the indirect dispatches bound for the resolve.
+    // Lists, per texture-set slot, the screen tiles whose pixels need it, and their indirect
+    // dispatches (visibility_classify.comp).
     void classifyTiles(std::size_t slots, GLuint groupsX, GLuint groupsY);
+    // The resolve's dispatches, one per texture-set slot, over the classified tiles (or the
+    // screen, past ML_RESOLVE_MAX_SLOTS); no barrier.
+    void issueResolve(const FrameContext& ctx);
+    static std::size_t resolveSlots(const FrameContext& ctx);
+    static glm::uvec2 resolveGroups(const FrameContext& ctx);
 
     VisibilityRaster raster_;
     GBuffer gbuffer_;
