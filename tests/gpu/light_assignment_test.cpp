@@ -215,6 +215,46 @@ TEST_F(GpuTest, ExactListsMatchPerClusterListsAcrossRunsOfLightsOutOfView) {
         ASSERT_EQ(lists[0][cluster], lists[1][cluster]) << "cluster " << cluster;
 }
 
+// Work issued beside the count pass (ClusteredLighting::BesideCount: the visibility buffer's
+// resolve) may bind anything; the build binds what it needs again. Here the work binds a buffer of
+// garbage at every storage-buffer point and as the indirect dispatch buffer: the lists must equal
+// those of a build without it, and the count's timer carries the work's name.
+TEST_F(GpuTest, WorkBesideTheCountLeavesTheListsAsTheyWere) {
+    const TestScene t = testScene("atrium", 3000, 29, 1.0f, 0.25f);
+    FrameSettings s = smallFrame(t.scene, 200, 120);
+    s.method.kind = MethodKind::Deferred;
+    FrameRenderer renderer(t.scene, t.lights, s);
+    renderer.render(3);
+    const auto rendered = renderer.method().clustering()->downloadLists();
+
+    PassTimer timer(true, TimingClock::GpuQueries);
+    const FrameContext ctx = renderer.frameContext(timer);
+    ClusteredLighting clustering(renderer.method().clustering()->settings(), renderer.scene().materialFeatures());
+    const std::vector<std::uint32_t> garbage(4096, 0xFFFFFF7Fu);
+    const gl::Buffer junk = gl::Buffer::fromSpan<std::uint32_t>("test.junk", garbage);
+    GLint points = 0;
+    glGetIntegerv(GL_MAX_SHADER_STORAGE_BUFFER_BINDINGS, &points);
+    int issued = 0;
+    const ClusteredLighting::BesideCount beside{"test.beside", [&] {
+        for (GLint point = 0; point < std::min(points, 64); ++point) junk.bindBase(GL_SHADER_STORAGE_BUFFER, static_cast<GLuint>(point));
+        glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, junk.id());
+        ++issued;
+    }};
+    timer.beginFrame();
+    clustering.build(ctx, nullptr, &beside);
+    const std::vector<PassTime> times = timer.endFrame();
+    EXPECT_EQ(issued, 1);
+    EXPECT_NE(std::find_if(times.begin(), times.end(), [](const PassTime& p) { return p.name == "assign.count+test.beside"; }), times.end());
+    const auto withBeside = clustering.downloadLists();
+    clustering.build(ctx);
+    const auto without = clustering.downloadLists();
+    std::size_t references = 0;
+    for (const auto& list : without) references += list.size();
+    EXPECT_GT(references, 1000u);
+    EXPECT_EQ(withBeside, without);
+    EXPECT_EQ(without, rendered);
+}
+
 // The list sort on each of its paths: short lists by rank sort (up to ML_SORT_RANK_MAX) and
 // bitonic (up to ML_SORT_SHORT_MAX), long ones bitonic in shared memory (up to
 // ML_SORT_SHARED_CAPACITY) and beyond that in chunks merged by rank (5000 lights: lists of two
