@@ -205,8 +205,8 @@
 // Light-list sort, in two dispatches by list length so that short lists (most of them) do not
 // hold a long list's threads and shared memory: lists up to ML_SORT_SHORT_MAX entries sort in
 // workgroups of ML_SORT_SHORT_WORKGROUP (a rank sort up to ML_SORT_RANK_MAX, bitonic beyond);
-// longer ones in workgroups of ML_SORT_LONG_WORKGROUP, bitonic in shared memory up to
-// ML_SORT_SHARED_CAPACITY (16 KiB), beyond that in chunks of it, merged by rank.
+// longer ones a workgroup of ML_SORT_LONG_WORKGROUP per chunk of ML_SORT_SHARED_CAPACITY (16 KiB),
+// bitonic in shared memory, and the chunks of a list of several merged by rank, a workgroup each.
 #define ML_SORT_SHORT_WORKGROUP 64
 #define ML_SORT_RANK_MAX 128
 #define ML_SORT_SHORT_MAX 256

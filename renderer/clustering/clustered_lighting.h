@@ -11,7 +11,8 @@
 //                                   --normal-cones: their visible fragments marked as samples too
 //   exact:  [assign.ranges] ─> [assign.count] ─> [assign.scan] ─> [assign.fill]
 //           one invocation per (light, candidate cluster); one compact list, no cap, in a
-//           buffer sized by the candidates that the ranges counted
+//           buffer sized by the candidates that the ranges counted; a caller's work that needs no
+//           list may run beside the count (BesideCount: the visibility resolve)
 //   per-cluster: [assign.ranges] ─> [assign.per-cluster-count] ─> [assign.scan] ─> [assign.per-cluster-fill]
 //           one invocation per cluster over every light (seed 003); the same lists
 //   capped: [assign.capped]    one invocation per light; fixed lists, overflow counted
