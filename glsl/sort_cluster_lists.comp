@@ -212,7 +212,7 @@ void main() {
     uvec2 range = listRange(list);
 #ifdef ML_SORT_LONG
     // A list of one chunk is sorted where it lies; a chunk of several into the scratch buffer, for the merge.
-    bitonicSortShared(range.x + chunk * ML_SORT_CAPACITY, chunkLength(range.y, chunk), range.y > ML_SORT_CAPACITY);
+    bitonicSortShared(range.x + chunk * ML_SORT_SHARED_CAPACITY, chunkLength(range.y, chunk), range.y > ML_SORT_SHARED_CAPACITY);
 #else
     mergeChunk(range.x, range.y, chunk);
 #endif

@@ -69,7 +69,8 @@ public:
     //
     // `beside`: work that needs nothing of the lists, issued between the count pass's dispatch and
     // its barrier so that the GPU runs the two together (the visibility buffer's resolve). It may
-    // bind anything; the build binds what it needs again after it. Its time is in the count's,
+    // bind any storage buffer, texture, image or indirect dispatch buffer, not the frame's uniform
+    // buffer: the build binds what its passes read again after it. Its time is in the count's,
     // whose timer is then named "assign.count+<name>". Only where hasCountPass().
     struct BesideCount {
         std::string name;
