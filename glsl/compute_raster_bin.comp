@@ -44,8 +44,8 @@ shared uint s_first;
 // Whether a screen tile may hold pixels of the triangle: no edge has every pixel centre of the
 // tile outside it. Edges are linear, so an edge's largest value over the tile is at the corner
 // its gradient points to: one value an edge.
-bool tileTouches(bool clipped, uint index, uvec2 tile) {
-    ivec2 lo = ivec2(tile) * ML_RASTER_TILE, hi = lo + (ML_RASTER_TILE - 1);
+bool tileTouches(bool clipped, uint index, uvec2 tile, int size) {
+    ivec2 lo = ivec2(tile) * size, hi = lo + (size - 1);
     if (clipped) {
         ivec2 corners[4] = ivec2[](lo, ivec2(hi.x, lo.y), ivec2(lo.x, hi.y), hi);
         uvec4 q0 = clippedTriangles[5u * index], q1 = clippedTriangles[5u * index + 1u], q2 = clippedTriangles[5u * index + 2u];
@@ -82,15 +82,17 @@ void main() {
         // record before's .w (clipped).
         uvec4 record = clipped ? clippedTriangles[5u * (item - largeCount) + 4u].zwxy : largeTriangles[3u * large + 2u];
         if (clipped) record.y = clippedTriangles[5u * (item - largeCount) + 3u].w;
-        uvec2 lo = uvec2(record.z & 0xffffu, record.z >> 16), hi = uvec2(record.w & 0xffffu, record.w >> 16);
-        uvec2 size = hi - lo + 1u;
-        uint boundsTiles = size.x * size.y;
+        uint fine = record.z & ML_RASTER_FINE_PAIR;
+        int size = fine != 0u ? ML_RASTER_FINE_TILE : ML_RASTER_TILE;
+        uvec2 lo = uvec2(record.z & 0x7fffu, record.z >> 16), hi = uvec2(record.w & 0xffffu, record.w >> 16);
+        uvec2 extent = hi - lo + 1u;
+        uint boundsTiles = extent.x * extent.y;
         uint index = large & ~ML_RASTER_CLIPPED_PAIR;
         if (gl_LocalInvocationIndex == 0u) s_count = 0u;
         barrier();
         uint touched = 0u;
         for (uint i = gl_LocalInvocationIndex; i < boundsTiles; i += gl_WorkGroupSize.x)
-            if (tileTouches(clipped, index, lo + uvec2(i % size.x, i / size.x))) ++touched;
+            if (tileTouches(clipped, index, lo + uvec2(i % extent.x, i / extent.x), size)) ++touched;
         atomicAdd(s_count, touched);
         barrier();
         uint tiles = s_count;
@@ -111,8 +113,8 @@ void main() {
         if (gl_LocalInvocationIndex == 0u) s_count = 0u;
         barrier();
         for (uint i = gl_LocalInvocationIndex; i < boundsTiles; i += gl_WorkGroupSize.x) {
-            uvec2 tile = lo + uvec2(i % size.x, i / size.x);
-            if (tileTouches(clipped, index, tile)) pairs[first + atomicAdd(s_count, 1u)] = uvec2(large, tile.x | (tile.y << 16));
+            uvec2 tile = lo + uvec2(i % extent.x, i / extent.x);
+            if (tileTouches(clipped, index, tile, size)) pairs[first + atomicAdd(s_count, 1u)] = uvec2(large, tile.x | fine | (tile.y << 16));
         }
         barrier();
     }

@@ -191,10 +191,13 @@ void main() {
         return;
     }
     atomicMax(rasterWork[ML_RASTER_BIN_DISPATCH], min(at - u_largeFirst + 1u, 65535u));
-    ivec2 tileLo = lo / ML_RASTER_TILE, tileHi = hi / ML_RASTER_TILE;
+    bool fine = all(lessThanEqual(pixels, ivec2(ML_RASTER_FINE_EXTENT)));
+    int tile = fine ? ML_RASTER_FINE_TILE : ML_RASTER_TILE;
+    ivec2 tileLo = lo / tile, tileHi = hi / tile;
     largeTriangles[3u * at] = uvec4(uvec2(t.v0), uvec2(t.v1));
     largeTriangles[3u * at + 1u] = uvec4(uvec2(t.v2), floatBitsToUint(t.z.xy));
-    largeTriangles[3u * at + 2u] = uvec4(floatBitsToUint(t.z.z), triangle, uint(tileLo.x) | (uint(tileLo.y) << 16),
+    largeTriangles[3u * at + 2u] = uvec4(floatBitsToUint(t.z.z), triangle,
+                                         uint(tileLo.x) | (fine ? ML_RASTER_FINE_PAIR : 0u) | (uint(tileLo.y) << 16),
                                          uint(tileHi.x) | (uint(tileHi.y) << 16));
 #endif
 }

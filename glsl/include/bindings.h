@@ -87,7 +87,15 @@
 #define ML_RASTER_WORK_WORDS 23                // then a DrawArraysIndirectCommand per alpha-tested span
 #define ML_RASTER_CLIPPED_PAIR 0x80000000u  // a pair's triangle is in the clipped list
 #define ML_RASTER_WORKGROUP 64       // triangles per workgroup of the setup pass
-#define ML_RASTER_TILE 16            // the tile pass's screen tile edge: a pixel per invocation
+#define ML_RASTER_TILE 16            // the tile pass's screen tile edge
+// A large triangle whose pixel bounds span at most ML_RASTER_FINE_EXTENT pixels each way is binned
+// to 8x8 tiles (ML_RASTER_FINE_TILE), a pixel an invocation: it covers a sliver of most 16x16
+// tiles it touches. Its pairs' tile words carry ML_RASTER_FINE_PAIR in the x bits. 64, 192 and
+// 256 pixels measured no better than 128, every triangle 8x8 tiles worse
+// (docs/bench/nvidia-h200/fine-tiles/).
+#define ML_RASTER_FINE_TILE 8
+#define ML_RASTER_FINE_EXTENT 128
+#define ML_RASTER_FINE_PAIR 0x8000u
 // The finish pass's workgroup: one row of 256 pixels, so each warp reads and resets 256
 // consecutive bytes of the store (on an H100 at 2560x1440: 0.089 ms against 0.167 for 8x8 tiles;
 // docs/bench/nvidia-h100/raster-finish/).
@@ -258,7 +266,8 @@
 // which a pixel counts as empty (the black background around an object is left out). It runs
 // after every method and before the tonemap, and every pass binds what it reads before it runs,
 // so its buffers share the prefix sum's points.
-#define ML_EXPOSURE_TILE 16
+#define ML_EXPOSURE_TILE 64        // pixels a side of the exposure reduction's tile, summed by
+#define ML_EXPOSURE_WORKGROUP 16   // this many invocations a side (16 pixels each)
 #define ML_EXPOSURE_SUM_WORKGROUP 256
 #define ML_EXPOSURE_MIN_LUMINANCE 1e-6
 #define ML_SSBO_EXPOSURE_PARTIALS 10   // per tile: sum of log2 luminance over its lit pixels, their count

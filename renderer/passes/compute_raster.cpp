@@ -73,6 +73,15 @@ shaders::Defines rasterDefines(bool packed, int pass) {
             {"ML_RASTER_EDGE_RULE", std::to_string(hardwareEdgeRule())}};
 }
 
+// The pairs among the first `count` of a pair list whose tile is 8x8 (ML_RASTER_FINE_PAIR).
+std::uint32_t finePairs(const gl::Buffer& pairs, std::uint32_t count) {
+    std::vector<GLuint> words(2 * std::size_t(count));
+    if (count > 0) pairs.download(words.data(), words.size() * sizeof(GLuint));
+    std::uint32_t fine = 0;
+    for (std::size_t i = 1; i < words.size(); i += 2) fine += (words[i] & ML_RASTER_FINE_PAIR) != 0 ? 1 : 0;
+    return fine;
+}
+
 constexpr GLbitfield kComputeToCompute = GL_SHADER_STORAGE_BARRIER_BIT;
 
 // Pixels a finishing invocation reads and writes (glsl/compute_raster_finish.comp).
@@ -362,6 +371,8 @@ ComputeRaster::Work ComputeRaster::lastWork() const {
     w.tiles = std::min<std::uint32_t>(words[ML_RASTER_WORK_PAIR_COUNT], static_cast<std::uint32_t>(pairCapacity_));
     w.hardware = words[ML_RASTER_WORK_HARDWARE_DRAW] / 3;
     w.clipped = words[ML_RASTER_WORK_CLIPPED_COUNT];
+    w.fineTiles = finePairs(pairs_, w.tiles);
+    if (alphaPairs_) w.alphaFineTiles = finePairs(alphaPairs_, w.alphaTiles);
     return w;
 }
 

@@ -79,10 +79,12 @@ public:
         std::uint32_t large = 0;     // to the tile pass
         std::uint32_t clipped = 0;   // to the tile pass as homogeneous planes (crossing the eye plane, past the guard band)
         std::uint32_t tiles = 0;     // (triangle, tile) pairs the tile pass ran
+        std::uint32_t fineTiles = 0; // of them, 8x8 tiles (ML_RASTER_FINE_EXTENT)
         std::uint32_t hardware = 0;  // to the hardware (crossing the viewport where the GPU clips there, or past the lists)
         std::uint32_t alphaTested = 0;       // the alpha-tested triangles, of which
         std::uint32_t alphaLarge = 0;        // to their tile pass
         std::uint32_t alphaTiles = 0;        // (triangle, tile) pairs it ran
+        std::uint32_t alphaFineTiles = 0;    // of them, 8x8 tiles
         std::uint32_t alphaHardware = 0;     // to the hardware (across the eye plane, or past the lists)
     };
     Work lastWork() const;

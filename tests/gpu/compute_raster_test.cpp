@@ -140,5 +140,18 @@ TEST_F(ComputeRasterTest, AlphaTestedTrianglesAreRasteredInCompute) {
     EXPECT_EQ(r.difference.coverage, 0u) << r.difference.pixels << " pixels differ";
 }
 
+// A large triangle whose bounds span at most ML_RASTER_FINE_EXTENT pixels takes 8x8 tiles, a
+// pixel an invocation, the others 16x16 tiles, four pixels of a column an invocation: at 640x360
+// the atrium has both, opaque and alpha-tested, and every pixel keeps the hardware's id.
+TEST_F(ComputeRasterTest, LargeTrianglesOfSmallBoundsTakeEightByEightTiles) {
+    for (const std::optional<CameraPose>& pose : {std::optional<CameraPose>(), std::optional<CameraPose>(CameraPose{{-16.0f, 3.0f, -4.5f}, {16.0f, 1.5f, 4.5f}, 60.0f})}) {
+        const AtriumRasters r = atriumRasters(pose, 640, 360, true, "atrium fine tiles");
+        EXPECT_GT(r.work.fineTiles, 0u) << "no 8x8 tile: the test tests them not";
+        EXPECT_LT(r.work.fineTiles, r.work.tiles) << "no 16x16 tile";
+        EXPECT_GT(r.work.alphaFineTiles, 0u) << "no alpha-tested 8x8 tile";
+        EXPECT_EQ(r.difference.coverage, 0u) << r.difference.pixels << " pixels differ";
+    }
+}
+
 }  // namespace
 }  // namespace ml::test
