@@ -15,7 +15,7 @@ layout(binding = ML_IMG_HDR, rgba32f) uniform readonly image2D u_hdr;
 layout(binding = ML_IMG_LDR, rgba8) uniform writeonly image2D u_ldr;
 uniform float u_exposure;
 #ifdef ML_AUTO_EXPOSURE
-// --exposure auto: the exposure glsl/exposure_adapt.comp set this frame, times u_exposure.
+// --exposure auto: the exposure glsl/exposure_reduce.comp set this frame, times u_exposure.
 layout(std430, binding = ML_SSBO_EXPOSURE) readonly buffer Exposure { float autoExposure; };
 #endif
 uniform uint u_displayColors;  // 1: a debug view's colours, shown as they are (sRGB-encoded, no curve)

@@ -268,7 +268,6 @@
 // so its buffers share the prefix sum's points.
 #define ML_EXPOSURE_TILE 64        // pixels a side of the exposure reduction's tile, summed by
 #define ML_EXPOSURE_WORKGROUP 16   // this many invocations a side (16 pixels each)
-#define ML_EXPOSURE_SUM_WORKGROUP 256
 #define ML_EXPOSURE_MIN_LUMINANCE 1e-6
 #define ML_SSBO_EXPOSURE_PARTIALS 10   // per tile: sum of log2 luminance over its lit pixels, their count
 #define ML_SSBO_EXPOSURE 11            // the exposure the tonemap applies, and what it was computed from

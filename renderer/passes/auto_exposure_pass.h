@@ -1,12 +1,13 @@
 // Automatic exposure (--exposure auto), between the method's HDR frame and the tonemap:
 //
-//   hdr (W x H) ──exposure.reduce──> per 16x16 tile: (sum of log2 luminance, lit pixels)
-//               ──exposure.adapt───> exposure = key / 2^(mean log2 luminance), blended with the
-//                                    previous frame's by `adaptation` (1 in render: at once)
+//   hdr (W x H) ──exposure.reduce──> per 64x64 tile: (sum of log2 luminance, lit pixels);
+//                                    its last workgroup: exposure = key / 2^(mean log2
+//                                    luminance), blended with the previous frame's by
+//                                    `adaptation` (1 in render: at once)
 //
 // The log-average, as engines expose (Reinhard et al. 2002's key): a frame whose lit pixels
 // average to middle grey is left alone, a dim interior is brightened, a washed-out one darkened.
-// Unlit pixels (the background) are left out. Both steps are compute; the exposure stays on the
+// Unlit pixels (the background) are left out. One compute dispatch; the exposure stays on the
 // GPU (the tonemap reads it from ML_SSBO_EXPOSURE), and is read back only when asked for.
 // The HDR frame, and every accuracy number measured on it, comes before exposure.
 #pragma once
@@ -42,7 +43,7 @@ public:
     AutoExposureReading read() const;
 
 private:
-    gl::Program reduce_, adapt_;
+    gl::Program reduce_;
     gl::GrowableBuffer partials_{"exposure.partials"};
     gl::Buffer exposure_;
 };
