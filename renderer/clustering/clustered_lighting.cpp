@@ -337,15 +337,12 @@ void ClusteredLighting::buildExact(const FrameContext& ctx, const BesideCount* b
         glMemoryBarrier(kComputeToCompute);
         dispatchAssignment(ranges_, lights);
         if (!perCluster) {
+            // The scan binds only its own points (ML_SSBO_SCAN_*): bindAssignmentBuffers' hold.
             scan_.run(candidateOffsets_.buffer(), lights, counters_, 8);
             glMemoryBarrier(kComputeToCompute);
-            candidateOffsets_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_CANDIDATE_OFFSETS);
-            counters_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_ASSIGN_STATS);
         }
         // The count's indirect dispatch (unused per cluster), and the candidates and their wrap
         // flag for the CPU to read once the fence passes, while the GPU runs the count and its scan.
-        dispatchArgs_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_DISPATCH);
-        candidates_.buffer().bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_ASSIGN_CANDIDATES);
         dispatch_.use();
         glDispatchCompute(1, 1, 1);
         glMemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_CLIENT_MAPPED_BUFFER_BARRIER_BIT | kComputeToCompute);

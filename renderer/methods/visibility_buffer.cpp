@@ -40,8 +40,10 @@ void VisibilityBuffer::prepareTargets(const FrameTargets& frame) {
     depthFbo_ = gl::Framebuffer("visibility.depth", {}, &frame.depth());
 }
 
-void VisibilityBuffer::classifyTiles(std::size_t slots, GLuint groupsX, GLuint groupsY) {
-    const std::size_t tileBytes = slots * groupsX * groupsY * sizeof(GLuint);
+void VisibilityBuffer::classifyTiles(const FrameContext& ctx) {
+    const std::size_t slots = resolveSlots(ctx);
+    const glm::uvec2 groups = resolveGroups(ctx);
+    const std::size_t tileBytes = slots * groups.x * groups.y * sizeof(GLuint);
     if (resolveTiles_.size() != tileBytes) {
         resolveTiles_ = gl::Buffer("visibility.resolve-tiles", tileBytes);
         resolveDispatch_ = gl::Buffer("visibility.resolve-dispatch", slots * 3 * sizeof(GLuint));
@@ -49,14 +51,18 @@ void VisibilityBuffer::classifyTiles(std::size_t slots, GLuint groupsX, GLuint g
         for (std::size_t s = 0; s < slots; ++s) emptyDispatch_[3 * s] = 0u;
     }
     resolveDispatch_.upload(emptyDispatch_.data(), emptyDispatch_.size() * sizeof(GLuint));
+    ctx.scene.bindGeometryStorage();
+    glBindTextureUnit(ML_TEX_VISIBILITY, triangleIds_.id());
     resolveTiles_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_RESOLVE_TILES);
     resolveDispatch_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_RESOLVE_DISPATCH);
     classifyProgram_.use();
-    glDispatchCompute(gl::groupsFor(groupsX, kClassifyBlock), gl::groupsFor(groupsY, kClassifyBlock), 1);
+    glDispatchCompute(gl::groupsFor(groups.x, kClassifyBlock), gl::groupsFor(groups.y, kClassifyBlock), 1);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
 }
 
 std::size_t VisibilityBuffer::resolveSlots(const FrameContext& ctx) { return ctx.scene.textureSetCount() + 1; }
+
+bool VisibilityBuffer::resolvesByTileLists(const FrameContext& ctx) { return resolveSlots(ctx) <= ML_RESOLVE_MAX_SLOTS; }
 
 glm::uvec2 VisibilityBuffer::resolveGroups(const FrameContext& ctx) {
     return {gl::groupsFor(ctx.targets.width(), ML_SCREEN_TILE), gl::groupsFor(ctx.targets.height(), ML_SCREEN_TILE)};
@@ -64,7 +70,7 @@ glm::uvec2 VisibilityBuffer::resolveGroups(const FrameContext& ctx) {
 
 void VisibilityBuffer::issueResolve(const FrameContext& ctx) {
     const glm::uvec2 groups = resolveGroups(ctx);
-    const bool tileLists = resolveSlots(ctx) <= ML_RESOLVE_MAX_SLOTS;
+    const bool tileLists = resolvesByTileLists(ctx);
     resolveProgram_.use();
     ctx.scene.bindGeometryStorage();
     gbuffer_.bindForWriting();
@@ -127,13 +133,7 @@ void VisibilityBuffer::render(const FrameContext& ctx) {
     const bool besideCount = clustering_.hasCountPass() && !clustering_.settings().normalCones;
     {
         auto pass = ctx.timer.pass("visibility.resolve");
-        const std::size_t slots = resolveSlots(ctx);
-        if (slots <= ML_RESOLVE_MAX_SLOTS) {
-            ctx.scene.bindGeometryStorage();
-            glBindTextureUnit(ML_TEX_VISIBILITY, triangleIds_.id());
-            const glm::uvec2 groups = resolveGroups(ctx);
-            classifyTiles(slots, groups.x, groups.y);
-        }
+        if (resolvesByTileLists(ctx)) classifyTiles(ctx);
         if (!besideCount) {
             issueResolve(ctx);
             glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);

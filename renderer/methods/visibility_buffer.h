@@ -44,11 +44,13 @@ private:
     void rasterInHardware(const FrameContext& ctx);
     // Lists, per texture-set slot, the screen tiles whose pixels need it, and their indirect
     // dispatches (visibility_classify.comp).
-    void classifyTiles(std::size_t slots, GLuint groupsX, GLuint groupsY);
+    void classifyTiles(const FrameContext& ctx);
     // The resolve's dispatches, one per texture-set slot, over the classified tiles (or the
     // screen, past ML_RESOLVE_MAX_SLOTS); no barrier.
     void issueResolve(const FrameContext& ctx);
     static std::size_t resolveSlots(const FrameContext& ctx);
+    // Whether the resolve runs over classified tiles (at most ML_RESOLVE_MAX_SLOTS slots).
+    static bool resolvesByTileLists(const FrameContext& ctx);
     static glm::uvec2 resolveGroups(const FrameContext& ctx);
 
     VisibilityRaster raster_;
