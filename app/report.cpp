@@ -64,7 +64,7 @@ void printClusterStatistics(const ClusterStatistics& s) {
     std::printf("memory: light lists %.2f MiB, grid %.2f MiB\n", s.listBytes / 1048576.0, s.gridBytes / 1048576.0);
 }
 
-void printShadingOptions(const FrameSettings& s) {
+void printShadingOptions(const FrameSettings& s, std::uint32_t materialFeatures) {
     const LightModel& m = s.lightModel;
     std::printf("BRDF: %s, specular %s\n", brdfName(m.brdf), s.specular ? "on" : "off (Lambert only)");
     std::printf("falloff: %s", falloffName(m.falloff));
@@ -72,7 +72,7 @@ void printShadingOptions(const FrameSettings& s) {
     std::printf(" (guard: distances below %g count as %g)\n", ML_LIGHT_MIN_DISTANCE, ML_LIGHT_MIN_DISTANCE);
     const MethodKind kind = s.method.kind;
     if (kind == MethodKind::Deferred || kind == MethodKind::Visibility) {
-        const std::size_t perPixel = gbufferBytesPerPixel(s.method.gbuffer);
+        const std::size_t perPixel = gbufferBytesPerPixel(s.method.gbuffer, materialFeatures);
         std::printf("G-buffer: %s, %zu B per pixel, %.2f MiB at %dx%d (depth: the frame's depth buffer)\n",
                     gbufferFormatName(s.method.gbuffer), perPixel,
                     static_cast<double>(perPixel) * s.width * s.height / 1048576.0, s.width, s.height);

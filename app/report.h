@@ -18,7 +18,7 @@ void printSceneSummary(const PreparedFrame& frame);
 void printNotes(const PreparedFrame& frame);
 void printClusterStatistics(const ClusterStatistics& stats);
 // The shading options of the frame (--specular, --gbuffer, --prepass, --bloom) and what they cost in memory.
-void printShadingOptions(const FrameSettings& settings);
+void printShadingOptions(const FrameSettings& settings, std::uint32_t materialFeatures);
 // "cull aabb: 548,302 references, of which 40.1 % reach no point of their cluster".
 void printCullAccuracy(const ClusterStatistics& stats, const CullAccuracy& accuracy);
 // Throws std::runtime_error naming the path.

@@ -84,7 +84,7 @@ void main() {
         if (clipped) record.y = clippedTriangles[5u * (item - largeCount) + 3u].w;
         uint fine = record.z & ML_RASTER_FINE_PAIR;
         int size = fine != 0u ? ML_RASTER_FINE_TILE : ML_RASTER_TILE;
-        uvec2 lo = uvec2(record.z & 0x7fffu, record.z >> 16), hi = uvec2(record.w & 0xffffu, record.w >> 16);
+        uvec2 lo = uvec2(record.z & ML_RASTER_PAIR_TILE_X, record.z >> 16), hi = uvec2(record.w & 0xffffu, record.w >> 16);
         uvec2 extent = hi - lo + 1u;
         uint boundsTiles = extent.x * extent.y;
         uint index = large & ~ML_RASTER_CLIPPED_PAIR;

@@ -31,13 +31,15 @@ uniform uint u_pairCapacity;
 uniform uint u_firstTriangle, u_triangles;  // the span this dispatch's texture set covers
 #endif
 
-RasterTriangle largeTriangle(uint index) {
+// The large triangle at index and (out) its id.
+RasterTriangle largeTriangle(uint index, out uint id) {
     uvec4 r0 = largeTriangles[3u * index], r1 = largeTriangles[3u * index + 1u], r2 = largeTriangles[3u * index + 2u];
     RasterTriangle t;
     t.v0 = ivec2(r0.xy);
     t.v1 = ivec2(r0.zw);
     t.v2 = ivec2(r1.xy);
     t.z = vec3(uintBitsToFloat(r1.zw), uintBitsToFloat(r2.x));
+    id = r2.y;
     return t;
 }
 
@@ -45,17 +47,18 @@ void main() {
     uint count = min(rasterWork[ML_RASTER_PAIR_COUNT], u_pairCapacity);
     for (uint pair = gl_WorkGroupID.x; pair < count; pair += gl_NumWorkGroups.x) {
         uvec2 entry = pairs[pair];
-        ivec2 tile = ivec2(entry.y & 0x7fffu, entry.y >> 16);
+        ivec2 tile = ivec2(entry.y & ML_RASTER_PAIR_TILE_X, entry.y >> 16);
         if ((entry.y & ML_RASTER_FINE_PAIR) != 0u) {
             // An 8x8 tile (never a clipped triangle's): a pixel an invocation.
             ivec2 pixel = tile * ML_RASTER_FINE_TILE + ivec2(gl_LocalInvocationIndex % ML_RASTER_FINE_TILE, gl_LocalInvocationIndex / ML_RASTER_FINE_TILE);
             if (any(greaterThanEqual(pixel, ivec2(u_viewport.xy)))) continue;
-            RasterTriangle t = largeTriangle(entry.x);
+            uint id;
+            RasterTriangle t = largeTriangle(entry.x, id);
 #if ML_RASTER_ALPHA_TEST
-            if (largeTriangles[3u * entry.x + 2u].y - u_firstTriangle >= u_triangles) continue;  // another set's
+            if (id - u_firstTriangle >= u_triangles) continue;  // another set's
 #endif
             float depth;
-            if (rasterCoversEdges(t, rasterEdges64(t, pixel), depth)) rasterStoreCovered(pixel, depth, largeTriangles[3u * entry.x + 2u].y);
+            if (rasterCoversEdges(t, rasterEdges64(t, pixel), depth)) rasterStoreCovered(pixel, depth, id);
             continue;
         }
         ivec2 first = tile * ML_RASTER_TILE + ivec2(gl_LocalInvocationID.x, gl_LocalInvocationID.y * kRows);
@@ -77,10 +80,10 @@ void main() {
             }
             continue;
         }
-        RasterTriangle t = largeTriangle(entry.x);
-        uvec4 r2 = largeTriangles[3u * entry.x + 2u];
+        uint id;
+        RasterTriangle t = largeTriangle(entry.x, id);
 #if ML_RASTER_ALPHA_TEST
-        if (r2.y - u_firstTriangle >= u_triangles) continue;  // another set's
+        if (id - u_firstTriangle >= u_triangles) continue;  // another set's
 #endif
         // Every pixel's coverage and depth first, then the stores: their reads issue together.
         i64vec3 e = rasterEdges64(t, first);
@@ -92,6 +95,6 @@ void main() {
             e += down;
         }
         for (int row = 0; row < kRows; ++row)
-            if (covered[row]) rasterStoreCovered(first + ivec2(0, row), depths[row], r2.y);
+            if (covered[row]) rasterStoreCovered(first + ivec2(0, row), depths[row], id);
     }
 }

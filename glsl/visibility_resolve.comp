@@ -45,7 +45,7 @@ void storeGBuffer(ivec2 p, GBufferTexel t) {
     imageStore(u_gTarget0Out, p, t.target[0]);
     imageStore(u_gTarget1Out, p, t.target[1]);
 #if ML_GBUFFER_FLOAT_TARGETS == 3
-    imageStore(u_gTarget2Out, p, t.target[2]);
+    if (gbufferUsesTarget2(t)) imageStore(u_gTarget2Out, p, t.target[2]);
 #endif
 #endif
 }

@@ -33,15 +33,22 @@ const gl::Framebuffer& GBuffer::prepare(const FrameTargets& frame) {
         targets_.clear();
         switch (format_) {
         case GBufferFormat::Standard:
-        case GBufferFormat::Exact: {
-            // The same three targets: normal (exact: ray distance and normal), albedo, specular.
-            const GLenum format = format_ == GBufferFormat::Exact ? GL_RGBA32F : GL_RGBA16F;
-            targets_.emplace_back("gbuffer.normal", format, width_, height_);
-            targets_.emplace_back("gbuffer.albedo", format, width_, height_);
-            targets_.emplace_back("gbuffer.specular", format, width_, height_);
+            targets_.emplace_back("gbuffer.normal", GL_RGBA16F, width_, height_);
+            targets_.emplace_back("gbuffer.albedo", GL_RGBA16F, width_, height_);
+            targets_.emplace_back("gbuffer.specular", GL_RGBA16F, width_, height_);
             fbo_ = gl::Framebuffer("gbuffer", {&targets_[0], &targets_[1], &targets_[2]}, &frame.depth());
             break;
-        }
+        case GBufferFormat::Exact:
+            // Emissive and occlusion in a third target only where the scene has them (gbuffer_layout.glsl).
+            targets_.emplace_back("gbuffer.distance-normal-roughness", GL_RGBA32F, width_, height_);
+            targets_.emplace_back("gbuffer.albedo", GL_RGBA32F, width_, height_);
+            if (gbufferExactHasExtras(materialFeatures_)) {
+                targets_.emplace_back("gbuffer.emissive-occlusion", GL_RGBA32F, width_, height_);
+                fbo_ = gl::Framebuffer("gbuffer", {&targets_[0], &targets_[1], &targets_[2]}, &frame.depth());
+            } else {
+                fbo_ = gl::Framebuffer("gbuffer", {&targets_[0], &targets_[1]}, &frame.depth());
+            }
+            break;
         case GBufferFormat::Packed:
             targets_.emplace_back("gbuffer.packed", GL_RGBA32UI, width_, height_);
             fbo_ = gl::Framebuffer("gbuffer", {&targets_[0]}, &frame.depth());

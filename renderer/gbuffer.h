@@ -27,7 +27,9 @@ public:
     // (include/gbuffer_fetch.glsl) by the lighting and by --normal-cones' normal bins.
     void bindForReading() const;
     void bindForWriting() const;  // as images at ML_IMG_GBUFFER0.. (compute writes)
-    std::size_t bytes() const { return static_cast<std::size_t>(width_) * height_ * gbufferBytesPerPixel(format_); }
+    std::size_t bytes() const {
+        return static_cast<std::size_t>(width_) * height_ * gbufferBytesPerPixel(format_, materialFeatures_);
+    }
 
 private:
     GBufferFormat format_;

@@ -2,6 +2,8 @@
 
 #include <stdexcept>
 
+#include "glsl/include/bindings.h"
+
 namespace ml {
 
 namespace {
@@ -14,7 +16,7 @@ constexpr FormatEntry kFormats[] = {
     {GBufferFormat::Standard, "standard", 24},          // 3 x RGBA16F
     {GBufferFormat::Packed, "packed", 16},              // 1 x RGBA32UI
     {GBufferFormat::TwoComponent, "two-component", 16}, // 2 x RGBA16F
-    {GBufferFormat::Exact, "exact", 48},                // 3 x RGBA32F
+    {GBufferFormat::Exact, "exact", 48},                // 3 x RGBA32F (2 without emissive or occlusion)
 };
 
 const FormatEntry& entry(GBufferFormat format) {
@@ -41,6 +43,14 @@ GBufferFormat parseGBufferFormat(const std::string& text) {
 
 const char* gbufferFormatName(GBufferFormat format) { return entry(format).name; }
 
-std::size_t gbufferBytesPerPixel(GBufferFormat format) { return entry(format).bytesPerPixel; }
+bool gbufferExactHasExtras(std::uint32_t materialFeatures) {
+    return (materialFeatures & (ML_FEATURE_EMISSIVE | ML_FEATURE_OCCLUSION_MAP)) != 0;
+}
+
+std::size_t gbufferBytesPerPixel(GBufferFormat format, std::uint32_t materialFeatures) {
+    const std::size_t bytes = entry(format).bytesPerPixel;
+    if (format == GBufferFormat::Exact && !gbufferExactHasExtras(materialFeatures)) return bytes / 3 * 2;
+    return bytes;
+}
 
 }  // namespace ml

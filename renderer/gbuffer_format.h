@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -12,13 +13,17 @@ enum class GBufferFormat {
     Standard,      // three RGBA16F targets: normal, albedo, specular parameters
     Packed,        // one RGBA32UI target: octahedral normal, albedo RGBA8, specular 2 x half
     TwoComponent,  // two RGBA16F targets; the normal's z is rebuilt as +sqrt: the documented failure case
-    Exact,         // three RGBA32F targets: ray distance, normal, material as shaded; lossless
+    Exact,         // two or three RGBA32F targets: ray distance, normal, material as shaded; lossless
 };
 
 const std::vector<std::string>& gbufferFormatNames();
 GBufferFormat parseGBufferFormat(const std::string& text);  // throws std::invalid_argument naming the value
 const char* gbufferFormatName(GBufferFormat format);
-// Colour bytes per pixel (depth is the frame's own depth buffer, counted with the frame targets).
-std::size_t gbufferBytesPerPixel(GBufferFormat format);
+// Colour bytes per pixel for a scene whose materials use materialFeatures (the ML_FEATURE_* bits):
+// the exact layout keeps emissive and occlusion in a third target only where the scene has them.
+// Depth is the frame's own depth buffer, counted with the frame targets.
+std::size_t gbufferBytesPerPixel(GBufferFormat format, std::uint32_t materialFeatures);
+// Does the exact layout hold its third target (emissive, occlusion) for these materials?
+bool gbufferExactHasExtras(std::uint32_t materialFeatures);
 
 }  // namespace ml

@@ -160,7 +160,7 @@ int runRender(RenderOptions o) {
         std::printf("scene submission: %s, %zu draw calls per textured raster pass (%zu draw ranges)\n",
                     drawSubmissionName(renderer.scene().submission()), renderer.scene().drawCallsPerPass(),
                     renderer.scene().drawRangeCount());
-        printShadingOptions(frame.settings);
+        printShadingOptions(frame.settings, renderer.scene().materialFeatures());
         // Lights that touch no surface light nothing, yet are culled and assigned all the same.
         const SurfaceReach reach = measureSurfaceReach(frame.scene, frame.lights);
         if (reach.lights > 0)

@@ -366,7 +366,7 @@ void statisticsSection(const ViewStatistics& st) {
         ImGui::TextColored(kDim, "no clusters: naive shades %zu lights per pixel", st.lights);
     }
     if (st.gbuffer) {
-        const std::size_t perPixel = gbufferBytesPerPixel(*st.gbuffer);
+        const std::size_t perPixel = st.gbufferPixelBytes;
         ImGui::Text("G-buffer %s: %zu B/pixel, %s", gbufferFormatName(*st.gbuffer), perPixel,
                     mebibytes(perPixel * static_cast<std::size_t>(st.width) * st.height).c_str());
     } else {

@@ -58,6 +58,7 @@ struct ViewStatistics {
     std::optional<ClusterStatistics> clusters;  // clustered methods; refreshed a few times a second
     std::size_t rendererBytes = 0;           // the renderer's buffers and targets
     std::optional<GBufferFormat> gbuffer;    // the layout, where the method has a G-buffer
+    std::size_t gbufferPixelBytes = 0;       // what it stores a pixel for this scene's materials
     std::optional<std::size_t> gpuUsedBytes; // the whole GPU, where GL_NVX_gpu_memory_info says
     std::string glRenderer, glVersion;
     int width = 0, height = 0;                // the renderer's (the window's times the render scale)

@@ -406,7 +406,10 @@ void ViewSession::refreshStatistics(bool now, bool rendered) {
     if (clustering) stats_.clusters = clustering->statistics();
     else stats_.clusters.reset();
     const MethodSettings& method = renderer_->settings().method;
-    if (method.kind == MethodKind::Deferred || method.kind == MethodKind::Visibility) stats_.gbuffer = method.gbuffer;
+    if (method.kind == MethodKind::Deferred || method.kind == MethodKind::Visibility) {
+        stats_.gbuffer = method.gbuffer;
+        stats_.gbufferPixelBytes = gbufferBytesPerPixel(method.gbuffer, renderer_->scene().materialFeatures());
+    }
     else stats_.gbuffer.reset();
     std::size_t bytes = renderer_->scene().bytes() + renderer_->lights().bytes() + renderer_->targets().bytes() +
                         renderer_->method().extraTargetBytes() + renderer_->bloom().bytes();

@@ -23,7 +23,7 @@ GBufferTexel fetchGBuffer(ivec2 p) {
     t.target[0] = texelFetch(u_gTarget0, p, 0);
     t.target[1] = texelFetch(u_gTarget1, p, 0);
 #if ML_GBUFFER_FLOAT_TARGETS == 3
-    t.target[2] = texelFetch(u_gTarget2, p, 0);
+    if (gbufferUsesTarget2(t)) t.target[2] = texelFetch(u_gTarget2, p, 0);
 #endif
 #endif
     return t;

@@ -14,9 +14,12 @@
 //                  z is rebuilt as +sqrt(1 - x^2 - y^2): every normal with z < 0 (world space) is mirrored
 //                  to z > 0, so surfaces facing -z are lit as if they faced +z. The documented failure case.
 //   exact          target 0 RGBA32F distance along the pixel's ray, octahedral normal (2 x fp32),
-//                  occlusion   target 1 RGBA32F base colour, metallic   target 2 RGBA32F roughness,
-//                  emissive rgb. Every value as the shading computed it, and the position with
-//                  it (no depth-buffer rounding): the lighting sees what naive's fragment sees.     48 B
+//                  roughness   target 1 RGBA32F base colour, metallic   target 2 RGBA32F emissive
+//                  rgb, occlusion: only where the scene has emissive materials or occlusion maps,
+//                  written and read only at pixels whose emissive is not zero or occlusion not one
+//                  (roughness's sign bit says which; roughness is never negative). Every value as
+//                  the shading computed it, and the position with it (no depth-buffer rounding):
+//                  the lighting sees what naive's fragment sees.                               32-48 B
 // The lossy layouts lose what a bright many-light sum makes visible on glossy, normal-mapped
 // content (docs/accuracy-and-stability.md#g-buffer-precision-on-glossy-normal-mapped-surfaces).
 #include "include/material_features.glsl"
@@ -26,8 +29,13 @@
 #define ML_GBUFFER_FORMAT ML_GBUFFER_STANDARD
 #endif
 
-#if ML_GBUFFER_FORMAT == ML_GBUFFER_STANDARD || ML_GBUFFER_FORMAT == ML_GBUFFER_EXACT
+// The exact layout's target 2 (emissive, occlusion) exists where the scene has either.
+#define ML_GBUFFER_EXACT_EXTRAS (ML_HAS(ML_FEATURE_EMISSIVE) || ML_HAS(ML_FEATURE_OCCLUSION_MAP))
+
+#if ML_GBUFFER_FORMAT == ML_GBUFFER_STANDARD || (ML_GBUFFER_FORMAT == ML_GBUFFER_EXACT && ML_GBUFFER_EXACT_EXTRAS)
 #define ML_GBUFFER_FLOAT_TARGETS 3
+#elif ML_GBUFFER_FORMAT == ML_GBUFFER_EXACT
+#define ML_GBUFFER_FLOAT_TARGETS 2
 #elif ML_GBUFFER_FORMAT == ML_GBUFFER_TWO_COMPONENT
 #define ML_GBUFFER_FLOAT_TARGETS 2
 #else
@@ -96,16 +104,33 @@ vec3 unpackRgb9e5(uint v) {
 // position to the bit (pixel_ray.glsl).
 vec3 gbufferPosition(GBufferTexel t, vec2 windowPos) { return pixelRayPoint(windowPos, t.target[0].x); }
 
+// The exact layout flags a pixel whose target 2 holds something (emissive or occlusion) in the
+// sign bit of its roughness, so that the pixels without (most of them) neither write nor read it.
+const uint kGBufferTarget2Flag = 0x80000000u;
+
+// Does this pixel's target 2 hold what decodeGBuffer needs? Known from target 0 alone.
+bool gbufferUsesTarget2(GBufferTexel t) {
+#if ML_GBUFFER_FORMAT == ML_GBUFFER_EXACT
+    return (floatBitsToUint(t.target[0].w) & kGBufferTarget2Flag) != 0u;
+#else
+    return ML_GBUFFER_FLOAT_TARGETS == 3;
+#endif
+}
+
 GBufferTexel encodeGBuffer(SurfacePoint s) {
     GBufferTexel t;
     t.target[0] = t.target[1] = t.target[2] = vec4(0.0);
     t.bits = uvec4(0u);
-#if ML_GBUFFER_FORMAT == ML_GBUFFER_EXACT || ML_GBUFFER_FORMAT == ML_GBUFFER_STANDARD
 #if ML_GBUFFER_FORMAT == ML_GBUFFER_EXACT
-    t.target[0] = vec4(s.rayDistance, octEncode(s.normal), s.occlusion);
-#else
-    t.target[0] = vec4(s.normal, s.occlusion);
+    uint roughnessBits = floatBitsToUint(s.roughness);
+#if ML_GBUFFER_EXACT_EXTRAS
+    t.target[2] = vec4(s.emissive, s.occlusion);
+    if (s.emissive != vec3(0.0) || s.occlusion != 1.0) roughnessBits |= kGBufferTarget2Flag;
 #endif
+    t.target[0] = vec4(s.rayDistance, octEncode(s.normal), uintBitsToFloat(roughnessBits));
+    t.target[1] = vec4(s.baseColor, s.metallic);
+#elif ML_GBUFFER_FORMAT == ML_GBUFFER_STANDARD
+    t.target[0] = vec4(s.normal, s.occlusion);
     t.target[1] = vec4(s.baseColor, s.metallic);
     t.target[2] = vec4(s.roughness, s.emissive);
 #elif ML_GBUFFER_FORMAT == ML_GBUFFER_PACKED
@@ -124,12 +149,18 @@ GBufferTexel encodeGBuffer(SurfacePoint s) {
 // Fills the surface's normal (unit length) and material, then its shading terms.
 void decodeGBuffer(GBufferTexel t, inout SurfacePoint s) {
     s.emissive = vec3(0.0);
-#if ML_GBUFFER_FORMAT == ML_GBUFFER_EXACT || ML_GBUFFER_FORMAT == ML_GBUFFER_STANDARD
 #if ML_GBUFFER_FORMAT == ML_GBUFFER_EXACT
     s.normal = octDecode(t.target[0].yz);
-#else
+    s.roughness = uintBitsToFloat(floatBitsToUint(t.target[0].w) & ~kGBufferTarget2Flag);
+    s.baseColor = t.target[1].rgb;
+    s.metallic = t.target[1].w;
+    s.occlusion = 1.0;
+    if (gbufferUsesTarget2(t)) {
+        s.emissive = t.target[2].rgb;
+        s.occlusion = t.target[2].w;
+    }
+#elif ML_GBUFFER_FORMAT == ML_GBUFFER_STANDARD
     s.normal = normalize(t.target[0].xyz);  // 16-bit storage: restore unit length
-#endif
     s.occlusion = t.target[0].w;
     s.baseColor = t.target[1].rgb;
     s.metallic = t.target[1].w;

@@ -4,6 +4,7 @@
 // is the documented failure case, shown on surfaces whose stored (world-space) normal has z < 0.
 #include <gtest/gtest.h>
 
+#include "glsl/include/bindings.h"
 #include "gpu_test.h"
 
 namespace ml::test {
@@ -141,12 +142,19 @@ TEST_F(GBufferLayouts, BytesOfEveryLayoutFollowTheFormat) {
     for (GBufferFormat f : {GBufferFormat::Exact, GBufferFormat::Standard, GBufferFormat::Packed, GBufferFormat::TwoComponent}) {
         renderer.setMethod(withGBuffer(MethodKind::Deferred, f));
         renderer.render(0);
-        EXPECT_EQ(renderer.method().extraTargetBytes(), 64u * 48u * gbufferBytesPerPixel(f)) << gbufferFormatName(f);
+        EXPECT_EQ(renderer.method().extraTargetBytes(), 64u * 48u * gbufferBytesPerPixel(f, renderer.scene().materialFeatures()))
+            << gbufferFormatName(f);
     }
-    EXPECT_EQ(gbufferBytesPerPixel(GBufferFormat::Exact), 48u);
-    EXPECT_EQ(gbufferBytesPerPixel(GBufferFormat::Standard), 24u);
-    EXPECT_EQ(gbufferBytesPerPixel(GBufferFormat::Packed), 16u);
-    EXPECT_EQ(gbufferBytesPerPixel(GBufferFormat::TwoComponent), 16u);
+    // The exact layout's third target (emissive, occlusion) only for scenes that have either.
+    EXPECT_EQ(gbufferBytesPerPixel(GBufferFormat::Exact, 0), 32u);
+    EXPECT_EQ(gbufferBytesPerPixel(GBufferFormat::Exact, ML_FEATURE_NORMAL_MAP | ML_FEATURE_METALLIC_ROUGHNESS_MAP), 32u);
+    EXPECT_EQ(gbufferBytesPerPixel(GBufferFormat::Exact, ML_FEATURE_EMISSIVE), 48u);
+    EXPECT_EQ(gbufferBytesPerPixel(GBufferFormat::Exact, ML_FEATURE_OCCLUSION_MAP), 48u);
+    for (std::uint32_t features : {0u, std::uint32_t(ML_FEATURE_EMISSIVE)}) {
+        EXPECT_EQ(gbufferBytesPerPixel(GBufferFormat::Standard, features), 24u);
+        EXPECT_EQ(gbufferBytesPerPixel(GBufferFormat::Packed, features), 16u);
+        EXPECT_EQ(gbufferBytesPerPixel(GBufferFormat::TwoComponent, features), 16u);
+    }
 }
 
 TEST(GBufferCommand, StatsPrintTheLayoutAndBadValuesAreRefused) {
@@ -155,6 +163,10 @@ TEST(GBufferCommand, StatsPrintTheLayoutAndBadValuesAreRefused) {
     ASSERT_EQ(runManylights("render --scene boxes --size 64x48 --lights 8 --gbuffer packed --stats --out " + out, output), 0)
         << output;
     EXPECT_NE(output.find("G-buffer: packed, 16 B per pixel"), std::string::npos) << output;
+    // boxes has no emissive material nor occlusion map: the exact layout stores two targets.
+    ASSERT_EQ(runManylights("render --scene boxes --size 64x48 --lights 8 --gbuffer exact --stats --out " + out, output), 0)
+        << output;
+    EXPECT_NE(output.find("G-buffer: exact, 32 B per pixel"), std::string::npos) << output;
     ASSERT_EQ(runManylights("render --scene boxes --size 64x48 --lights 8 --method forward-plus --gbuffer packed --stats --out " + out,
                             output), 0) << output;
     EXPECT_NE(output.find("--gbuffer is ignored"), std::string::npos) << output;
