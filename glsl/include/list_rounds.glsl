@@ -6,8 +6,8 @@
 // kept: a cluster is a whole screen tile deep in its slice, an 8x8 block of surface points far
 // smaller, so most of a long list falls away (Andersson 2011's tiled culling inside the
 // cluster's list). A light is dropped only where it adds exactly zero to every point (beyond its
-// radius, with a margin for rounding), and the rest are shaded in list order, so the sums are bit
-// for bit those of the per-point loop (shadeClusterLights). Needs cluster_lists (per-cluster
+// radius, or behind every served point's surface, with a margin for rounding), and the rest are
+// shaded in list order, so the sums are bit for bit those of the per-point loop (shadeClusterLights). Needs cluster_lists (per-cluster
 // lists, not ML_ZBIN), lights, shading and spot_cone; every invocation of the workgroup must
 // call serveListRound alike (it holds barriers).
 const uint kLightBatch = uint(ML_SCREEN_TILE * ML_SCREEN_TILE);  // one light per invocation
@@ -16,6 +16,7 @@ const uint kNoList = 0xFFFFFFFFu;
 
 shared uint s_listKey;
 shared uint s_boundsMin[3], s_boundsMax[3];  // the box of the served pixels, as orderedBits
+shared uint s_normalMin[3], s_normalMax[3];  // the box of their normals, likewise
 shared Light s_lights[kLightBatch];
 #if ML_SPOT_LIGHTS
 shared vec4 s_cones[kLightBatch];
@@ -29,13 +30,27 @@ uint orderedBits(float f) {
 }
 float orderedFloat(uint u) { return uintBitsToFloat((u & 0x80000000u) != 0u ? u & 0x7FFFFFFFu : ~u); }
 
-// Could the light add anything to a point in the box? Conservative: the margin covers the
-// rounding of the shader's own distance, and a NaN light is kept (the loop then does what the
-// per-pixel loop does with it). A spot must also reach the box's bounding sphere with its cone.
-bool lightReachesBox(vec4 positionRadius, vec4 cone, vec3 lo, vec3 hi) {
+// The served points' surfaces as one bound: every normal lies within `spread` of `axis`.
+struct NormalBound {
+    vec3 axis;
+    float spread;
+};
+
+// Could the light add anything to a point in the box [lo, hi] whose normal is within the bound?
+// Not where it is beyond its reach of the box, nor where it lies behind every such point's
+// surface: for a point p within its reach R and normal n, n.(L - p) is at most
+// axis.(L - centre) + |axis|.halfExtent + spread R, and where that is below zero the shading's
+// N.L is not above it (shadeIncoming adds nothing). Conservative: the margins cover the rounding
+// of the shader's own distance and N.L, and a NaN light or normal is kept (the loop then does
+// what the per-pixel loop does with it). A spot must also reach the box's bounding sphere with
+// its cone.
+bool lightReachesBox(vec4 positionRadius, vec4 cone, vec3 lo, vec3 hi, NormalBound normals) {
     vec3 d = positionRadius.xyz - clamp(positionRadius.xyz, lo, hi);
     float reach = positionRadius.w * 1.001 + 1e-3;
     if (dot(d, d) > reach * reach) return false;
+    vec3 centre = 0.5 * (lo + hi), halfExtent = 0.5 * (hi - lo);
+    float front = dot(normals.axis, positionRadius.xyz - centre) + dot(abs(normals.axis), halfExtent) + normals.spread * reach;
+    if (front < -(1e-3 * reach + 1e-4)) return false;
     return spotMayReachSphere(positionRadius.xyz, cone.xyz, cone.w, reach, 0.5 * (lo + hi), 0.5 * length(hi - lo) + 1e-3);
 }
 
@@ -48,8 +63,8 @@ bool serveListRound(uint pending, SurfacePoint s, vec3 viewDir, inout LightSum l
     if (lane == 0u) {
         s_listKey = kNoList;
         for (int a = 0; a < 3; ++a) {
-            s_boundsMin[a] = 0xFFFFFFFFu;
-            s_boundsMax[a] = 0u;
+            s_boundsMin[a] = s_normalMin[a] = 0xFFFFFFFFu;
+            s_boundsMax[a] = s_normalMax[a] = 0u;
         }
     }
     if (lane < kMaskWords) s_reaches[0][lane] = 0u;
@@ -64,11 +79,17 @@ bool serveListRound(uint pending, SurfacePoint s, vec3 viewDir, inout LightSum l
         for (int a = 0; a < 3; ++a) {
             atomicMin(s_boundsMin[a], orderedBits(s.position[a]));
             atomicMax(s_boundsMax[a], orderedBits(s.position[a]));
+            atomicMin(s_normalMin[a], orderedBits(s.normal[a]));
+            atomicMax(s_normalMax[a], orderedBits(s.normal[a]));
         }
     }
     barrier();
     vec3 lo = vec3(orderedFloat(s_boundsMin[0]), orderedFloat(s_boundsMin[1]), orderedFloat(s_boundsMin[2]));
     vec3 hi = vec3(orderedFloat(s_boundsMax[0]), orderedFloat(s_boundsMax[1]), orderedFloat(s_boundsMax[2]));
+    vec3 normalLo = vec3(orderedFloat(s_normalMin[0]), orderedFloat(s_normalMin[1]), orderedFloat(s_normalMin[2]));
+    vec3 normalHi = vec3(orderedFloat(s_normalMax[0]), orderedFloat(s_normalMax[1]), orderedFloat(s_normalMax[2]));
+    // Every normal lies in the box, so within half its diagonal of its centre (rounded up).
+    NormalBound normals = NormalBound(0.5 * (normalLo + normalHi), 0.5 * length(normalHi - normalLo) * 1.001 + 1e-5);
     uvec2 range = clusterListRange(listKey);
     uint parity = 0u;
     for (uint base = 0u; base < range.y; base += kLightBatch) {
@@ -82,7 +103,7 @@ bool serveListRound(uint pending, SurfacePoint s, vec3 viewDir, inout LightSum l
 #if ML_SPOT_LIGHTS
             s_cones[lane] = cone;
 #endif
-            if (lightReachesBox(l.positionRadius, cone, lo, hi)) atomicOr(s_reaches[parity][lane / 32u], 1u << (lane % 32u));
+            if (lightReachesBox(l.positionRadius, cone, lo, hi, normals)) atomicOr(s_reaches[parity][lane / 32u], 1u << (lane % 32u));
         }
         barrier();
         if (served) {
