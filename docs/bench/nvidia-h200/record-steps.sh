@@ -55,6 +55,10 @@ gas-1 --scene $G --camera gltf:1
 LIST
   ;;
 sponza)
+  # Sponza travels in four parts (.sponza-part0..3) in one call and stays while the machine does.
+  if [ ! -d /root/.corpus-sponza ] && [ -f .sponza-part0 ]; then
+    mkdir -p /root/.corpus-sponza && cat .sponza-part0 .sponza-part1 .sponza-part2 .sponza-part3 | tar x -C /root/.corpus-sponza
+  fi
   [ -d .corpus-sponza ] || cp -r /root/.corpus-sponza .
   for build in $BUILDS; do
     timeout 240 ${build#*:}/manylights bench --sweep docs/bench/nvidia-h200/raster-tiles/sponza.sweep.json --backend egl \

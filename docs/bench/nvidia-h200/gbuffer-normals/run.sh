@@ -12,11 +12,9 @@
 # First call (call1/): warm, round 1, sponza 1, frames, targets-4m, round 2, sponza 2. Second
 # (call2/), with BUILDS='main:.devbin-main ncull:.devbin-ncull': round 3, sponza 3, headline,
 # round 4, sponza 4 (its warm-up by hand, with the bench's default radius: call2/warm.log).
+# Sponza's parts are unpacked by ../record-steps.sh's sponza step (this script did so itself then).
 S=docs/bench/nvidia-h200/gbuffer-normals
 BUILDS=${BUILDS:-'main:.devbin-main g32:.devbin-g32 ncull:.devbin-ncull'}
 NEW=${NEW:-.devbin-ncull}
 HEADLINE=${HEADLINE:-ncull:.devbin-ncull}
-if [ "${1:-}" = sponza ] && [ ! -d /root/.corpus-sponza ]; then
-  mkdir -p /root/.corpus-sponza && cat .sponza-part0 .sponza-part1 .sponza-part2 .sponza-part3 | tar x -C /root/.corpus-sponza
-fi
 . docs/bench/nvidia-h200/record-steps.sh "$@"
