@@ -16,6 +16,9 @@ const uint kNoList = 0xFFFFFFFFu;
 
 shared uint s_listKey;
 shared uint s_boundsMin[3], s_boundsMax[3];  // the box of the served pixels, as orderedBits
+#ifndef ML_LIST_ROUNDS_NORMAL_BOUND
+#define ML_LIST_ROUNDS_NORMAL_BOUND 1  // drop the lights behind every served point's surface
+#endif
 shared uint s_normalMin[3], s_normalMax[3];  // the box of their normals, likewise
 shared Light s_lights[kLightBatch];
 #if ML_SPOT_LIGHTS
@@ -30,13 +33,17 @@ uint orderedBits(float f) {
 }
 float orderedFloat(uint u) { return uintBitsToFloat((u & 0x80000000u) != 0u ? u & 0x7FFFFFFFu : ~u); }
 
-// The served points' surfaces as one bound: every normal lies within `spread` of `axis`.
-struct NormalBound {
-    vec3 axis;
+// The served points as the tests below read them, worked out once a round.
+struct ServedBounds {
+    vec3 lo, hi;         // the box of their positions
+    vec3 centre;
+    float halfDiagonal;  // the box's, grown for rounding: its bounding sphere for the spot test
+    vec3 axis;           // every normal lies within spread of axis
     float spread;
+    float slack;         // |axis|.halfExtent: the most axis.(centre - p) reaches over the box
 };
 
-// Could the light add anything to a point in the box [lo, hi] whose normal is within the bound?
+// Could the light add anything to a point in the box whose normal is within spread of axis?
 // Not where it is beyond its reach of the box, nor where it lies behind every such point's
 // surface: for a point p within its reach R and normal n, n.(L - p) is at most
 // axis.(L - centre) + |axis|.halfExtent + spread R, and where that is below zero the shading's
@@ -44,14 +51,15 @@ struct NormalBound {
 // of the shader's own distance and N.L, and a NaN light or normal is kept (the loop then does
 // what the per-pixel loop does with it). A spot must also reach the box's bounding sphere with
 // its cone.
-bool lightReachesBox(vec4 positionRadius, vec4 cone, vec3 lo, vec3 hi, NormalBound normals) {
-    vec3 d = positionRadius.xyz - clamp(positionRadius.xyz, lo, hi);
+bool lightReachesBox(vec4 positionRadius, vec4 cone, ServedBounds b) {
+    vec3 d = positionRadius.xyz - clamp(positionRadius.xyz, b.lo, b.hi);
     float reach = positionRadius.w * 1.001 + 1e-3;
     if (dot(d, d) > reach * reach) return false;
-    vec3 centre = 0.5 * (lo + hi), halfExtent = 0.5 * (hi - lo);
-    float front = dot(normals.axis, positionRadius.xyz - centre) + dot(abs(normals.axis), halfExtent) + normals.spread * reach;
+#if ML_LIST_ROUNDS_NORMAL_BOUND
+    float front = dot(b.axis, positionRadius.xyz - b.centre) + b.slack + b.spread * reach;
     if (front < -(1e-3 * reach + 1e-4)) return false;
-    return spotMayReachSphere(positionRadius.xyz, cone.xyz, cone.w, reach, 0.5 * (lo + hi), 0.5 * length(hi - lo) + 1e-3);
+#endif
+    return spotMayReachSphere(positionRadius.xyz, cone.xyz, cone.w, reach, b.centre, b.halfDiagonal);
 }
 
 // One round. `pending`: the list key this invocation waits for (kNoList: none); `s`, `viewDir`:
@@ -79,17 +87,26 @@ bool serveListRound(uint pending, SurfacePoint s, vec3 viewDir, inout LightSum l
         for (int a = 0; a < 3; ++a) {
             atomicMin(s_boundsMin[a], orderedBits(s.position[a]));
             atomicMax(s_boundsMax[a], orderedBits(s.position[a]));
+#if ML_LIST_ROUNDS_NORMAL_BOUND
             atomicMin(s_normalMin[a], orderedBits(s.normal[a]));
             atomicMax(s_normalMax[a], orderedBits(s.normal[a]));
+#endif
         }
     }
     barrier();
-    vec3 lo = vec3(orderedFloat(s_boundsMin[0]), orderedFloat(s_boundsMin[1]), orderedFloat(s_boundsMin[2]));
-    vec3 hi = vec3(orderedFloat(s_boundsMax[0]), orderedFloat(s_boundsMax[1]), orderedFloat(s_boundsMax[2]));
+    ServedBounds b;
+    b.lo = vec3(orderedFloat(s_boundsMin[0]), orderedFloat(s_boundsMin[1]), orderedFloat(s_boundsMin[2]));
+    b.hi = vec3(orderedFloat(s_boundsMax[0]), orderedFloat(s_boundsMax[1]), orderedFloat(s_boundsMax[2]));
+    b.centre = 0.5 * (b.lo + b.hi);
+    b.halfDiagonal = 0.5 * length(b.hi - b.lo) + 1e-3;
+#if ML_LIST_ROUNDS_NORMAL_BOUND
     vec3 normalLo = vec3(orderedFloat(s_normalMin[0]), orderedFloat(s_normalMin[1]), orderedFloat(s_normalMin[2]));
     vec3 normalHi = vec3(orderedFloat(s_normalMax[0]), orderedFloat(s_normalMax[1]), orderedFloat(s_normalMax[2]));
     // Every normal lies in the box, so within half its diagonal of its centre (rounded up).
-    NormalBound normals = NormalBound(0.5 * (normalLo + normalHi), 0.5 * length(normalHi - normalLo) * 1.001 + 1e-5);
+    b.axis = 0.5 * (normalLo + normalHi);
+    b.spread = 0.5 * length(normalHi - normalLo) * 1.001 + 1e-5;
+    b.slack = dot(abs(b.axis), 0.5 * (b.hi - b.lo));
+#endif
     uvec2 range = clusterListRange(listKey);
     uint parity = 0u;
     for (uint base = 0u; base < range.y; base += kLightBatch) {
@@ -103,7 +120,7 @@ bool serveListRound(uint pending, SurfacePoint s, vec3 viewDir, inout LightSum l
 #if ML_SPOT_LIGHTS
             s_cones[lane] = cone;
 #endif
-            if (lightReachesBox(l.positionRadius, cone, lo, hi, normals)) atomicOr(s_reaches[parity][lane / 32u], 1u << (lane % 32u));
+            if (lightReachesBox(l.positionRadius, cone, b)) atomicOr(s_reaches[parity][lane / 32u], 1u << (lane % 32u));
         }
         barrier();
         if (served) {
