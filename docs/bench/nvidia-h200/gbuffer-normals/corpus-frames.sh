@@ -2,8 +2,9 @@
 # Every file of ../shared/corpus (carried as .corpus/corpus) rendered by main and by the change,
 # 1280x720, the file's lights plus 4,096 generated ones, the visibility buffer with each raster
 # and deferred, at the file's default view (Sponza and the gas station at each of their cameras):
-# one line a frame, the HDR output of the change against main's. Run by the third call after
-# ../record-steps.sh's variables (BASE and NEW: 'label:folder'); writes $OUT/corpus-frames.txt.
+# one line a frame, the HDR output of the change against main's. Run by the third call with
+# ../record-steps.sh's variables (BASE: 'label:folder'; NEW: the folder, or 'label:folder');
+# writes $OUT/corpus-frames.txt.
 set -u
 export LD_LIBRARY_PATH=$PWD/.devbin-lib
 B=${BASE#*:} N=${NEW#*:}
