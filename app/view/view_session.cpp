@@ -409,8 +409,9 @@ void ViewSession::refreshStatistics(bool now, bool rendered) {
     if (method.kind == MethodKind::Deferred || method.kind == MethodKind::Visibility) {
         stats_.gbuffer = method.gbuffer;
         stats_.gbufferPixelBytes = gbufferBytesPerPixel(method.gbuffer, renderer_->scene().materialFeatures());
+    } else {
+        stats_.gbuffer.reset();
     }
-    else stats_.gbuffer.reset();
     std::size_t bytes = renderer_->scene().bytes() + renderer_->lights().bytes() + renderer_->targets().bytes() +
                         renderer_->method().extraTargetBytes() + renderer_->bloom().bytes();
     if (stats_.clusters) bytes += stats_.clusters->listBytes + stats_.clusters->gridBytes;

@@ -7,9 +7,9 @@
 // smaller, so most of a long list falls away (Andersson 2011's tiled culling inside the
 // cluster's list). A light is dropped only where it adds exactly zero to every point (beyond its
 // radius, or behind every served point's surface, with a margin for rounding), and the rest are
-// shaded in list order, so the sums are bit for bit those of the per-point loop (shadeClusterLights). Needs cluster_lists (per-cluster
-// lists, not ML_ZBIN), lights, shading and spot_cone; every invocation of the workgroup must
-// call serveListRound alike (it holds barriers).
+// shaded in list order, so the sums are bit for bit those of the per-point loop
+// (shadeClusterLights). Needs cluster_lists (per-cluster lists, not ML_ZBIN), lights, shading and
+// spot_cone; every invocation of the workgroup must call serveListRound alike (it holds barriers).
 const uint kLightBatch = uint(ML_SCREEN_TILE * ML_SCREEN_TILE);  // one light per invocation
 const uint kMaskWords = (kLightBatch + 31u) / 32u;
 const uint kNoList = 0xFFFFFFFFu;

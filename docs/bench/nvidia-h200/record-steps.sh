@@ -11,6 +11,7 @@
 #   warm          a minute of frames, so that the SM clock has risen before a round
 #   round <n>     $S/targets.sweep.json, every build
 #   frames        the HDR and 8-bit frames of the first build and $NEW at 1280x720, 4,096 lights
+#                 (the atrium's four cameras and the gas station's two, both rasters)
 #   sponza <n>    Sponza's four cameras at 1,048,576 lights, every build (Sponza's 14 MB do not
 #                 travel beside the tree and the builds: earlier calls carry it in parts
 #                 into /root/.corpus-sponza/corpus/amd/sponza while the machine stays warm)
@@ -50,8 +51,12 @@ atrium-roof --scene atrium --camera 0,28,0.5,0,0,0,60
 atrium-corner --scene atrium --camera -16,3,-4.5,16,1.5,4.5,60
 atrium-default-compute --scene atrium --vis-raster compute
 atrium-roof-compute --scene atrium --vis-raster compute --camera 0,28,0.5,0,0,0,60
+atrium-gallery-compute --scene atrium --vis-raster compute --camera -15,1.7,-6.3,15,1.7,-6.3,60
+atrium-corner-compute --scene atrium --vis-raster compute --camera -16,3,-4.5,16,1.5,4.5,60
 gas-0 --scene $G --camera gltf:0
 gas-1 --scene $G --camera gltf:1
+gas-0-compute --scene $G --vis-raster compute --camera gltf:0
+gas-1-compute --scene $G --vis-raster compute --camera gltf:1
 LIST
   ;;
 sponza)
