@@ -9,6 +9,7 @@ the second number of a `#line` is an index into the file table written beside th
 Outputs under --out:
   resolved/<name>         the resolved source, as the driver will see it (before runtime defines)
   embedded_shaders.cpp    the sources and file table as C++ string literals
+  variants/<macro>/<name> the resolved source with a VARIANTS define set, validated too
   validated.stamp         touched after every shader passed glslangValidator
 """
 import argparse
@@ -19,6 +20,10 @@ import sys
 
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"\s*$')
 STAGES = (".vert", ".frag", ".comp")
+# Runtime defines that switch a shader to code the build machine's GPU never compiles: a shader
+# that names one is validated a second time with it set (the H200's driver refused a raster pass
+# that used 64-bit atomics without enabling their extension; llvmpipe runs the other path).
+VARIANTS = {"ML_RASTER_ATOMIC64": "1"}
 
 
 class ShaderError(Exception):
@@ -94,13 +99,24 @@ def main():
         shaders.append((name, text, out_path))
 
     failed = False
-    for name, _, out_path in shaders:
-        result = subprocess.run([args.validator, str(out_path)], capture_output=True, text=True)
-        if result.returncode != 0:
-            failed = True
-            message = (result.stdout + result.stderr).strip()
-            print(f"error: {name} failed glslangValidator:\n{message}\n(file ids: "
-                  + ", ".join(f"{i}={f}" for i, f in enumerate(files)) + ")", file=sys.stderr)
+    for name, text, out_path in shaders:
+        checks = [("", out_path)]
+        for macro, value in VARIANTS.items():
+            if macro not in text:
+                continue
+            # Set right after #version, as the program does at run time.
+            variant_path = args.out / "variants" / macro / name
+            variant_path.parent.mkdir(parents=True, exist_ok=True)
+            first, _, rest = text.partition("\n")
+            variant_path.write_text(f"{first}\n#define {macro} {value}\n{rest}")
+            checks.append((f" with {macro} {value}", variant_path))
+        for label, path in checks:
+            result = subprocess.run([args.validator, str(path)], capture_output=True, text=True)
+            if result.returncode != 0:
+                failed = True
+                message = (result.stdout + result.stderr).strip()
+                print(f"error: {name}{label} failed glslangValidator:\n{message}\n(file ids: "
+                      + ", ".join(f"{i}={f}" for i, f in enumerate(files)) + ")", file=sys.stderr)
     if failed:
         return 1
 
