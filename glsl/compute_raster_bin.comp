@@ -41,9 +41,8 @@ void toHardware(uint triangle) { hardwareTriangles[atomicAdd(rasterWork[ML_RASTE
 shared uint s_count;
 shared uint s_first;
 
-// Whether a screen tile may hold pixels of the triangle: no edge has every pixel centre of the
-// tile outside it. Edges are linear, so an edge's largest value over the tile is at the corner
-// its gradient points to: one value an edge.
+// Whether a screen tile may hold pixels of the triangle (rasterTileTouches; for a clipped one, an
+// edge plane at the tile's four corners).
 bool tileTouches(bool clipped, uint index, uvec2 tile, int size) {
     ivec2 lo = ivec2(tile) * size, hi = lo + (size - 1);
     if (clipped) {
@@ -59,13 +58,7 @@ bool tileTouches(bool clipped, uint index, uvec2 tile, int size) {
     }
     uvec4 r0 = largeTriangles[3u * index], r1 = largeTriangles[3u * index + 1u];
     ivec2 v[3] = ivec2[](ivec2(r0.xy), ivec2(r0.zw), ivec2(r1.xy));
-    for (int k = 0; k < 3; ++k) {
-        // Edge a->b: its value grows with x where d.y < 0 and with y where d.x > 0.
-        ivec2 a = v[k], b = v[(k + 1) % 3], d = b - a;
-        ivec2 corner = ivec2(d.y < 0 ? hi.x : lo.x, d.x > 0 ? hi.y : lo.y);
-        if (rasterEdge64(a, b, rasterPixelCentre(corner)) < 0l) return false;
-    }
-    return true;
+    return rasterTileTouches(v, tile, size);
 }
 
 void main() {
@@ -82,9 +75,10 @@ void main() {
         // record before's .w (clipped).
         uvec4 record = clipped ? clippedTriangles[5u * (item - largeCount) + 4u].zwxy : largeTriangles[3u * large + 2u];
         if (clipped) record.y = clippedTriangles[5u * (item - largeCount) + 3u].w;
+        else if ((record.w & ML_RASTER_BINNED) != 0u) continue;  // its setup listed its tiles
         uint fine = record.z & ML_RASTER_FINE_PAIR;
         int size = fine != 0u ? ML_RASTER_FINE_TILE : ML_RASTER_TILE;
-        uvec2 lo = uvec2(record.z & ML_RASTER_PAIR_TILE_X, record.z >> 16), hi = uvec2(record.w & 0xffffu, record.w >> 16);
+        uvec2 lo = uvec2(record.z & ML_RASTER_PAIR_TILE_X, record.z >> 16), hi = uvec2(record.w & ML_RASTER_PAIR_TILE_X, record.w >> 16);
         uvec2 extent = hi - lo + 1u;
         uint boundsTiles = extent.x * extent.y;
         uint index = large & ~ML_RASTER_CLIPPED_PAIR;

@@ -37,6 +37,10 @@ layout(std430, binding = ML_SSBO_RASTER_WORK) coherent buffer RasterWork { uint 
 layout(std430, binding = ML_SSBO_RASTER_LARGE) writeonly buffer RasterLarge { uvec4 largeTriangles[]; };
 layout(std430, binding = ML_SSBO_RASTER_HARDWARE) writeonly buffer RasterHardware { uint hardwareTriangles[]; };
 layout(std430, binding = ML_SSBO_RASTER_CLIPPED) writeonly buffer RasterClipped { uvec4 clippedTriangles[]; };
+#if !ML_RASTER_ALPHA_TEST
+layout(std430, binding = ML_SSBO_RASTER_PAIRS) writeonly buffer RasterPairs { uvec2 pairs[]; };
+uniform uint u_pairCapacity;   // entries pairs holds
+#endif
 
 uniform uint u_firstTriangle;  // the triangles set up: the opaque ones (the index buffer's first),
 uniform uint u_triangles;      // or one texture set's alpha-tested span
@@ -117,6 +121,28 @@ void toClipped(uint triangle, vec4 c0, vec4 c1, vec4 c2) {
 #endif
 }
 
+#if ML_RASTER_PASS == 0 && !ML_RASTER_ALPHA_TEST
+// The tile pass's pairs of a large triangle (index `large` in the large list) binned to the 8x8
+// tiles lo..hi, listed here as the binning would list them (the same tiles, in its order within
+// the triangle): a count, one atomic, the pairs. Where they do not fit, to the hardware.
+void binFineTiles(RasterTriangle t, uint triangle, uint large, uvec2 lo, uvec2 hi) {
+    ivec2 v[3] = ivec2[](t.v0, t.v1, t.v2);
+    uint tiles = 0u;
+    for (uint y = lo.y; y <= hi.y; ++y)
+        for (uint x = lo.x; x <= hi.x; ++x)
+            if (rasterTileTouches(v, uvec2(x, y), ML_RASTER_FINE_TILE)) ++tiles;
+    uint first = atomicAdd(rasterWork[ML_RASTER_WORK_PAIR_COUNT], tiles);
+    if (first + tiles > u_pairCapacity || first + tiles < first) {
+        toHardware(triangle);
+        return;
+    }
+    atomicMax(rasterWork[ML_RASTER_WORK_TILE_DISPATCH], min(first + tiles, 65535u));
+    for (uint y = lo.y; y <= hi.y; ++y)
+        for (uint x = lo.x; x <= hi.x; ++x)
+            if (rasterTileTouches(v, uvec2(x, y), ML_RASTER_FINE_TILE)) pairs[first++] = uvec2(large, x | ML_RASTER_FINE_PAIR | (y << 16));
+}
+#endif
+
 void main() {
     if (gl_GlobalInvocationID.x >= u_triangles) return;
     uint triangle = u_firstTriangle + gl_GlobalInvocationID.x;
@@ -194,10 +220,16 @@ void main() {
     bool fine = all(lessThanEqual(pixels, ivec2(ML_RASTER_FINE_EXTENT)));
     int tile = fine ? ML_RASTER_FINE_TILE : ML_RASTER_TILE;
     ivec2 tileLo = lo / tile, tileHi = hi / tile;
+    ivec2 tileExtent = tileHi - tileLo + 1;
+    // A few 8x8 tiles: listed here, the binning's workgroup (and its barriers) spared.
+    bool binHere = ML_RASTER_ALPHA_TEST == 0 && fine && tileExtent.x * tileExtent.y <= ML_RASTER_SETUP_BIN_TILES;
     largeTriangles[3u * at] = uvec4(uvec2(t.v0), uvec2(t.v1));
     largeTriangles[3u * at + 1u] = uvec4(uvec2(t.v2), floatBitsToUint(t.z.xy));
     largeTriangles[3u * at + 2u] = uvec4(floatBitsToUint(t.z.z), triangle,
                                          uint(tileLo.x) | (fine ? ML_RASTER_FINE_PAIR : 0u) | (uint(tileLo.y) << 16),
-                                         uint(tileHi.x) | (uint(tileHi.y) << 16));
+                                         uint(tileHi.x) | (binHere ? ML_RASTER_BINNED : 0u) | (uint(tileHi.y) << 16));
+#if !ML_RASTER_ALPHA_TEST
+    if (binHere) binFineTiles(t, triangle, at, uvec2(tileLo), uvec2(tileHi));
+#endif
 #endif
 }

@@ -179,8 +179,8 @@ int runRender(RenderOptions o) {
         if (const auto* visibility = dynamic_cast<const VisibilityBuffer*>(&renderer.method())) {
             if (const ComputeRaster* raster = visibility->computeRaster()) {
                 const ComputeRaster::Work w = raster->lastWork();
-                std::printf("compute raster (%s): %u opaque triangles; %u large and %u as homogeneous planes to the tile pass over %u tiles (%u of them 8x8), %u to the hardware\n",
-                            visibilityRasterName(visibility->raster()), w.opaqueTriangles, w.large, w.clipped, w.tiles, w.fineTiles, w.hardware);
+                std::printf("compute raster (%s): %u opaque triangles; %u large (%u binned by their setup) and %u as homogeneous planes to the tile pass over %u tiles (%u of them 8x8), %u to the hardware\n",
+                            visibilityRasterName(visibility->raster()), w.opaqueTriangles, w.large, w.setupBinned, w.clipped, w.tiles, w.fineTiles, w.hardware);
                 if (w.alphaTested > 0)
                     std::printf("compute raster: %u alpha-tested triangles; %u large to their tile pass over %u tiles (%u of them 8x8), %u to the hardware\n",
                                 w.alphaTested, w.alphaLarge, w.alphaTiles, w.alphaFineTiles, w.alphaHardware);

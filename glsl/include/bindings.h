@@ -97,6 +97,12 @@
 #define ML_RASTER_FINE_EXTENT 128
 #define ML_RASTER_FINE_PAIR 0x8000u
 #define ML_RASTER_PAIR_TILE_X 0x7fffu  // the tile word's bits below ML_RASTER_FINE_PAIR: the tile's x
+// A large opaque triangle binned to at most this many 8x8 tiles is binned by its own setup
+// invocation, which marks its record's upper tile word with ML_RASTER_BINNED (the binning skips it).
+#ifndef ML_RASTER_SETUP_BIN_TILES
+#define ML_RASTER_SETUP_BIN_TILES 64
+#endif
+#define ML_RASTER_BINNED 0x8000u
 // The finish pass's workgroup: one row of 256 pixels, so each warp reads and resets 256
 // consecutive bytes of the store (on an H100 at 2560x1440: 0.089 ms against 0.167 for 8x8 tiles;
 // docs/bench/nvidia-h100/raster-finish/).

@@ -192,6 +192,20 @@ int64_t rasterEdge64(ivec2 a, ivec2 b, ivec2 p) {
 // A pixel centre's sub-pixel position.
 ivec2 rasterPixelCentre(ivec2 pixel) { return pixel * ML_SUBPIXEL_ONE + ML_SUBPIXEL_HALF; }
 
+// Whether a screen tile (`size` pixels a side) may hold pixels of the triangle (wound
+// counter-clockwise): no edge has every pixel centre of the tile outside it. Edges are linear, so
+// an edge's largest value over the tile is at the corner its gradient points to: one value an edge.
+bool rasterTileTouches(ivec2 v[3], uvec2 tile, int size) {
+    ivec2 lo = ivec2(tile) * size, hi = lo + (size - 1);
+    for (int k = 0; k < 3; ++k) {
+        // Edge a->b: its value grows with x where d.y < 0 and with y where d.x > 0.
+        ivec2 a = v[k], b = v[(k + 1) % 3], d = b - a;
+        ivec2 corner = ivec2(d.y < 0 ? hi.x : lo.x, d.x > 0 ? hi.y : lo.y);
+        if (rasterEdge64(a, b, rasterPixelCentre(corner)) < 0l) return false;
+    }
+    return true;
+}
+
 i64vec3 rasterEdges64(RasterTriangle t, ivec2 pixel) {
     ivec2 p = rasterPixelCentre(pixel);
     // e0 is the edge opposite v0 (v1->v2), and so on.

@@ -73,13 +73,15 @@ shaders::Defines rasterDefines(bool packed, int pass) {
             {"ML_RASTER_EDGE_RULE", std::to_string(hardwareEdgeRule())}};
 }
 
-// The pairs among the first `count` of a pair list whose tile is 8x8 (ML_RASTER_FINE_PAIR).
-std::uint32_t finePairs(const gl::Buffer& pairs, std::uint32_t count) {
-    std::vector<GLuint> words(2 * std::size_t(count));
-    if (count > 0) pairs.download(words.data(), words.size() * sizeof(GLuint));
-    std::uint32_t fine = 0;
-    for (std::size_t i = 1; i < words.size(); i += 2) fine += (words[i] & ML_RASTER_FINE_PAIR) != 0 ? 1 : 0;
-    return fine;
+// Of the first `count` records of a list (`stride` words each), those whose word `at` has a bit of
+// `mask` set: the pairs whose tile is 8x8 (ML_RASTER_FINE_PAIR in a pair's second word), the
+// large triangles their setup binned (ML_RASTER_BINNED in the last of a record's 12 words).
+std::uint32_t marked(const gl::Buffer& list, std::uint32_t count, std::size_t stride, std::size_t at, GLuint mask) {
+    std::vector<GLuint> words(stride * std::size_t(count));
+    if (count > 0) list.download(words.data(), words.size() * sizeof(GLuint));
+    std::uint32_t hits = 0;
+    for (std::size_t i = at; i < words.size(); i += stride) hits += (words[i] & mask) != 0 ? 1 : 0;
+    return hits;
 }
 
 constexpr GLbitfield kComputeToCompute = GL_SHADER_STORAGE_BARRIER_BIT;
@@ -233,6 +235,7 @@ void ComputeRaster::rasterPass(const FrameContext& ctx, int pass) {
     setup.set("u_largeCapacity", static_cast<GLuint>(largeCapacity_));
     setup.set("u_largeFirst", 0u);
     setup.set("u_clipsToViewport", clipsToViewport_ ? 1u : 0u);
+    if (pass == 0) setup.set("u_pairCapacity", static_cast<GLuint>(pairCapacity_));  // it lists a few large triangles' pairs
     glDispatchCompute(gl::groupsFor(opaque, ML_RASTER_WORKGROUP), 1, 1);
     if (alphaTested) setupAlphaTested(ctx, pass);
     glMemoryBarrier(kComputeToCompute | GL_COMMAND_BARRIER_BIT);
@@ -371,8 +374,9 @@ ComputeRaster::Work ComputeRaster::lastWork() const {
     w.tiles = std::min<std::uint32_t>(words[ML_RASTER_WORK_PAIR_COUNT], static_cast<std::uint32_t>(pairCapacity_));
     w.hardware = words[ML_RASTER_WORK_HARDWARE_DRAW] / 3;
     w.clipped = words[ML_RASTER_WORK_CLIPPED_COUNT];
-    w.fineTiles = finePairs(pairs_, w.tiles);
-    if (alphaPairs_) w.alphaFineTiles = finePairs(alphaPairs_, w.alphaTiles);
+    w.fineTiles = marked(pairs_, w.tiles, 2, 1, ML_RASTER_FINE_PAIR);
+    w.setupBinned = marked(large_, w.large, 12, 11, ML_RASTER_BINNED);
+    if (alphaPairs_) w.alphaFineTiles = marked(alphaPairs_, w.alphaTiles, 2, 1, ML_RASTER_FINE_PAIR);
     return w;
 }
 

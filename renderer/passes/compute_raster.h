@@ -5,6 +5,7 @@
 //
 //   setup (a thread per triangle) ──small──> rastered there, pixel by pixel
 //        │                         ──large──> binning ──> tile pass (a workgroup per triangle and 16x16 tile)
+//        │                         ──large, a few 8x8 tiles──> binned there ──> tile pass
 //        └─ a vertex at or behind the eye plane, or past the guard band ──> the tile pass, as homogeneous edge planes
 //           (on a GPU that clips at the viewport, as llvmpipe does: the hardware, into the same store)
 //   alpha-tested ranges, a setup per texture set ──small──> rastered there, each pixel alpha-tested
@@ -77,6 +78,7 @@ public:
     struct Work {
         std::uint32_t opaqueTriangles = 0;
         std::uint32_t large = 0;     // to the tile pass
+        std::uint32_t setupBinned = 0;  // of them, binned by their setup invocation (ML_RASTER_SETUP_BIN_TILES)
         std::uint32_t clipped = 0;   // to the tile pass as homogeneous planes (crossing the eye plane, past the guard band)
         std::uint32_t tiles = 0;     // (triangle, tile) pairs the tile pass ran
         std::uint32_t fineTiles = 0; // of them, 8x8 tiles (ML_RASTER_FINE_EXTENT)

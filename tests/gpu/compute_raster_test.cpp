@@ -141,13 +141,17 @@ TEST_F(ComputeRasterTest, AlphaTestedTrianglesAreRasteredInCompute) {
 }
 
 // A large triangle whose bounds span at most ML_RASTER_FINE_EXTENT pixels takes 8x8 tiles, a
-// pixel an invocation, the others 16x16 tiles, four pixels of a column an invocation: at 640x360
-// the atrium has both, opaque and alpha-tested, and every pixel keeps the hardware's id.
+// pixel an invocation, the others 16x16 tiles, four pixels of a column an invocation; an opaque
+// one of at most ML_RASTER_SETUP_BIN_TILES 8x8 tiles is binned by its setup invocation, the rest
+// by the binning: at 640x360 the atrium has each, opaque and alpha-tested, and every pixel keeps
+// the hardware's id.
 TEST_F(ComputeRasterTest, LargeTrianglesOfSmallBoundsTakeEightByEightTiles) {
     for (const std::optional<CameraPose>& pose : {std::optional<CameraPose>(), std::optional<CameraPose>(CameraPose{{-16.0f, 3.0f, -4.5f}, {16.0f, 1.5f, 4.5f}, 60.0f})}) {
         const AtriumRasters r = atriumRasters(pose, 640, 360, true, "atrium fine tiles");
         EXPECT_GT(r.work.fineTiles, 0u) << "no 8x8 tile: the test tests them not";
         EXPECT_LT(r.work.fineTiles, r.work.tiles) << "no 16x16 tile";
+        EXPECT_GT(r.work.setupBinned, 0u) << "no triangle binned by its setup";
+        EXPECT_LT(r.work.setupBinned, r.work.large) << "no triangle binned by the binning";
         EXPECT_GT(r.work.alphaFineTiles, 0u) << "no alpha-tested 8x8 tile";
         EXPECT_EQ(r.difference.coverage, 0u) << r.difference.pixels << " pixels differ";
     }
