@@ -25,6 +25,7 @@ layout(std430, binding = ML_SSBO_RASTER_CLIPPED) readonly buffer RasterClipped {
 uniform uint u_largeCapacity;
 uniform uint u_pairCapacity;
 uniform uint u_largeFirst;  // where the lists' large triangles start (the alpha-tested ones: after the opaque ones)
+#include "include/compute_raster_pairs.glsl"
 #if ML_RASTER_ALPHA_TEST
 uniform uint u_spans;  // alpha-tested spans, their draws after ML_RASTER_WORK_WORDS (first: word 2)
 
@@ -78,7 +79,7 @@ void main() {
         else if ((record.w & ML_RASTER_BINNED) != 0u) continue;  // its setup listed its tiles
         uint fine = record.z & ML_RASTER_FINE_PAIR;
         int size = fine != 0u ? ML_RASTER_FINE_TILE : ML_RASTER_TILE;
-        uvec2 lo = uvec2(record.z & ML_RASTER_PAIR_TILE_X, record.z >> 16), hi = uvec2(record.w & ML_RASTER_PAIR_TILE_X, record.w >> 16);
+        uvec2 lo = rasterWordTile(record.z), hi = rasterWordTile(record.w);
         uvec2 extent = hi - lo + 1u;
         uint boundsTiles = extent.x * extent.y;
         uint index = large & ~ML_RASTER_CLIPPED_PAIR;
@@ -91,24 +92,19 @@ void main() {
         barrier();
         uint tiles = s_count;
         if (gl_LocalInvocationIndex == 0u) {
-            uint first = atomicAdd(rasterWork[ML_RASTER_PAIR_COUNT], tiles);
-            if (first + tiles > u_pairCapacity || first + tiles < first) {
-                toHardware(record.y);
-                first = 0xffffffffu;
-            } else {
-                atomicMax(rasterWork[ML_RASTER_TILE_DISPATCH], min(first + tiles, 65535u));
-            }
+            uint first = rasterTakePairSlots(tiles);
+            if (first == ~0u) toHardware(record.y);
             s_first = first;
         }
         barrier();
         uint first = s_first;
         barrier();
-        if (first == 0xffffffffu) continue;
+        if (first == ~0u) continue;
         if (gl_LocalInvocationIndex == 0u) s_count = 0u;
         barrier();
         for (uint i = gl_LocalInvocationIndex; i < boundsTiles; i += gl_WorkGroupSize.x) {
             uvec2 tile = lo + uvec2(i % extent.x, i / extent.x);
-            if (tileTouches(clipped, index, tile, size)) pairs[first + atomicAdd(s_count, 1u)] = uvec2(large, tile.x | fine | (tile.y << 16));
+            if (tileTouches(clipped, index, tile, size)) pairs[first + atomicAdd(s_count, 1u)] = uvec2(large, rasterTileWord(tile, fine));
         }
         barrier();
     }

@@ -26,7 +26,6 @@ layout(std430, binding = ML_SSBO_RASTER_LARGE) readonly buffer RasterLarge { uve
 layout(std430, binding = ML_SSBO_RASTER_PAIRS) readonly buffer RasterPairs { uvec2 pairs[]; };
 layout(std430, binding = ML_SSBO_RASTER_CLIPPED) readonly buffer RasterClipped { uvec4 clippedTriangles[]; };
 
-uniform uint u_pairCapacity;
 #if ML_RASTER_ALPHA_TEST
 uniform uint u_firstTriangle, u_triangles;  // the span this dispatch's texture set covers
 #endif
@@ -44,10 +43,10 @@ RasterTriangle largeTriangle(uint index, out uint id) {
 }
 
 void main() {
-    uint count = min(rasterWork[ML_RASTER_PAIR_COUNT], u_pairCapacity);
+    uint count = min(rasterWork[ML_RASTER_PAIR_COUNT], rasterWork[ML_RASTER_PAIR_END]);  // the pairs written (include/compute_raster_pairs.glsl)
     for (uint pair = gl_WorkGroupID.x; pair < count; pair += gl_NumWorkGroups.x) {
         uvec2 entry = pairs[pair];
-        ivec2 tile = ivec2(entry.y & ML_RASTER_PAIR_TILE_X, entry.y >> 16);
+        ivec2 tile = ivec2(rasterWordTile(entry.y));
         if ((entry.y & ML_RASTER_FINE_PAIR) != 0u) {
             // An 8x8 tile (never a clipped triangle's): a pixel an invocation.
             ivec2 pixel = tile * ML_RASTER_FINE_TILE + ivec2(gl_LocalInvocationIndex % ML_RASTER_FINE_TILE, gl_LocalInvocationIndex / ML_RASTER_FINE_TILE);

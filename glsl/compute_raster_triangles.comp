@@ -40,6 +40,7 @@ layout(std430, binding = ML_SSBO_RASTER_CLIPPED) writeonly buffer RasterClipped 
 #if !ML_RASTER_ALPHA_TEST
 layout(std430, binding = ML_SSBO_RASTER_PAIRS) writeonly buffer RasterPairs { uvec2 pairs[]; };
 uniform uint u_pairCapacity;   // entries pairs holds
+#include "include/compute_raster_pairs.glsl"
 #endif
 
 uniform uint u_firstTriangle;  // the triangles set up: the opaque ones (the index buffer's first),
@@ -117,7 +118,7 @@ void toClipped(uint triangle, vec4 c0, vec4 c1, vec4 c2) {
     clippedTriangles[5u * at + 1u] = uvec4(floatBitsToUint(h.edge1.yz), floatBitsToUint(h.edge2.xy));
     clippedTriangles[5u * at + 2u] = uvec4(floatBitsToUint(h.edge2.z), floatBitsToUint(h.depthNumerator));
     clippedTriangles[5u * at + 3u] = uvec4(floatBitsToUint(h.depthDenominator), triangle);
-    clippedTriangles[5u * at + 4u] = uvec4(tileLo.x | (tileLo.y << 16), tileHi.x | (tileHi.y << 16), 0u, 0u);
+    clippedTriangles[5u * at + 4u] = uvec4(rasterTileWord(tileLo, 0u), rasterTileWord(tileHi, 0u), 0u, 0u);
 #endif
 }
 
@@ -131,15 +132,14 @@ void binFineTiles(RasterTriangle t, uint triangle, uint large, uvec2 lo, uvec2 h
     for (uint y = lo.y; y <= hi.y; ++y)
         for (uint x = lo.x; x <= hi.x; ++x)
             if (rasterTileTouches(v, uvec2(x, y), ML_RASTER_FINE_TILE)) ++tiles;
-    uint first = atomicAdd(rasterWork[ML_RASTER_WORK_PAIR_COUNT], tiles);
-    if (first + tiles > u_pairCapacity || first + tiles < first) {
+    uint first = rasterTakePairSlots(tiles);
+    if (first == ~0u) {
         toHardware(triangle);
         return;
     }
-    atomicMax(rasterWork[ML_RASTER_WORK_TILE_DISPATCH], min(first + tiles, 65535u));
     for (uint y = lo.y; y <= hi.y; ++y)
         for (uint x = lo.x; x <= hi.x; ++x)
-            if (rasterTileTouches(v, uvec2(x, y), ML_RASTER_FINE_TILE)) pairs[first++] = uvec2(large, x | ML_RASTER_FINE_PAIR | (y << 16));
+            if (rasterTileTouches(v, uvec2(x, y), ML_RASTER_FINE_TILE)) pairs[first++] = uvec2(large, rasterTileWord(uvec2(x, y), ML_RASTER_FINE_PAIR));
 }
 #endif
 
@@ -225,9 +225,8 @@ void main() {
     bool binHere = ML_RASTER_ALPHA_TEST == 0 && fine && tileExtent.x * tileExtent.y <= ML_RASTER_SETUP_BIN_TILES;
     largeTriangles[3u * at] = uvec4(uvec2(t.v0), uvec2(t.v1));
     largeTriangles[3u * at + 1u] = uvec4(uvec2(t.v2), floatBitsToUint(t.z.xy));
-    largeTriangles[3u * at + 2u] = uvec4(floatBitsToUint(t.z.z), triangle,
-                                         uint(tileLo.x) | (fine ? ML_RASTER_FINE_PAIR : 0u) | (uint(tileLo.y) << 16),
-                                         uint(tileHi.x) | (binHere ? ML_RASTER_BINNED : 0u) | (uint(tileHi.y) << 16));
+    largeTriangles[3u * at + 2u] = uvec4(floatBitsToUint(t.z.z), triangle, rasterTileWord(uvec2(tileLo), fine ? ML_RASTER_FINE_PAIR : 0u),
+                                         rasterTileWord(uvec2(tileHi), binHere ? ML_RASTER_BINNED : 0u));
 #if !ML_RASTER_ALPHA_TEST
     if (binHere) binFineTiles(t, triangle, at, uvec2(tileLo), uvec2(tileHi));
 #endif

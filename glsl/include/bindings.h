@@ -84,7 +84,9 @@
 #define ML_RASTER_WORK_ALPHA_PAIR_COUNT 20
 #define ML_RASTER_WORK_VIEW_DEPTH_RANGE 21     // the drawn pixels' least and greatest view depth, as bits (words 21-22;
                                                // the finish's, for fitted slicing: cluster_depth_range.comp)
-#define ML_RASTER_WORK_WORDS 23                // then a DrawArraysIndirectCommand per alpha-tested span
+#define ML_RASTER_WORK_PAIR_END 23             // where the written pairs end, and the alpha-tested ones'
+#define ML_RASTER_WORK_ALPHA_PAIR_END 24       // (include/compute_raster_pairs.glsl; ~0u: no list overflowed)
+#define ML_RASTER_WORK_WORDS 25                // then a DrawArraysIndirectCommand per alpha-tested span
 #define ML_RASTER_CLIPPED_PAIR 0x80000000u  // a pair's triangle is in the clipped list
 #define ML_RASTER_WORKGROUP 64       // triangles per workgroup of the setup pass
 #define ML_RASTER_TILE 16            // the tile pass's screen tile edge
@@ -96,7 +98,7 @@
 #define ML_RASTER_FINE_TILE 8
 #define ML_RASTER_FINE_EXTENT 128
 #define ML_RASTER_FINE_PAIR 0x8000u
-#define ML_RASTER_PAIR_TILE_X 0x7fffu  // the tile word's bits below ML_RASTER_FINE_PAIR: the tile's x
+#define ML_RASTER_PAIR_TILE_X 0x7fffu  // a tile word's x bits (include/compute_raster.glsl, rasterTileWord)
 // A large opaque triangle binned to at most this many 8x8 tiles is binned by its own setup
 // invocation, which marks its record's upper tile word with ML_RASTER_BINNED (the binning skips it).
 #ifndef ML_RASTER_SETUP_BIN_TILES

@@ -43,11 +43,13 @@
 #if ML_RASTER_ALPHA_TEST
 #define ML_RASTER_LARGE_COUNT ML_RASTER_WORK_ALPHA_LARGE_COUNT
 #define ML_RASTER_PAIR_COUNT ML_RASTER_WORK_ALPHA_PAIR_COUNT
+#define ML_RASTER_PAIR_END ML_RASTER_WORK_ALPHA_PAIR_END
 #define ML_RASTER_BIN_DISPATCH ML_RASTER_WORK_ALPHA_BIN_DISPATCH
 #define ML_RASTER_TILE_DISPATCH ML_RASTER_WORK_ALPHA_TILE_DISPATCH
 #else
 #define ML_RASTER_LARGE_COUNT ML_RASTER_WORK_LARGE_COUNT
 #define ML_RASTER_PAIR_COUNT ML_RASTER_WORK_PAIR_COUNT
+#define ML_RASTER_PAIR_END ML_RASTER_WORK_PAIR_END
 #define ML_RASTER_BIN_DISPATCH ML_RASTER_WORK_BIN_DISPATCH
 #define ML_RASTER_TILE_DISPATCH ML_RASTER_WORK_TILE_DISPATCH
 #endif
@@ -191,6 +193,11 @@ int64_t rasterEdge64(ivec2 a, ivec2 b, ivec2 p) {
 
 // A pixel centre's sub-pixel position.
 ivec2 rasterPixelCentre(ivec2 pixel) { return pixel * ML_SUBPIXEL_ONE + ML_SUBPIXEL_HALF; }
+
+// A tile word, as pairs and tile bounds hold a tile: x in bits 0-14, y in 16-31, and bit 15 a
+// flag (ML_RASTER_FINE_PAIR: an 8x8 tile; ML_RASTER_BINNED on a record's upper bound).
+uint rasterTileWord(uvec2 tile, uint flag) { return tile.x | flag | (tile.y << 16); }
+uvec2 rasterWordTile(uint word) { return uvec2(word & ML_RASTER_PAIR_TILE_X, word >> 16); }
 
 // Whether a screen tile (`size` pixels a side) may hold pixels of the triangle (wound
 // counter-clockwise): no edge has every pixel centre of the tile outside it. Edges are linear, so

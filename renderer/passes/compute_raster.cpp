@@ -178,8 +178,8 @@ void ComputeRaster::prepare(const FrameContext& ctx) {
     }
     // The counters, then each alpha-tested span's draw of its hardware list, which starts at the
     // span's first triangle (the opaque list fills at most the opaque triangles' entries).
-    std::vector<GLuint> initial = {0, 1, 0, 0, 0, 1, 1, 0, 1, 1, 0, 0, 0, 0, 1, 1, 0, 1, 1, 0, 0, ~0u, 0};
-    static_assert(ML_RASTER_WORK_WORDS == 23 && ML_RASTER_WORK_VIEW_DEPTH_RANGE == 21);
+    std::vector<GLuint> initial = {0, 1, 0, 0, 0, 1, 1, 0, 1, 1, 0, 0, 0, 0, 1, 1, 0, 1, 1, 0, 0, ~0u, 0, ~0u, ~0u};
+    static_assert(ML_RASTER_WORK_WORDS == 25 && ML_RASTER_WORK_VIEW_DEPTH_RANGE == 21 && ML_RASTER_WORK_PAIR_END == 23);
     for (const SceneGpu::TriangleSpan& span : ctx.scene.alphaTestedSpans()) initial.insert(initial.end(), {0, 1, 3 * span.first, 0});
     if (initial.size() != workWords_ || !work_) {
         workWords_ = initial.size();
@@ -254,7 +254,6 @@ void ComputeRaster::rasterPass(const FrameContext& ctx, int pass) {
         glMemoryBarrier(kComputeToCompute | GL_COMMAND_BARRIER_BIT);
     }
     tiles_[pass].use();
-    tiles_[pass].set("u_pairCapacity", static_cast<GLuint>(pairCapacity_));
     pairs_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_RASTER_PAIRS);
     glDispatchComputeIndirect(ML_RASTER_WORK_TILE_DISPATCH * sizeof(GLuint));
     if (alphaTested) tileAlphaTested(ctx, pass);
@@ -317,7 +316,6 @@ void ComputeRaster::binAlphaTested(const FrameContext& ctx) {
 void ComputeRaster::tileAlphaTested(const FrameContext& ctx, int pass) {
     gl::Program& tiles = alphaTiles_[pass];
     tiles.use();
-    tiles.set("u_pairCapacity", static_cast<GLuint>(alphaPairCapacity_));
     alphaPairs_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_RASTER_PAIRS);
     for (const SceneGpu::TriangleSpan& span : ctx.scene.alphaTestedSpans()) {
         ctx.scene.bindTextureSet(span.textureSet);
@@ -368,10 +366,10 @@ ComputeRaster::Work ComputeRaster::lastWork() const {
     w.opaqueTriangles = opaqueTriangles_;
     w.alphaTested = alphaTestedTriangles_;
     w.alphaLarge = words[ML_RASTER_WORK_ALPHA_LARGE_COUNT];
-    w.alphaTiles = std::min<std::uint32_t>(words[ML_RASTER_WORK_ALPHA_PAIR_COUNT], static_cast<std::uint32_t>(alphaPairCapacity_));
+    w.alphaTiles = std::min(words[ML_RASTER_WORK_ALPHA_PAIR_COUNT], words[ML_RASTER_WORK_ALPHA_PAIR_END]);
     for (std::size_t at = ML_RASTER_WORK_WORDS; at < words.size(); at += 4) w.alphaHardware += words[at] / 3;
     w.large = std::min<std::uint32_t>(words[ML_RASTER_WORK_LARGE_COUNT], static_cast<std::uint32_t>(largeCapacity_));
-    w.tiles = std::min<std::uint32_t>(words[ML_RASTER_WORK_PAIR_COUNT], static_cast<std::uint32_t>(pairCapacity_));
+    w.tiles = std::min(words[ML_RASTER_WORK_PAIR_COUNT], words[ML_RASTER_WORK_PAIR_END]);
     w.hardware = words[ML_RASTER_WORK_HARDWARE_DRAW] / 3;
     w.clipped = words[ML_RASTER_WORK_CLIPPED_COUNT];
     w.fineTiles = marked(pairs_, w.tiles, 2, 1, ML_RASTER_FINE_PAIR);

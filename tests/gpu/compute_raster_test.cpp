@@ -157,5 +157,39 @@ TEST_F(ComputeRasterTest, LargeTrianglesOfSmallBoundsTakeEightByEightTiles) {
     }
 }
 
+
+// Past the pair list (more than 64 layers of the screen's tiles) a triangle goes to the hardware,
+// and the tile pass reads only the pairs written before the first that did not fit: never a slot
+// an earlier frame left. Two stacks of 1,500 quads seen from afar fill the list with pairs whose
+// triangles are the right stack's; then, close to the left stack alone (the right one out of
+// view), the list overflows again with fewer large triangles, and a stale pair would raster a
+// record of the frame before: the right stack where this view has nothing.
+TEST_F(ComputeRasterTest, PairsPastTheListGoToTheHardwareAndNoStaleSlotIsRead) {
+    std::vector<TestQuad> quads;
+    for (float side : {-2.0f, 2.0f})
+        for (int i = 0; i < 1500; ++i)
+            quads.push_back({{side, 0.0f, -0.0005f * float(i)}, {0.8f, 0.0f, 0.0f}, {0.0f, 0.8f, 0.0f}, {0.5f + side * 0.1f, 0.5f, 0.0005f * float(i)}});
+    const Scene scene = quadScene(quads);
+    const CameraPose far{{0.0f, 0.0f, 8.0f}, {0.0f, 0.0f, 0.0f}, 60.0f}, close{{-2.0f, 0.0f, 3.0f}, {-2.0f, 0.0f, 0.0f}, 60.0f};
+    FrameSettings s = smallFrame(scene, far, 320, 180);
+    s.method.kind = MethodKind::Visibility;
+    s.method.visibilityRaster = VisibilityRaster::ComputeTwoPass;
+    FrameRenderer renderer(scene, {}, s);
+    renderer.render(0);
+    const auto& method = dynamic_cast<const VisibilityBuffer&>(renderer.method());
+    const ComputeRaster::Work farWork = method.computeRaster()->lastWork();
+    EXPECT_GT(farWork.hardware, 0u) << "the far view's pairs fit the list: the test tests nothing";
+    renderer.setCamera(smallFrame(scene, close, 320, 180).camera);
+    renderer.render(0);
+    const ComputeRaster::Work closeWork = method.computeRaster()->lastWork();
+    EXPECT_GT(closeWork.hardware, 0u) << "the close view's pairs fit the list: the test tests nothing";
+    EXPECT_LT(closeWork.large, farWork.large) << "the close view has as many large triangles: no stale record to read";
+    const RasterResult compute = lastRaster(renderer);
+    FrameRenderer fresh(scene, {}, smallFrame(scene, close, 320, 180));
+    const RasterResult hardware = visibilityRaster(fresh, VisibilityRaster::Hardware);
+    const IdDifference d = compareIds(hardware, compute, 320, "close after far");
+    EXPECT_EQ(d.coverage, 0u) << d.pixels << " pixels differ";
+}
+
 }  // namespace
 }  // namespace ml::test

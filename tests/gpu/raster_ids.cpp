@@ -29,6 +29,11 @@ RasterResult visibilityRaster(FrameRenderer& renderer, VisibilityRaster raster, 
     // A test's knob on a GPU-derived setting, which the renderer exposes read-only.
     if (const ComputeRaster* compute = method.computeRaster()) const_cast<ComputeRaster*>(compute)->setClipsToViewport(clipsToViewport);
     renderer.render(0);
+    return lastRaster(renderer);
+}
+
+RasterResult lastRaster(const FrameRenderer& renderer) {
+    const auto& method = dynamic_cast<const VisibilityBuffer&>(renderer.method());
     RasterResult r;
     r.ids = readTexture<std::uint32_t>(method.triangleIds(), GL_RED_INTEGER, GL_UNSIGNED_INT);
     if (const ComputeRaster* compute = method.computeRaster()) r.depth = readTexture<float>(compute->depth(), GL_RED, GL_FLOAT);

@@ -21,6 +21,8 @@ struct RasterResult {
 // `clipsToViewport` false runs the compute raster's homogeneous path where the GPU clips at the
 // viewport (llvmpipe), which otherwise leaves the triangles that need it to the hardware.
 RasterResult visibilityRaster(FrameRenderer& renderer, VisibilityRaster raster, bool clipsToViewport = true);
+// The ids and depth of the frame `renderer` (running the visibility buffer) drew last.
+RasterResult lastRaster(const FrameRenderer& renderer);
 
 // Pixels whose ids differ, and of those, the ones whose depths differ too: a different surface,
 // not a tie between two at one depth (which of them wins comes down to the depth's last bit; two
