@@ -1,7 +1,8 @@
 #version 450 core
 // The compute raster's last pass (renderer/passes/compute_raster.h): each pixel's nearest
 // triangle to the visibility buffer's id target (index + 1; 0 background) and its depth to an
-// R32F target (0 where nothing was drawn), and the store reset for the next frame.
+// R32F target (0 where nothing was drawn), and the pixels nothing was drawn at set empty
+// (include/compute_raster.glsl: the store is not reset).
 #extension GL_ARB_gpu_shader_int64 : require
 #if ML_RASTER_ATOMIC64
 #extension GL_NV_shader_atomic_int64 : require
@@ -13,7 +14,7 @@
 
 // Pixels an invocation finishes, ML_RASTER_FINISH_ROW apart in its row (the program sets it;
 // the default lets the build validate it): every read is issued before any write, which the
-// compiler could not move past another pixel's reset (the store is one buffer).
+// compiler could not move past another pixel's store write (the store is one buffer).
 #ifndef ML_RASTER_FINISH_PIXELS
 #define ML_RASTER_FINISH_PIXELS 1
 #endif
@@ -54,32 +55,42 @@ void main() {
     ivec2 pixels[kPixels];
     bool inside[kPixels];
     uint keys[kPixels], triangles[kPixels];
+    bool empty[kPixels];  // the store's words at the pixel are ML_RASTER_STORE_EMPTY already
     for (int k = 0; k < kPixels; ++k) {
         pixels[k] = ivec2((gl_WorkGroupID.x * uint(kPixels) + uint(k)) * uint(ML_RASTER_FINISH_ROW) + gl_LocalInvocationID.x, gl_WorkGroupID.y);
         inside[k] = all(lessThan(pixels[k], ivec2(u_viewport.xy)));
         uint at = uint(pixels[k].y) * uint(u_viewport.x) + uint(pixels[k].x);
-        keys[k] = ~0u;
-        triangles[k] = ~0u;
+        keys[k] = ML_RASTER_STORE_EMPTY;
+        triangles[k] = 0u;
+        empty[k] = true;
         if (!inside[k]) continue;
 #if ML_RASTER_ATOMIC64
-        uvec2 word = unpackUint2x32(depthIds[at]);
+        uint64_t stored = depthIds[at];
+        uvec2 word = unpackUint2x32(stored ^ packUint2x32(uvec2(u_storeFlip)));
+        empty[k] = stored == packUint2x32(uvec2(ML_RASTER_STORE_EMPTY));
         triangles[k] = word.x;
         keys[k] = word.y;
 #else
-        keys[k] = depthIds[at];
-        triangles[k] = depthIds[rasterPixelCount() + at];
+        uint storedKey = depthIds[at], storedTriangle = depthIds[rasterPixelCount() + at];
+        empty[k] = storedKey == ML_RASTER_STORE_EMPTY && storedTriangle == ML_RASTER_STORE_EMPTY;
+        keys[k] = storedKey ^ u_storeFlip;
+        triangles[k] = storedTriangle ^ u_storeFlip;
 #endif
+        // A word of another frame, or empty: nothing drawn here this frame.
+        if (keys[k] >= ML_RASTER_STORE_EMPTY) keys[k] = ML_RASTER_STORE_EMPTY;
     }
     for (int k = 0; k < kPixels; ++k) {
         if (!inside[k]) continue;
         uint at = uint(pixels[k].y) * uint(u_viewport.x) + uint(pixels[k].x);
+        bool drawn = keys[k] != ML_RASTER_STORE_EMPTY;
+        if (!drawn && !empty[k]) {
 #if ML_RASTER_ATOMIC64
-        depthIds[at] = ~0ul;
+            depthIds[at] = packUint2x32(uvec2(ML_RASTER_STORE_EMPTY));
 #else
-        depthIds[at] = ~0u;
-        depthIds[rasterPixelCount() + at] = ~0u;
+            depthIds[at] = ML_RASTER_STORE_EMPTY;
+            depthIds[rasterPixelCount() + at] = ML_RASTER_STORE_EMPTY;
 #endif
-        bool drawn = keys[k] != ~0u;
+        }
         imageStore(u_ids, pixels[k], uvec4(drawn ? triangles[k] + 1u : 0u));
         imageStore(u_depth, pixels[k], vec4(rasterKeyDepth(keys[k])));  // the background's key gives depth 0
     }

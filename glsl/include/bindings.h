@@ -109,6 +109,9 @@
 // consecutive bytes of the store (on an H100 at 2560x1440: 0.089 ms against 0.167 for 8x8 tiles;
 // docs/bench/nvidia-h100/raster-finish/).
 #define ML_RASTER_FINISH_ROW 256
+// A store word (every 32-bit half) where nothing was drawn (include/compute_raster.glsl): past
+// every key and id of a frame that resolves by atomicMin, below every inverted one.
+#define ML_RASTER_STORE_EMPTY 0x7fffffffu
 #define ML_RASTER_SMALL_EXTENT 64    // a triangle rastered by its own invocation spans at most this many pixels...
 #define ML_RASTER_SMALL_PIXELS 64    // ...and at most this many pixel centres of its bounds
 // Material::info.w bits.

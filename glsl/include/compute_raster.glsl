@@ -12,11 +12,16 @@
 //
 // The store keeps, per pixel, the nearest depth and on equal depths the smallest triangle id,
 // which is the first drawn: what the depth test (GL_GREATER) in draw order keeps. It holds each
-// depth as a key that grows with distance: the depth's bits inverted (non-negative floats order
-// as their bits), so the nearest is the smallest key, and the reset value, every bit set, is the
-// key of the background's depth 0. Where the GPU has 64-bit atomics (ML_RASTER_ATOMIC64) key and
-// id are one word, resolved by one atomicMin; otherwise two passes: the key first
-// (ML_RASTER_PASS 0), then the id where the key matches (ML_RASTER_PASS 1).
+// depth as a key that grows with distance: the depth's bits inverted, in 31 bits (non-negative
+// floats order as their bits), so the nearest is the smallest key. Where the GPU has 64-bit
+// atomics (ML_RASTER_ATOMIC64) key and id are one word, resolved by one atomicMin; otherwise two
+// passes: the key first (ML_RASTER_PASS 0), then the id where the key matches (ML_RASTER_PASS 1).
+//
+// The store is not reset between frames. Every other frame (u_storeFlip ~0u) it holds each word
+// inverted and resolves by atomicMax: a word of the frame before then has its top bit on the
+// other side of every word this frame writes, and loses to it. The finish sets the pixels this
+// frame left to ML_RASTER_STORE_EMPTY, which loses to a word of either order, so no word older
+// than the frame before is ever read: it writes only those, not the whole store.
 // Needs frame_uniforms.glsl and window_depth.glsl; the file must enable
 // GL_ARB_gpu_shader_int64 (and with ML_RASTER_ATOMIC64, GL_NV_shader_atomic_int64).
 
@@ -64,23 +69,40 @@ layout(std430, binding = ML_SSBO_RASTER_DEPTH_IDS) coherent buffer RasterDepthId
 layout(std430, binding = ML_SSBO_RASTER_DEPTH_IDS) coherent buffer RasterDepthIds { uint depthIds[]; };
 #endif
 
+uniform uint u_storeFlip;  // 0, or ~0u on the frames whose store words are inverted
+
 uint rasterPixelCount() { return uint(u_viewport.x) * uint(u_viewport.y); }
 
-// A depth's key in the store (smaller: nearer), and back.
-uint rasterDepthKey(float depth) { return ~floatBitsToUint(depth); }
-float rasterKeyDepth(uint key) { return uintBitsToFloat(~key); }
+// A depth's key in the store (smaller: nearer), and back. A drawn depth lies in (0, 1], so its key
+// is below ML_RASTER_STORE_EMPTY, which reads as the background's depth 0.
+uint rasterDepthKey(float depth) { return ~floatBitsToUint(depth) & 0x7fffffffu; }
+float rasterKeyDepth(uint key) { return uintBitsToFloat(~key & 0x7fffffffu); }
+
+// A store word as this frame orders it (the words of another frame: past every key and id).
+#if ML_RASTER_ATOMIC64
+uint64_t rasterStoreWord(uint at) { return depthIds[at] ^ packUint2x32(uvec2(u_storeFlip)); }
+#else
+uint rasterStoreWord(uint at) { return depthIds[at] ^ u_storeFlip; }
+#endif
 
 // Keeps (depth, triangle) at the pixel where it is nearer than what is there (ties: smaller id).
 void rasterStore(ivec2 pixel, float depth, uint triangle) {
     uint at = uint(pixel.y) * uint(u_viewport.x) + uint(pixel.x);
 #if ML_RASTER_ATOMIC64
     uint64_t word = packUint2x32(uvec2(triangle, rasterDepthKey(depth)));
-    if (word < depthIds[at]) atomicMin(depthIds[at], word);
+    if (word >= rasterStoreWord(at)) return;
+    if (u_storeFlip != 0u) atomicMax(depthIds[at], ~word);
+    else atomicMin(depthIds[at], word);
 #elif ML_RASTER_PASS == 0
     uint key = rasterDepthKey(depth);
-    if (key < depthIds[at]) atomicMin(depthIds[at], key);
+    if (key >= rasterStoreWord(at)) return;
+    if (u_storeFlip != 0u) atomicMax(depthIds[at], ~key);
+    else atomicMin(depthIds[at], key);
 #else
-    if (depthIds[at] == rasterDepthKey(depth)) atomicMin(depthIds[rasterPixelCount() + at], triangle);
+    if (rasterStoreWord(at) != rasterDepthKey(depth)) return;
+    at += rasterPixelCount();
+    if (u_storeFlip != 0u) atomicMax(depthIds[at], ~triangle);
+    else atomicMin(depthIds[at], triangle);
 #endif
 }
 
@@ -90,11 +112,11 @@ void rasterStore(ivec2 pixel, float depth, uint triangle) {
 bool rasterHidden(ivec2 pixel, float depth) {
     uint at = uint(pixel.y) * uint(u_viewport.x) + uint(pixel.x);
 #if ML_RASTER_ATOMIC64
-    return unpackUint2x32(depthIds[at]).y < rasterDepthKey(depth);
+    return unpackUint2x32(rasterStoreWord(at)).y < rasterDepthKey(depth);
 #elif ML_RASTER_PASS == 0
-    return depthIds[at] < rasterDepthKey(depth);
+    return rasterStoreWord(at) < rasterDepthKey(depth);
 #else
-    return depthIds[at] != rasterDepthKey(depth);
+    return rasterStoreWord(at) != rasterDepthKey(depth);
 #endif
 }
 

@@ -154,10 +154,10 @@ ComputeRaster::ComputeRaster(std::uint32_t materialFeatures, bool packedAtomics,
 void ComputeRaster::prepare(const FrameContext& ctx) {
     if (stamp_.update(ctx.targets)) {
         const std::size_t pixels = std::size_t(stamp_.width()) * std::size_t(stamp_.height());
-        // The store starts (and every finish leaves it) at all ones: nothing drawn.
+        // The store starts empty; the finish empties only the pixels a frame left.
         store_ = gl::Buffer("compute-raster.store", pixels * 8, nullptr, 0);
-        const GLuint ones = ~0u;
-        glClearNamedBufferData(store_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &ones);
+        const GLuint empty = ML_RASTER_STORE_EMPTY;
+        glClearNamedBufferData(store_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &empty);
         depth_ = gl::Texture2D("compute-raster.depth", GL_R32F, stamp_.width(), stamp_.height());
         depthFbo_ = gl::Framebuffer("compute-raster.depth-copy", {}, &ctx.targets.depth());
         // Pairs: up to 64 layers of the screen's tiles (the atrium at 2560x1440 needs about 16); a
@@ -199,6 +199,7 @@ void ComputeRaster::run(const FrameContext& ctx, const gl::Texture2D& ids) {
     clipped_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_RASTER_CLIPPED);
     for (int pass = 0; pass < passes_; ++pass) rasterPass(ctx, pass);
     finish(ctx, ids);
+    storeFlip_ = ~storeFlip_;  // the next frame's words invert this one's (include/compute_raster.glsl)
     ctx.targets.setComputedDepth(&depth_, extras_.viewDepthRange ? ViewDepthRange{&work_, ML_RASTER_WORK_VIEW_DEPTH_RANGE} : ViewDepthRange{});
     if (ctx.scene.hasTransparent() && extras_.depthUnderGlass) {
         auto timed = ctx.timer.pass("visibility.raster-glass-depth");
@@ -209,6 +210,7 @@ void ComputeRaster::run(const FrameContext& ctx, const gl::Texture2D& ids) {
 void ComputeRaster::finish(const FrameContext& ctx, const gl::Texture2D& ids) {
     auto timed = ctx.timer.pass("visibility.raster-finish");
     finish_.use();
+    finish_.set("u_storeFlip", storeFlip_);
     glBindImageTexture(ML_IMG_VISIBILITY_IDS, ids.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32UI);
     glBindImageTexture(ML_IMG_RASTER_DEPTH, depth_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
     glDispatchCompute(gl::groupsFor(stamp_.width(), ML_RASTER_FINISH_ROW * kFinishPixels), stamp_.height(), 1);
@@ -235,6 +237,7 @@ void ComputeRaster::rasterPass(const FrameContext& ctx, int pass) {
     setup.set("u_largeCapacity", static_cast<GLuint>(largeCapacity_));
     setup.set("u_largeFirst", 0u);
     setup.set("u_clipsToViewport", clipsToViewport_ ? 1u : 0u);
+    setup.set("u_storeFlip", storeFlip_);
     if (pass == 0) setup.set("u_pairCapacity", static_cast<GLuint>(pairCapacity_));  // it lists a few large triangles' pairs
     glDispatchCompute(gl::groupsFor(opaque, ML_RASTER_WORKGROUP), 1, 1);
     if (alphaTested) setupAlphaTested(ctx, pass);
@@ -254,6 +257,7 @@ void ComputeRaster::rasterPass(const FrameContext& ctx, int pass) {
         glMemoryBarrier(kComputeToCompute | GL_COMMAND_BARRIER_BIT);
     }
     tiles_[pass].use();
+    tiles_[pass].set("u_storeFlip", storeFlip_);
     pairs_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_RASTER_PAIRS);
     glDispatchComputeIndirect(ML_RASTER_WORK_TILE_DISPATCH * sizeof(GLuint));
     if (alphaTested) tileAlphaTested(ctx, pass);
@@ -271,6 +275,7 @@ void ComputeRaster::rasterPass(const FrameContext& ctx, int pass) {
     hardwareList_[pass].use();
     hardwareList_[pass].set("u_cullBackFaces", ctx.scene.backfaceCulling() ? 1u : 0u);
     hardwareList_[pass].set("u_listFirst", 0u);
+    hardwareList_[pass].set("u_storeFlip", storeFlip_);
     glDisable(GL_CULL_FACE);
     glBindVertexArray(emptyVao_.id());
     glBindBuffer(GL_DRAW_INDIRECT_BUFFER, work_.id());
@@ -293,6 +298,7 @@ void ComputeRaster::setupAlphaTested(const FrameContext& ctx, int pass) {
     setup.set("u_largeCapacity", static_cast<GLuint>(largeCapacity_));
     setup.set("u_largeFirst", opaqueTriangles_);
     setup.set("u_clipsToViewport", clipsToViewport_ ? 1u : 0u);
+    setup.set("u_storeFlip", storeFlip_);
     for (std::size_t i = 0; i < spans.size(); ++i) {
         ctx.scene.bindTextureSet(spans[i].textureSet);
         setup.set("u_firstTriangle", spans[i].first);
@@ -316,6 +322,7 @@ void ComputeRaster::binAlphaTested(const FrameContext& ctx) {
 void ComputeRaster::tileAlphaTested(const FrameContext& ctx, int pass) {
     gl::Program& tiles = alphaTiles_[pass];
     tiles.use();
+    tiles.set("u_storeFlip", storeFlip_);
     alphaPairs_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_RASTER_PAIRS);
     for (const SceneGpu::TriangleSpan& span : ctx.scene.alphaTestedSpans()) {
         ctx.scene.bindTextureSet(span.textureSet);
@@ -331,6 +338,7 @@ void ComputeRaster::drawAlphaTestedOnHardware(const FrameContext& ctx, int pass)
     gl::Program& list = alphaHardwareList_[pass];
     list.use();
     list.set("u_cullBackFaces", ctx.scene.backfaceCulling() ? 1u : 0u);
+    list.set("u_storeFlip", storeFlip_);
     for (std::size_t i = 0; i < spans.size(); ++i) {
         ctx.scene.bindTextureSet(spans[i].textureSet);
         list.set("u_listFirst", spans[i].first);

@@ -11,15 +11,18 @@
 //   alpha-tested ranges, a setup per texture set ──small──> rastered there, each pixel alpha-tested
 //        │                                        ──large──> their own binning and tile pass (per set)
 //        └─ across the eye plane or past the guard band ──> the hardware, per set, into the same store
-//   finish: the store ──> the id target (index + 1) and an R32F depth, the store reset; for fitted
-//           slicing, the least and greatest view depth drawn (cluster.depth-range then reduces nothing)
+//   finish: the store ──> the id target (index + 1) and an R32F depth, the undrawn pixels emptied;
+//           for fitted slicing, the least and greatest view depth drawn (cluster.depth-range then
+//           reduces nothing)
 //
 // Which pixels a triangle covers and at what depth follows the hardware's rules (snapped
 // vertices, the fill rule, the depth plane; glsl/include/compute_raster.glsl), so the ids equal
 // the hardware raster's but where two surfaces tie in depth. The store resolves nearest depth,
 // then smallest id (the first drawn, as GL_LESS keeps) by one 64-bit atomicMin where the GPU has
 // GL_NV_shader_atomic_int64, or by two passes of 32-bit atomics (depth, then id) where it has not,
-// as on Mesa's llvmpipe, so the tests run the same raster.
+// as on Mesa's llvmpipe, so the tests run the same raster. The store is not reset between frames:
+// every other frame inverts its words and resolves by atomicMax, and the finish empties only the
+// pixels a frame left (include/compute_raster.glsl).
 //
 // The depth is a colour target, which the passes that sample depth read (FrameTargets::opaqueDepth);
 // the glass's capture tests against it in its fragment shader; for the passes that depth-test the
@@ -117,6 +120,7 @@ private:
     std::size_t sceneTriangles_ = 0;
     std::uint32_t opaqueTriangles_ = 0;
     std::uint32_t alphaTestedTriangles_ = 0;
+    GLuint storeFlip_ = 0;  // u_storeFlip: 0, or ~0u on every other frame
     std::size_t workWords_ = ML_RASTER_WORK_WORDS;  // and a draw command per alpha-tested span
 };
 

@@ -191,5 +191,37 @@ TEST_F(ComputeRasterTest, PairsPastTheListGoToTheHardwareAndNoStaleSlotIsRead) {
     EXPECT_EQ(d.coverage, 0u) << d.pixels << " pixels differ";
 }
 
+
+// The store is not reset between frames (every other frame inverts its words; the finish empties
+// only the pixels a frame left): views in turn, a covered one and one up at the sky, each frame's
+// ids against the hardware raster's of the same view, so a pixel drawn two frames before, left
+// the frame before, or drawn in both orders is held to what the view alone gives.
+TEST_F(ComputeRasterTest, FramesInTurnGiveEachViewsHardwareIds) {
+    const TestScene t = testScene("atrium", 64, 7);
+    const CameraPose open{{0.0f, 2.0f, 0.0f}, {0.0f, 30.0f, 1.0f}, 60.0f};
+    FrameSettings covered = smallFrame(t.scene, 320, 180);
+    const FrameSettings openFrame = smallFrame(t.scene, open, 320, 180);
+    covered.method.kind = MethodKind::Visibility;
+    covered.method.visibilityRaster = VisibilityRaster::Compute;
+    FrameRenderer renderer(t.scene, t.lights, covered);
+    RasterResult expected[2];
+    for (int view = 0; view < 2; ++view) {
+        FrameRenderer fresh(t.scene, t.lights, view == 0 ? covered : openFrame);
+        expected[view] = visibilityRaster(fresh, VisibilityRaster::Hardware);
+    }
+    std::size_t background = 0;
+    for (std::uint32_t id : expected[1].ids) background += id == 0u ? 1u : 0u;
+    ASSERT_GT(background, 320u * 180u / 10u) << "the open view shows no sky: the test tests nothing";
+    for (int frame = 0; frame < 6; ++frame) {
+        const int view = (frame / 2 + frame) % 2;  // covered, open, open, covered, covered, open
+        const std::string label = "frame " + std::to_string(frame) + (view == 0 ? " covered" : " open");
+        SCOPED_TRACE(label);
+        renderer.setCamera((view == 0 ? covered : openFrame).camera);
+        renderer.render(0);
+        const IdDifference d = compareIds(expected[view], lastRaster(renderer), 320, label);
+        EXPECT_EQ(d.coverage, 0u) << d.pixels << " pixels differ";
+    }
+}
+
 }  // namespace
 }  // namespace ml::test
