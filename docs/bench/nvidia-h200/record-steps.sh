@@ -7,6 +7,7 @@
 #   BUILDS     'label:folder ...', every build a round runs; the first is the baseline
 #   NEW        the build the frames step compares with the first
 #   HEADLINE   'label:folder' of the build the headline step runs beside the first
+#   TESTS      the tests step's gtest filter
 # Steps:
 #   warm          a minute of frames, so that the SM clock has risen before a round
 #   round <n>     $S/targets.sweep.json, every build
@@ -17,6 +18,7 @@
 #                 into /root/.corpus-sponza/corpus/amd/sponza while the machine stays warm)
 #   targets-4m    4,194,304 lights at 3840x2160, every build
 #   headline      the README's visibility rows, both rasters: the first build and $HEADLINE
+#   tests         the GPU tests $TESTS of .devbin-tests/ml_gpu_tests (stripped) on this GPU
 set -u
 [ -d .devbin-lib ] || for a in .devbin-*.txz; do tar xJf $a; done
 export LD_LIBRARY_PATH=$PWD/.devbin-lib
@@ -83,7 +85,10 @@ headline)
       timeout 150 $M bench $P --vis-raster compute --lights ${n%:*} --out $OUT --name compute-${n#*:}-$L > $OUT/compute-${n#*:}-$L.log 2>&1
     done
   done ;;
+tests)
+  mkdir -p /tmp/ml-tests; ML_TEST_TMP=/tmp/ml-tests timeout 300 .devbin-tests/ml_gpu_tests --gtest_filter="$TESTS" > $OUT/tests.log 2>&1
+  echo "ml_gpu_tests exit $?" >> $OUT/tests.log ;;
 *)
-  echo "record-steps.sh: unknown step '$1' (warm, round N, frames, sponza N, targets-4m, headline)" >&2
+  echo "record-steps.sh: unknown step '$1' (warm, round N, frames, sponza N, targets-4m, headline, tests)" >&2
   exit 2 ;;
 esac
