@@ -19,6 +19,9 @@
 #   targets-4m    4,194,304 lights at 3840x2160, every build
 #   headline      the README's visibility rows, both rasters: the first build and $HEADLINE
 #   tests         the GPU tests $TESTS of .devbin-tests/ml_gpu_tests (stripped) on this GPU
+#   sequence      four frames of an orbit, scene and renderer built once, of the atrium, Sponza and
+#                 the gas station with the compute raster (its store alternates its order frame to
+#                 frame): every frame of the first build and $NEW at 1280x720, 4,096 lights
 set -u
 [ -d .devbin-lib ] || for a in .devbin-*.txz; do tar xJf $a; done
 export LD_LIBRARY_PATH=$PWD/.devbin-lib
@@ -85,10 +88,30 @@ headline)
       timeout 150 $M bench $P --vis-raster compute --lights ${n%:*} --out $OUT --name compute-${n#*:}-$L > $OUT/compute-${n#*:}-$L.log 2>&1
     done
   done ;;
+sequence)
+  G=.corpus-glass/corpus/amd/gas_station/GasStation.gltf
+  if [ ! -d /root/.corpus-sponza ] && [ -f .sponza-part0 ]; then
+    mkdir -p /root/.corpus-sponza && cat .sponza-part0 .sponza-part1 .sponza-part2 .sponza-part3 | tar x -C /root/.corpus-sponza
+  fi
+  while read -r name scene; do
+    for build in base:${BASE#*:} new:$NEW; do
+      ${build#*:}/manylights render --backend egl --method visibility --vis-raster compute --size 1280x720 --lights 4096 \
+        --scene $scene --camera orbit:frames=8 --frames 0..3 --out /tmp/$name-%d-${build%:*}.png \
+        --out-float /tmp/$name-%d-${build%:*}.pfm > /dev/null 2>&1 || echo "$name ${build%:*}: render failed"
+    done
+    for k in 0 1 2 3; do
+      echo "$name frame $k: $($NEW/manylights compare /tmp/$name-$k-base.pfm /tmp/$name-$k-new.pfm)"
+    done
+  done > $OUT/sequence.txt <<LIST
+atrium atrium
+sponza /root/.corpus-sponza/corpus/amd/sponza/Sponza.gltf
+gas $G
+LIST
+  cp /tmp/sponza-1-new.png /tmp/atrium-3-new.png $OUT/ 2>/dev/null ;;
 tests)
   mkdir -p /tmp/ml-tests; ML_TEST_TMP=/tmp/ml-tests timeout 300 .devbin-tests/ml_gpu_tests --gtest_filter="$TESTS" > $OUT/tests.log 2>&1
   echo "ml_gpu_tests exit $?" >> $OUT/tests.log ;;
 *)
-  echo "record-steps.sh: unknown step '$1' (warm, round N, frames, sponza N, targets-4m, headline, tests)" >&2
+  echo "record-steps.sh: unknown step '$1' (warm, round N, frames, sponza N, targets-4m, headline, tests, sequence)" >&2
   exit 2 ;;
 esac
