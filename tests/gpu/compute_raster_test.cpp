@@ -157,7 +157,6 @@ TEST_F(ComputeRasterTest, LargeTrianglesOfSmallBoundsTakeEightByEightTiles) {
     }
 }
 
-
 // Past the pair list (more than 64 layers of the screen's tiles) a triangle goes to the hardware,
 // and the tile pass reads only the pairs written before the first that did not fit: never a slot
 // an earlier frame left. Two stacks of 1,500 quads seen from afar fill the list with pairs whose
@@ -190,7 +189,6 @@ TEST_F(ComputeRasterTest, PairsPastTheListGoToTheHardwareAndNoStaleSlotIsRead) {
     const IdDifference d = compareIds(hardware, compute, 320, "close after far");
     EXPECT_EQ(d.coverage, 0u) << d.pixels << " pixels differ";
 }
-
 
 // The store is not reset between frames (every other frame inverts its words; the finish empties
 // only the pixels a frame left): views in turn, a covered one and one up at the sky, each frame's
