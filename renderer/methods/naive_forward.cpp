@@ -5,30 +5,31 @@
 
 #include "glsl/include/bindings.h"
 #include "renderer/gl/depth_convention.h"
+#include "renderer/gl/scissor_scope.h"
 
 namespace ml {
 
-NaiveForward::NaiveForward(std::uint32_t materialFeatures, const ClusteringSettings& lights, const TransparencySettings& transparency)
-    : program_("naive_forward", {{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "naive_forward.frag"}}, materialFeatures,
+NaiveForward::NaiveForward(std::uint32_t materialFeatures, const ClusteringSettings& lights, const TransparencySettings& transparency,
+                           double pixelLightsPerDraw)
+    : pixelLightsPerDraw_(pixelLightsPerDraw),
+      program_("naive_forward", {{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "naive_forward.frag"}}, materialFeatures,
                RasterProgram::Reads::Material, lightShadingDefines(lights)),
       transparent_(TransparentPass::overAllLights("naive.transparent", materialFeatures, lights, transparency)) {}
 
 void NaiveForward::render(const FrameContext& ctx) {
     const int width = ctx.targets.width(), height = ctx.targets.height();
     const double pixelLights = static_cast<double>(width) * height * std::max<std::uint32_t>(ctx.lights.count(), 1u);
-    const int bands = std::clamp(static_cast<int>(std::ceil(pixelLights / kNaivePixelLightsPerDraw)), 1, height);
+    const int bands = std::clamp(static_cast<int>(std::ceil(pixelLights / pixelLightsPerDraw_)), 1, height);
     if (bands == 1) {
         renderBand(ctx);
         return;
     }
-    glEnable(GL_SCISSOR_TEST);
     for (int band = 0; band < bands; ++band) {
         const int y0 = height * band / bands, y1 = height * (band + 1) / bands;
-        glScissor(0, y0, width, y1 - y0);
+        gl::ScissorScope scissor({0, y0, width, y1 - y0});
         renderBand(ctx);
         glFinish();  // each band its own submission, finished before the next
     }
-    glDisable(GL_SCISSOR_TEST);
 }
 
 void NaiveForward::renderBand(const FrameContext& ctx) {

@@ -3,7 +3,8 @@
 // than kNaivePixelLightsPerDraw pixel-lights is drawn in horizontal bands, one scissored draw
 // each, waited for before the next (a flush alone still met the watchdog on an H100), so no
 // submission runs into the driver's watchdog (seconds on NVIDIA): the physical reference at tens
-// of thousands of lights and more is such a frame.
+// of thousands of lights and more is such a frame. A pass inside a band that scissors its own
+// raster keeps to the band (gl::ScissorScope).
 #pragma once
 
 #include "renderer/scene/raster_program.h"
@@ -17,7 +18,8 @@ inline constexpr double kNaivePixelLightsPerDraw = 1e9;
 
 class NaiveForward final : public ShadingMethod {
 public:
-    NaiveForward(std::uint32_t materialFeatures, const ClusteringSettings& lights, const TransparencySettings& transparency = {});
+    NaiveForward(std::uint32_t materialFeatures, const ClusteringSettings& lights, const TransparencySettings& transparency = {},
+                 double pixelLightsPerDraw = kNaivePixelLightsPerDraw);
     std::string name() const override { return "naive"; }
     void render(const FrameContext& ctx) override;
     const GlassFragments* transparentCapture() const override { return transparent_.capture(); }
@@ -26,6 +28,7 @@ private:
     void shadeOpaque(const FrameContext& ctx);
     void renderBand(const FrameContext& ctx);
 
+    double pixelLightsPerDraw_;
     RasterProgram program_;
     TransparentPass transparent_;
 };

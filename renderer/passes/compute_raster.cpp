@@ -8,6 +8,7 @@
 #include "glsl/include/bindings.h"
 #include "renderer/gl/depth_convention.h"
 #include "renderer/gl/extensions.h"
+#include "renderer/gl/scissor_scope.h"
 #include "renderer/scene/material_features.h"
 
 namespace ml {
@@ -352,8 +353,7 @@ void ComputeRaster::copyDepthUnderGlass(const FrameContext& ctx) {
     if (!rect) return;
     depthFbo_.bind();
     glViewport(0, 0, stamp_.width(), stamp_.height());
-    glEnable(GL_SCISSOR_TEST);
-    glScissor(rect->x, rect->y, rect->z, rect->w);
+    gl::ScissorScope scissor(glm::ivec4(rect->x, rect->y, rect->z, rect->w));
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_ALWAYS);
     glDepthMask(GL_TRUE);
@@ -364,7 +364,6 @@ void ComputeRaster::copyDepthUnderGlass(const FrameContext& ctx) {
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glDepthFunc(depth::kNearer);
-    glDisable(GL_SCISSOR_TEST);
 }
 
 ComputeRaster::Work ComputeRaster::lastWork() const {

@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "glsl/include/bindings.h"
+#include "renderer/gl/scissor_scope.h"
 #include "renderer/scene/transparent_ranges.h"
 
 namespace ml {
@@ -128,10 +129,10 @@ void GlassFragments::rasterGlass(const FrameContext& ctx, const RasterProgram& p
         glBindTextureUnit(ML_TEX_DEPTH, ctx.targets.opaqueDepth().id());
     }
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-    glEnable(GL_SCISSOR_TEST);
-    glScissor(GLint(window_.x), GLint(window_.y), GLsizei(window_.z), GLsizei(window_.w));
-    ctx.scene.drawTransparent(program, glm::vec3(ctx.uniforms.cameraPos));
-    glDisable(GL_SCISSOR_TEST);
+    {
+        gl::ScissorScope scissor{glm::ivec4(window_)};  // inside naive's band, where it draws in bands
+        ctx.scene.drawTransparent(program, glm::vec3(ctx.uniforms.cameraPos));
+    }
     glEnable(GL_DEPTH_TEST);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glDepthMask(GL_TRUE);
