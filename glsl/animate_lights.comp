@@ -1,7 +1,9 @@
 #version 450 core
-// Light animation: each light drifts upward at its own speed and wraps within the scene's
-// vertical extent; a spot also turns about +y at its own rate. Positions and directions are a
-// pure function of time, so frame K is reproducible alone. Mirrored by ml::animateLight. Under
+// Light animation: each generated light drifts upward from where it was placed at its own speed
+// and, past the top of the wrap range, re-enters at the bottom; a spot also turns about +y at its
+// own rate. The lights a file placed (the first u_firstDrifting) stay still. Positions and
+// directions are a pure function of time, so frame K is reproducible alone, and at time 0 every
+// light is exactly where it was placed. Mirrored by ml::animateLight. Under
 // --cutoff stochastic it also draws each light's range for the frame (Russian roulette; mirrored
 // by ml::stochasticRadius, renderer/lights/light_model.h), so every clustering sees the drawn ranges.
 #include "include/bindings.h"
@@ -23,6 +25,7 @@ uniform uint u_lightCount;
 uniform float u_time;        // seconds
 uniform float u_driftSpeed;  // metres per second, mean
 uniform vec2 u_wrapY;        // min y, height
+uniform uint u_firstDrifting;  // lights before it were placed by a file: still
 uniform float u_stochasticCutoff;  // --cutoff stochastic: the cut-off E; 0: ranges as given
 uniform uint u_drawSeed;           // the frame's draw (ml::stochasticDrawSeed)
 
@@ -33,10 +36,12 @@ void main() {
 #if ML_SPOT_LIGHTS
     vec4 cone = baseCones[i];
 #endif
-    if (u_wrapY.y > 0.0 && u_driftSpeed != 0.0) {
+    if (i >= u_firstDrifting && u_wrapY.y > 0.0 && u_driftSpeed != 0.0) {
         float speed = u_driftSpeed * (0.5 + hashToUnitFloat(i));
-        float y = l.positionRadius.y - u_wrapY.x + speed * u_time;
-        l.positionRadius.y = u_wrapY.x + mod(y, u_wrapY.y);
+        float y = l.positionRadius.y + speed * u_time;
+        float top = u_wrapY.x + u_wrapY.y;
+        if (y >= top) y -= u_wrapY.y * (floor((y - top) / u_wrapY.y) + 1.0);
+        l.positionRadius.y = y;
 #if ML_SPOT_LIGHTS
         if (isSpotCone(cone.w)) {
             float turn = 2.0 * hashToUnitFloat(i ^ 0x9E3779B9u) - 1.0;

@@ -17,6 +17,7 @@
 //   gltf_materials   convert materials and their images on first use;
 //   gltf_cameras     place the perspective cameras the node trees hold;
 //   gltf_lights      place the lights (KHR_lights_punctual) the node trees hold;
+//   unreferenced_vertices  drop the vertices no index uses (they are not part of the scene);
 // and here, the warnings for what the scene model does not hold. gltf_common holds the limits
 // and the one-line messages all of them use.
 #include "scenes/gltf_loader.h"
@@ -37,6 +38,7 @@
 #include "scenes/gltf_instancing.h"
 #include "scenes/gltf_materials.h"
 #include "scenes/gltf_nodes.h"
+#include "scenes/unreferenced_vertices.h"
 
 namespace ml {
 namespace {
@@ -155,6 +157,7 @@ Scene loadChecked(const std::string& path, std::vector<std::string>& warnings) {
     if (deformation) deformation->finish(scene, std::move(animation->animation()));
     scene.cameras = convertCameras(path, model, flat.cameras, skipped.orthographicCameras);
     scene.lights = convertLights(path, model, flat.lights);
+    dropUnreferencedVertices(scene);
     computeBounds(scene);
 
     for (const std::string& line : unmodelledFeatures(model, skipped)) warnings.push_back(path + ": " + line);

@@ -7,7 +7,8 @@ namespace ml {
 
 void computeBounds(Scene& scene) {
     scene.bounds = Bounds{};
-    for (const Vertex& v : scene.vertices) scene.bounds.extend(v.position);
+    // The vertices the triangles use: a vertex no index draws is not part of the scene.
+    for (std::uint32_t i : scene.indices) scene.bounds.extend(scene.vertices[i].position);
 }
 
 CameraPose framingView(const Bounds& bounds) {

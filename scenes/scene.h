@@ -162,7 +162,7 @@ struct Scene {
     std::vector<glm::vec4> colors;    // COLOR_0, linear RGBA (1 where a primitive has none)
     std::vector<SceneCamera> cameras;        // a glTF file's cameras, in the order its default scene's nodes are walked
     std::vector<SceneLight> lights;          // a glTF file's lights (KHR_lights_punctual), in the same order
-    Bounds bounds;                           // of all vertex positions
+    Bounds bounds;                           // of the vertex positions the triangles use
     std::optional<CameraPose> suggestedView; // procedural scenes set one; a file's default view: renderer/camera/default_camera.h
     std::vector<std::string> extensionsUsed; // a glTF file's extensionsUsed, as it lists them (`manylights info`)
     // A glTF file's clips, skins and morph targets, and the rest data of the vertices they move
@@ -178,7 +178,7 @@ public:
     using std::runtime_error::runtime_error;
 };
 
-// Recomputes bounds from the vertices.
+// Recomputes bounds from the vertices the indices use.
 void computeBounds(Scene& scene);
 
 // A camera pose that frames the bounds from a raised three-quarter view.

@@ -31,9 +31,7 @@ FramedSurface framedSurface(const Scene& scene) {
     for (std::uint32_t i = 0; i < kFramingSamples; ++i) {
         const std::uint32_t key = pcgHash(i ^ 0xF4A3E5u);
         const SurfaceSamples::Point p = surface.at(hashToUnitFloat(key), hashToUnitFloat(key + 1u), hashToUnitFloat(key + 2u));
-        const std::uint32_t* corner = &scene.indices[3 * p.triangle];
-        points[i] = p.u * scene.vertices[corner[0]].position + p.v * scene.vertices[corner[1]].position +
-                    p.w * scene.vertices[corner[2]].position;
+        points[i] = p.position(scene);
     }
     // The middle of the area along each axis...
     const std::size_t low = static_cast<std::size_t>(kFramedAreaTail * (kFramingSamples - 1));

@@ -36,7 +36,7 @@ GpuSunLights toGpuSunLights(const std::vector<Light>& lights) {
     return suns;
 }
 
-LightBuffers::LightBuffers(const std::vector<Light>& lights) : given_(lights) {
+LightBuffers::LightBuffers(const std::vector<Light>& lights) : given_(lights), drifting_(driftingLights(lights)) {
     std::vector<GpuLight> gpu;
     std::vector<GpuLightCone> cones;
     gpu.reserve(lights.size());
@@ -104,8 +104,10 @@ void AnimateLightsPass::run(const LightBuffers& lights, float time, const LightA
     program_.use();
     program_.set("u_lightCount", lights.count());
     program_.set("u_time", time);
-    program_.set("u_driftSpeed", animation.driftSpeed);
-    program_.set("u_wrapY", glm::vec2(animation.wrapMinY, animation.wrapHeight));
+    const LightAnimation fitted = fitDrift(animation, lights.drifting());
+    program_.set("u_driftSpeed", fitted.driftSpeed);
+    program_.set("u_wrapY", glm::vec2(fitted.wrapMinY, fitted.wrapHeight));
+    program_.set("u_firstDrifting", fitted.firstDrifting);
     program_.set("u_stochasticCutoff", model.falloff == Falloff::Stochastic ? model.cutoff : 0.0f);
     program_.set("u_drawSeed", drawSeed);
     lights.bindForAnimation();

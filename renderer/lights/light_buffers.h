@@ -28,6 +28,8 @@ public:
     std::uint32_t sunCount() const { return sunCount_; }
     // Whether any clustered light is a spot (ClusteringSettings::spotLights).
     bool hasSpots() const { return hasSpots_; }
+    // Which lights drift and over what heights (the animation pass fits the drift to them).
+    const DriftingLights& drifting() const { return drifting_; }
     // The animated lights (and their cones, where any light is a spot) at ML_SSBO_LIGHTS and
     // ML_SSBO_LIGHT_CONES, for every pass that reads lights.
     void bindForReading() const;
@@ -48,6 +50,7 @@ private:
     std::uint32_t sunCount_ = 0;
     bool hasSpots_ = false;
     std::vector<Light> given_;
+    DriftingLights drifting_;
     gl::Buffer base_;
     gl::Buffer animated_;
     gl::Buffer baseCones_, animatedCones_;  // only where a light is a spot

@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <optional>
 #include <stdexcept>
+#include <string>
 
 #include <nlohmann/json.hpp>
 
@@ -123,6 +125,7 @@ std::vector<Light> lightsFromScene(const Scene& scene, float cutoff) {
         }
         l.innerConeAngle = s.innerConeAngle;
         l.outerConeAngle = s.outerConeAngle;
+        l.drifts = false;
         lights.push_back(l);
     }
     return lights;
@@ -203,6 +206,7 @@ std::vector<Light> loadLightsFile(const std::string& path) {
             l.innerConeAngle = readNumber(item, "innerConeAngle", i, 0.0f);
             l.outerConeAngle = readNumber(item, "outerConeAngle", i, std::nullopt);
         }
+        l.drifts = false;  // an exact set: where the file says, at every frame
         lights.push_back(l);
     }
     validateLights(lights, path);
@@ -237,14 +241,51 @@ LightAnimation verticalDrift(const Bounds& volume, float driftSpeed) {
     return LightAnimation{driftSpeed, volume.min.y, volume.size().y};
 }
 
+DriftingLights driftingLights(const std::vector<Light>& lights) {
+    DriftingLights d;
+    std::uint32_t index = 0;
+    bool drifting = false;
+    for (const Light& l : lights) {
+        if (l.type == LightType::Directional) continue;
+        if (l.drifts) {
+            if (!drifting) d.first = index;
+            drifting = true;
+            d.minY = std::min(d.minY, l.position.y);
+            d.maxY = std::max(d.maxY, l.position.y);
+        } else if (drifting) {
+            throw std::invalid_argument("light " + std::to_string(index) +
+                                        ": a placed (still) light after a drifting one; placed lights come first");
+        }
+        ++index;
+    }
+    if (!drifting) d.first = index;
+    return d;
+}
+
+LightAnimation fitDrift(LightAnimation animation, const DriftingLights& drifting) {
+    animation.firstDrifting = drifting.first;
+    if (animation.wrapHeight > 0.0f && drifting.minY <= drifting.maxY) {
+        const float low = std::min(animation.wrapMinY, drifting.minY);
+        // Strictly above the highest light: a light at the very top would wrap at time 0.
+        const float high = std::max(animation.wrapMinY + animation.wrapHeight,
+                                    std::nextafter(drifting.maxY, std::numeric_limits<float>::infinity()));
+        animation.wrapMinY = low;
+        animation.wrapHeight = high - low;
+    }
+    return animation;
+}
+
 Light animateLight(const Light& light, std::uint32_t index, float time, const LightAnimation& animation) {
     Light out = light;
-    if (light.type == LightType::Directional) return out;
+    if (light.type == LightType::Directional || index < animation.firstDrifting) return out;
     if (animation.wrapHeight > 0.0f && animation.driftSpeed != 0.0f) {
         const float speed = animation.driftSpeed * (0.5f + hashToUnitFloat(index));
-        const float y = light.position.y - animation.wrapMinY + speed * time;
-        // GLSL mod(): x - y * floor(x / y)
-        out.position.y = animation.wrapMinY + (y - animation.wrapHeight * std::floor(y / animation.wrapHeight));
+        // Risen from the placed height, and past the top back by whole wrap heights: at time 0 the
+        // light is exactly where it was placed (no round trip through the bottom of the range).
+        float y = light.position.y + speed * time;
+        const float top = animation.wrapMinY + animation.wrapHeight;
+        if (y >= top) y -= animation.wrapHeight * (std::floor((y - top) / animation.wrapHeight) + 1.0f);
+        out.position.y = y;
         if (light.type == LightType::Spot) {
             const glm::vec3 d = glm::normalize(light.direction);
             const float angle = animation.driftSpeed * float(ML_SPOT_TURN_PER_METRE) * spotTurnFactor(index) * time;

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -26,6 +27,9 @@ struct Light {
     glm::vec3 direction{0.0f, 0.0f, -1.0f};
     float innerConeAngle = 0.0f;            // spot, radians: full intensity inside
     float outerConeAngle = 0.7853981634f;   // spot, radians, in (0, pi/2]: exactly zero at and beyond
+    // Generated lights drift (--drift-speed); a light a file places (a glTF file's
+    // KHR_lights_punctual, a --lights-file) stays where the file puts it.
+    bool drifts = true;
 };
 
 // The lights the clusters hold (points and spots), in order; directional ones left out.
@@ -77,14 +81,33 @@ void validateLights(const std::vector<Light>& lights, const std::string& source)
 std::vector<Light> loadLightsFile(const std::string& path);
 void saveLightsFile(const std::string& path, const std::vector<Light>& lights);
 
-// CPU mirror of glsl/animate_lights.comp.
+// CPU mirror of glsl/animate_lights.comp. A drifting light rises from where it was placed at its
+// own speed and, past the top of the wrap range, re-enters at the bottom; at time 0 every light is
+// exactly where it was placed.
 struct LightAnimation {
     float driftSpeed = 0.5f;  // metres per second, mean over lights
     float wrapMinY = 0.0f;
     float wrapHeight = 0.0f;  // 0: no animation
+    // The lights the GPU holds (directional ones left out) before this index stay still: the
+    // placed ones, which frameLights puts first (fitDrift sets it).
+    std::uint32_t firstDrifting = 0;
 };
 // Drift within the vertical extent of `volume` (use lightVolume() of the scene's bounds).
 LightAnimation verticalDrift(const Bounds& volume, float driftSpeed);
+
+// Which of a light set drift, as the GPU holds them: the placed lights come first (a placed
+// light after a drifting one throws std::invalid_argument), and the drifting ones' heights.
+struct DriftingLights {
+    std::uint32_t first = 0;  // index of the first drifting light among the non-directional ones
+    float minY = std::numeric_limits<float>::max();
+    float maxY = std::numeric_limits<float>::lowest();
+};
+DriftingLights driftingLights(const std::vector<Light>& lights);
+// `animation` for that set: the placed lights still, and the wrap range widened to hold every
+// drifting light (a light placed above the scene, say on a roof, would otherwise jump to the
+// floor at time 0).
+LightAnimation fitDrift(LightAnimation animation, const DriftingLights& drifting);
+
 Light animateLight(const Light& light, std::uint32_t index, float time, const LightAnimation& animation);
 
 }  // namespace ml

@@ -32,10 +32,10 @@ void placeOnSurfaces(std::vector<Light>& lights, const Scene& scene, std::uint32
         if (light.type == LightType::Directional) continue;
         const std::uint32_t key = pcgHash(static_cast<std::uint32_t>(i) ^ stream);
         const SurfaceSamples::Point p = surface.at(hashToUnitFloat(key), hashToUnitFloat(key + 1u), hashToUnitFloat(key + 2u));
-        const Vertex& va = scene.vertices[scene.indices[3 * p.triangle]];
-        const Vertex& vb = scene.vertices[scene.indices[3 * p.triangle + 1]];
-        const Vertex& vc = scene.vertices[scene.indices[3 * p.triangle + 2]];
-        const glm::vec3 point = p.u * va.position + p.v * vb.position + p.w * vc.position;
+        const Vertex& va = scene.vertices[p.corners[0]];
+        const Vertex& vb = scene.vertices[p.corners[1]];
+        const Vertex& vc = scene.vertices[p.corners[2]];
+        const glm::vec3 point = p.position(scene);
         glm::vec3 normal = p.u * va.normal + p.v * vb.normal + p.w * vc.normal;
         if (!(glm::dot(normal, normal) > 1e-12f)) normal = glm::cross(vb.position - va.position, vc.position - va.position);
         normal = glm::dot(normal, normal) > 1e-24f ? glm::normalize(normal) : glm::vec3(0.0f, 1.0f, 0.0f);

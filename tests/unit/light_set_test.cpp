@@ -5,6 +5,9 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "renderer/lights/light_set.h"
 
@@ -193,6 +196,60 @@ TEST(LightAnimation, WrapsWithinTheVerticalExtent) {
         EXPECT_EQ(a.position.x, l.position.x);
     }
     EXPECT_EQ(animateLight(l, 7, 3.0f, LightAnimation{0.0f, 0.0f, 5.0f}).position, l.position);
+}
+
+TEST(LightAnimation, AtTimeZeroEveryLightIsWhereItWasPlaced) {
+    // The repro of issue 61: a light at y = 4 over a scene whose light volume spans y -0.42..2.42
+    // wrapped to y = 1.17, under the quad it lit, before a single frame had passed.
+    const LightAnimation anim{0.5f, -0.4175f, 2.835f};
+    Light above;
+    above.position = {0.0f, 4.0f, 0.0f};
+    const std::vector<Light> lights{above};
+    const LightAnimation fitted = fitDrift(anim, driftingLights(lights));
+    EXPECT_LE(fitted.wrapMinY, anim.wrapMinY);
+    EXPECT_GT(fitted.wrapMinY + fitted.wrapHeight, 4.0f) << "the wrap range holds the light";
+    EXPECT_EQ(animateLight(above, 0, 0.0f, fitted).position, above.position);
+    for (float y : {-0.4175f, 0.3f, 1.9f, 2.4174f}) {
+        Light l;
+        l.position = {1.0f, y, 2.0f};
+        EXPECT_EQ(animateLight(l, 3, 0.0f, anim).position, l.position) << y;
+    }
+}
+
+TEST(LightAnimation, PlacedLightsStayWhereTheFilePutsThem) {
+    Scene scene;
+    SceneLight point;
+    point.position = {0.0f, 4.0f, 0.0f};
+    point.range = 40.0f;
+    SceneLight sun;
+    sun.type = SceneLight::Type::Directional;
+    scene.lights = {sun, point};
+    std::vector<Light> lights = lightsFromScene(scene);
+    ASSERT_EQ(lights.size(), 2u);
+    EXPECT_FALSE(lights[0].drifts);
+    EXPECT_FALSE(lights[1].drifts);
+    Light generated;
+    generated.position = {0.0f, 1.0f, 0.0f};
+    lights.push_back(generated);
+    const DriftingLights drifting = driftingLights(lights);
+    EXPECT_EQ(drifting.first, 1u) << "the directional light is not among the GPU's lights";
+    const LightAnimation anim = fitDrift(LightAnimation{1.0f, 0.0f, 5.0f}, drifting);
+    EXPECT_EQ(animateLight(lights[1], 0, 3.0f, anim).position, lights[1].position);
+    EXPECT_NE(animateLight(lights[2], 1, 3.0f, anim).position, lights[2].position);
+    // A placed light after a generated one breaks the order the GPU's index relies on.
+    std::vector<Light> misordered{generated, lights[1]};
+    EXPECT_THROW(driftingLights(misordered), std::invalid_argument);
+}
+
+TEST(LightAnimation, ALightsFileIsAnExactSet) {
+    const std::string path = ::testing::TempDir() + "exact_set.json";
+    Light l;
+    l.position = {0.5f, 9.0f, -1.0f};
+    saveLightsFile(path, {l});
+    const std::vector<Light> loaded = loadLightsFile(path);
+    ASSERT_EQ(loaded.size(), 1u);
+    EXPECT_FALSE(loaded[0].drifts);
+    EXPECT_EQ(driftingLights(loaded).first, 1u);
 }
 
 }  // namespace

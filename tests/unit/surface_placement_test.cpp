@@ -6,6 +6,7 @@
 #include <array>
 
 #include "renderer/camera/default_camera.h"
+#include "renderer/hash.h"
 #include "renderer/lights/surface_placement.h"
 #include "renderer/lights/surface_reach.h"
 #include "scenes/scene_library.h"
@@ -177,6 +178,63 @@ TEST(DefaultCamera, BuiltInScenesKeepTheirViewFilesTheirFirstCamera) {
     EXPECT_EQ(fromFile.camera.eye, first.pose.eye);
     EXPECT_EQ(fromFile.camera.nearPlane, 0.05f);
     EXPECT_NE(fromFile.choice.find("gltf:0 'Main'"), std::string::npos) << fromFile.choice;
+}
+
+
+// The same surface stored in another order: triangles shuffled, each triangle's corners turned
+// (winding kept), the vertices renumbered, as a re-export, Draco or gltfpack may store it.
+Scene reordered(const Scene& scene, std::uint32_t seed) {
+    Scene out = scene;
+    const std::size_t n = scene.vertices.size(), triangles = scene.triangleCount();
+    std::vector<std::uint32_t> vertexOrder(n), triangleOrder(triangles);
+    for (std::uint32_t i = 0; i < n; ++i) vertexOrder[i] = i;
+    for (std::uint32_t t = 0; t < triangles; ++t) triangleOrder[t] = t;
+    // Fisher-Yates with the project's integer hash: the same shuffle on every machine.
+    const auto shuffle = [&](std::vector<std::uint32_t>& v, std::uint32_t salt) {
+        for (std::size_t i = v.size(); i > 1; --i) std::swap(v[i - 1], v[pcgHash(seed ^ salt ^ static_cast<std::uint32_t>(i)) % i]);
+    };
+    shuffle(vertexOrder, 0x1234u);
+    shuffle(triangleOrder, 0x5678u);
+    std::vector<std::uint32_t> newIndexOf(n);
+    for (std::uint32_t i = 0; i < n; ++i) {
+        out.vertices[i] = scene.vertices[vertexOrder[i]];
+        newIndexOf[vertexOrder[i]] = i;
+    }
+    for (std::size_t t = 0; t < triangles; ++t) {
+        const std::uint32_t* from = &scene.indices[3 * triangleOrder[t]];
+        const std::size_t turn = t % 3;
+        for (std::size_t k = 0; k < 3; ++k) out.indices[3 * t + k] = newIndexOf[from[(k + turn) % 3]];
+    }
+    out.draws = {DrawRange{0, static_cast<std::uint32_t>(out.indices.size()), 0}};
+    return out;
+}
+
+TEST(SurfacePlacement, TheSurfaceNotItsStorageOrderPlacesTheLights) {
+    Scene scene = boxes();
+    scene.tangents.clear();
+    scene.uv1.clear();
+    scene.colors.clear();
+    const Scene twin = reordered(scene, 3);
+    ASSERT_NE(twin.indices, scene.indices);
+    ASSERT_EQ(twin.bounds.min, scene.bounds.min);
+    const auto a = generateLights(scene, generation(512, 0.5f, 7), LightPlacement::Surfaces);
+    const auto b = generateLights(twin, generation(512, 0.5f, 7), LightPlacement::Surfaces);
+    ASSERT_EQ(a.size(), b.size());
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        EXPECT_EQ(a[i].position, b[i].position) << i;
+        EXPECT_EQ(a[i].color, b[i].color) << i;
+    }
+}
+
+TEST(DefaultCamera, TheSurfaceNotItsStorageOrderFramesTheView) {
+    Scene scene = boxes();
+    scene.suggestedView.reset();  // framed, as a file without a camera is
+    const Scene twin = reordered(scene, 11);
+    const DefaultCamera a = defaultCamera(scene, 16.0f / 9.0f), b = defaultCamera(twin, 16.0f / 9.0f);
+    EXPECT_EQ(a.camera.eye, b.camera.eye);
+    EXPECT_EQ(a.camera.target, b.camera.target);
+    EXPECT_EQ(a.camera.nearPlane, b.camera.nearPlane);
+    EXPECT_EQ(a.camera.farPlane, b.camera.farPlane);
 }
 
 }  // namespace
