@@ -66,6 +66,7 @@ struct FrameOptions {
     std::string triangleOrder = "overdraw";
     std::string specular = "on";
     std::string brdf = "ggx";
+    std::string shadows = "off";
     std::string lightSum = "float";
     std::optional<float> lightCutoff;  // --light-cutoff E: radii where max(colour) / d^2 falls to E, glTF's falloff
     std::string cutoff = "hard";       // --cutoff hard|stochastic|none

@@ -90,6 +90,20 @@ void printShadingOptions(const FrameSettings& s, std::uint32_t materialFeatures)
     else std::printf("bloom: off\n");
 }
 
+void printShadowStructure(Shadows shadows, const ShadowRays* rays) {
+    if (shadows == Shadows::Off) {
+        std::printf("shadows: off\n");
+        return;
+    }
+    if (rays == nullptr || rays->empty()) {
+        std::printf("shadows: rays, nothing casts one (no triangle that is not BLEND): no ray is traced\n");
+        return;
+    }
+    const ShadowStructureStats& s = rays->stats();
+    std::printf("shadows: rays, %zu casting triangles (%zu alpha-tested), %zu nodes, depth %zu, %.1f MiB, built in %.2f s\n",
+                s.triangles, s.maskTriangles, s.nodes, s.depth, s.bytes / 1048576.0, s.buildSeconds);
+}
+
 void printCullAccuracy(const ClusterStatistics& s, const CullAccuracy& a) {
     std::printf("cull %s: %llu references, of which %llu (%.1f %%) reach no point of their cluster (exact sphere-frustum distance",
                 s.cull.c_str(), static_cast<unsigned long long>(a.references), static_cast<unsigned long long>(a.falsePositives),

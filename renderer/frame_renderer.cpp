@@ -7,6 +7,18 @@
 #include "renderer/context/gl_context.h"
 
 namespace ml {
+namespace {
+
+std::unique_ptr<ShadowRays> buildShadowRays(const Scene& scene, bool animated) {
+    // The structure holds the loaded pose; until it follows the posed vertices, say so rather
+    // than cast the rest pose's shadows under a walking figure.
+    if (animated)
+        throw std::invalid_argument(scene.name + ": --shadows rays does not follow an animated pose yet; add --animation off to "
+                                                 "draw and shadow it at rest");
+    return std::make_unique<ShadowRays>(scene);
+}
+
+}  // namespace
 
 FrameRenderer::FrameRenderer(const Scene& scene, const std::vector<Light>& lights, const FrameSettings& settings)
     : settings_(settings),
@@ -15,6 +27,7 @@ FrameRenderer::FrameRenderer(const Scene& scene, const std::vector<Light>& light
                            ? std::make_unique<VertexAnimationPass>(scene, *settings.sceneAnimation.clip, scene_.hasTangentStream())
                            : nullptr),
       lights_(lights),
+      shadowRays_(settings.shadows == Shadows::Rays ? buildShadowRays(scene, vertexAnimation_ != nullptr) : nullptr),
       // Sampled as asked from the start, so a size the GPU cannot hold is refused before allocation.
       targets_(settings.width, settings.height, false, TargetSampling{settings.method.msaa, settings.supersample}),
       frameUniformBuffer_("frame.uniforms", sizeof(FrameUniforms)),
@@ -37,8 +50,19 @@ void FrameRenderer::resize(int width, int height) {
 
 MethodSettings FrameRenderer::forFrame(MethodSettings method) const {
     method.clustering.spotLights = lights_.hasSpots();
-    method.clustering.shading = ShadingSwitches{settings_.lightModel.brdf, settings_.specular, settings_.lightModel.falloff};
+    method.clustering.shading =
+        ShadingSwitches{settings_.lightModel.brdf, settings_.specular, settings_.lightModel.falloff, activeShadowRays() != nullptr};
     return method;
+}
+
+const ShadowRays* FrameRenderer::activeShadowRays() const {
+    return settings_.shadows == Shadows::Rays && shadowRays_ && !shadowRays_->empty() ? shadowRays_.get() : nullptr;
+}
+
+void FrameRenderer::setShadows(Shadows shadows, const Scene& scene) {
+    settings_.shadows = shadows;
+    if (shadows == Shadows::Rays && !shadowRays_) shadowRays_ = buildShadowRays(scene, vertexAnimation_ != nullptr);
+    rebuildForShadingSwitches();
 }
 
 void FrameRenderer::setSpecular(bool on) {
@@ -85,7 +109,9 @@ void FrameRenderer::updateUniforms(float time) {
     const LightModel& model = settings_.lightModel;
     const std::uint32_t switches = (settings_.specular ? ML_SHADING_SPECULAR : 0u) | (model.brdf == Brdf::Ggx ? ML_SHADING_GGX : 0u);
     uniforms_.counts = glm::uvec4(lights_.count(), switches, static_cast<std::uint32_t>(model.falloff), 0);
-    uniforms_.lightModel = glm::vec4(model.cutoff, 0.0f, 0.0f, 0.0f);
+    const ShadowRays* shadows = activeShadowRays();
+    uniforms_.lightModel = glm::vec4(model.cutoff, shadows ? shadows->directionalReach() : 0.0f, 0.0f, 0.0f);
+    uniforms_.shadows = shadows ? shadows->uniforms() : glm::uvec4(0u);
     frameUniformBuffer_.upload(&uniforms_, sizeof(uniforms_));
     frameUniformBuffer_.bindBase(GL_UNIFORM_BUFFER, ML_UBO_FRAME);
     lights_.bindSuns();
@@ -119,7 +145,7 @@ std::vector<PassTime> FrameRenderer::renderAt(float time, std::uint32_t drawSeed
         overdraw_->run(scene_, targets_, timer_);
     } else {
         targets_.setComputedDepth(nullptr);
-        method_->render(FrameContext{scene_, lights_, frameUniformBuffer_, uniforms_, targets_, timer_});
+        method_->render(FrameContext{scene_, lights_, frameUniformBuffer_, uniforms_, targets_, timer_, activeShadowRays()});
     }
     // After the method and anything it drew last (a transparent pass lands in the samples too).
     if (targets_.sampling().resolves()) {

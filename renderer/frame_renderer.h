@@ -21,6 +21,8 @@
 #include "renderer/scene/scene_gpu.h"
 #include "renderer/scene/vertex_animation.h"
 #include "renderer/passes/tonemap_pass.h"
+#include "renderer/raytracing/shadow_mode.h"
+#include "renderer/raytracing/shadow_rays.h"
 
 namespace ml {
 
@@ -54,6 +56,7 @@ struct FrameSettings {
     TriangleOrder triangleOrder = TriangleOrder::Overdraw;  // --triangle-order, applied at upload
     bool specular = true;  // the BRDF's specular term (--specular), compiled in (ShadingSwitches)
     LightModel lightModel;  // --brdf, --cutoff compiled in (ShadingSwitches); --light-cutoff a frame uniform
+    Shadows shadows = Shadows::Off;  // --shadows, compiled in (ShadingSwitches) where something casts one
     BloomSettings bloom;
     LightAnimation animation;
     SceneAnimationSettings sceneAnimation;
@@ -75,7 +78,9 @@ public:
     std::vector<PassTime> renderAt(float seconds, std::uint32_t drawSeed = 0);
     // The last frame's context (its scene, lights, uniforms and targets) timed by `timer`: for
     // passes run outside a frame (`raster-floors`).
-    FrameContext frameContext(PassTimer& timer) { return FrameContext{scene_, lights_, frameUniformBuffer_, uniforms_, targets_, timer}; }
+    FrameContext frameContext(PassTimer& timer) {
+        return FrameContext{scene_, lights_, frameUniformBuffer_, uniforms_, targets_, timer, activeShadowRays()};
+    }
 
     RgbaImage readLdr() const;
     FloatImage readHdr() const;
@@ -99,6 +104,11 @@ public:
     void setSpecular(bool on);
     void setAmbient(float ambient) { settings_.ambient = ambient; }
     void setLightModel(const LightModel& model);
+    // --shadows; `scene` (the one this renderer was built from) gives the occluders the first
+    // time shadow rays are asked for.
+    void setShadows(Shadows shadows, const Scene& scene);
+    // The occluders' structure, once --shadows rays has built it (else null).
+    const ShadowRays* shadowRays() const { return shadowRays_.get(); }
     void setBloom(const BloomSettings& bloom) { settings_.bloom = bloom; }
     const BloomPass& bloom() const { return bloom_; }
     const ShadingMethod& method() const { return *method_; }
@@ -114,6 +124,8 @@ public:
 
 private:
     void updateUniforms(float time);
+    // The occluders the frame traces: null with --shadows off or where nothing casts a shadow.
+    const ShadowRays* activeShadowRays() const;
     // The targets' stencil and sampling as the method needs them.
     void configureTargets();
     // The method's settings with what the frame decides: ClusteringSettings::spotLights from the
@@ -126,6 +138,7 @@ private:
     SceneGpu scene_;
     std::unique_ptr<VertexAnimationPass> vertexAnimation_;  // only where a clip plays
     LightBuffers lights_;
+    std::unique_ptr<ShadowRays> shadowRays_;  // built on the first frame settings with --shadows rays
     FrameTargets targets_;
     gl::Buffer frameUniformBuffer_;
     FrameUniforms uniforms_{};

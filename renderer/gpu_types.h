@@ -55,9 +55,10 @@ struct alignas(16) FrameUniforms {
     glm::vec4 viewport;    // width, height, 1/width, 1/height
     glm::vec4 depthRange;  // near, far, time, ambient
     glm::uvec4 counts;     // light count, shading switches (ML_SHADING_*), falloff (ML_FALLOFF_*), stochastic draw seed
-    glm::vec4 lightModel;  // --light-cutoff E, 0, 0, 0
+    glm::vec4 lightModel;  // --light-cutoff E, a directional shadow ray's length, 0, 0
+    glm::uvec4 shadows;    // --shadows rays: the first triangle's vec4 in the BVH buffer, nodes, triangles, 0
 };
-static_assert(sizeof(FrameUniforms) == 5 * 64 + 5 * 16);
+static_assert(sizeof(FrameUniforms) == 5 * 64 + 6 * 16);
 
 // glsl/include/cluster_grid.glsl: ClusterGridData (std430).
 struct alignas(16) ClusterGridGpu {

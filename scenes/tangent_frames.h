@@ -20,6 +20,8 @@ using IndexRanges = std::vector<std::pair<std::size_t, std::size_t>>;
 // vertex's sum is made orthogonal to its normal (Gram-Schmidt) and w is the sign of the summed
 // bitangent against cross(normal, tangent), glTF's convention. A triangle with degenerate UVs
 // contributes nothing; a vertex with no usable tangent gets a unit vector orthogonal to its normal.
+// Vertices equal in position, normal and UV share their sums (one vertex, as MikkTSpace welds them),
+// so a file's duplicate vertices get the frame a re-export that merges them does.
 //
 // glTF names MikkTSpace for tangents a file leaves out. MikkTSpace splits a vertex where the
 // tangent frame is discontinuous (UV seams, mirrored UV islands) and weights faces by angle; this

@@ -60,6 +60,7 @@ std::string frameKeyOf(const FrameOptions& o, double radius) {
     k["exposure"] = o.exposure;
     k["specular"] = o.specular;  // the naive reference must shade with the same model
     k["brdf"] = o.brdf;
+    k["shadows"] = o.shadows;  // naive traces the same rays
     k["light_sum"] = o.lightSum;
     k["light_cutoff"] = o.lightCutoff ? nlohmann::json(*o.lightCutoff) : nlohmann::json();
     k["cutoff"] = o.cutoff;
@@ -99,6 +100,7 @@ BenchRow configColumns(const BenchPoint& p, int index, std::uint32_t frame, cons
     row["drift_speed"] = o.driftSpeed;
     row["specular"] = o.specular;
     row["brdf"] = o.brdf;
+    row["shadows"] = o.shadows;
     row["light_sum"] = o.lightSum;
     row["light_cutoff"] = o.lightCutoff ? nlohmann::ordered_json(*o.lightCutoff) : nlohmann::ordered_json();
     row["cutoff"] = o.cutoff;

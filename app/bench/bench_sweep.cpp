@@ -160,6 +160,12 @@ const std::vector<AxisDef>& axisDefs() {
              (void)parseBrdf(asText(v));
              p.frame.brdf = v.get<std::string>();
          }},
+        {{"shadows", "--shadows", "off, or rays (an exact shadow ray for every point and light that adds light)"}, ValueKind::Text,
+         Applies::Always,
+         [](BenchPoint& p, const json& v) {
+             (void)parseShadows(asText(v));
+             p.frame.shadows = v.get<std::string>();
+         }},
         {{"light_sum", "--light-sum", "how a point adds up its lights: float (lists sorted), fixed (64-bit integers, lists unsorted)"},
          ValueKind::Text, Applies::Always,
          [](BenchPoint& p, const json& v) {

@@ -161,6 +161,7 @@ int runRender(RenderOptions o) {
                     drawSubmissionName(renderer.scene().submission()), renderer.scene().drawCallsPerPass(),
                     renderer.scene().drawRangeCount());
         printShadingOptions(frame.settings, renderer.scene().materialFeatures());
+        printShadowStructure(frame.settings.shadows, renderer.shadowRays());
         // Lights that touch no surface light nothing, yet are culled and assigned all the same.
         const SurfaceReach reach = measureSurfaceReach(frame.scene, frame.lights);
         if (reach.lights > 0)

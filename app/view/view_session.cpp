@@ -209,6 +209,17 @@ Camera ViewSession::interactiveCamera(double now) {
     return fitted(controller_.camera());
 }
 
+void ViewSession::toggleShadows() {
+    const Shadows next = renderer_->settings().shadows == Shadows::Off ? Shadows::Rays : Shadows::Off;
+    try {
+        renderer_->setShadows(next, frame_.scene);
+        options_.frame.shadows = shadowsName(next);
+        std::printf("shadows: %s\n", shadowsName(next));
+    } catch (const std::invalid_argument& e) {
+        std::fprintf(stderr, "shadows: %s\n", e.what());
+    }
+}
+
 void ViewSession::handleKeys(const std::vector<int>& keys) {
     for (int key : keys) {
         switch (key) {
@@ -232,6 +243,7 @@ void ViewSession::handleKeys(const std::vector<int>& keys) {
             controller_.reset();
             break;
         case GLFW_KEY_F: frameScene(); break;
+        case GLFW_KEY_O: toggleShadows(); break;
         // Pauses and resumes time: the lights' drift and the file's animation clip alike.
         case GLFW_KEY_P: settings_.animate = !settings_.animate; break;
         case GLFW_KEY_C:

@@ -49,6 +49,8 @@ public:
     int run();
 
 private:
+    // O: --shadows off <-> rays (the occluders are built the first time).
+    void toggleShadows();
     void handleKeys(const std::vector<int>& keys);
     // Jumps the free camera to the scene's front framing (F, the panel's "frame").
     void frameScene();

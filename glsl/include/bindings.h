@@ -21,6 +21,10 @@
 #define ML_SSBO_ASSIGN_STATS 9     // overflow counters of capped lists
 #define ML_SSBO_SCAN_DATA 10       // prefix sum: the values, scanned in place
 #define ML_SSBO_SCAN_BLOCKS 11     // prefix sum: the ticket, and each block's published sums
+// --shadows rays: the occluders' BVH, nodes then triangles (glsl/include/shadow_rays.glsl). Bound
+// by every shading pass as it starts (FrameContext::bindLightsForShading); only the light
+// assignment's prefix sum, which runs before, uses the point for its blocks.
+#define ML_SSBO_SHADOW_BVH 11
 // prefix sum: where the total goes (the scan writes it, rather than a buffer copy after the scan).
 // It shares the vertices' point below: every pass binds what it reads before it runs.
 #define ML_SSBO_SCAN_TOTAL 12
@@ -167,6 +171,7 @@
 #define ML_TEX_GBUFFER2 4
 #define ML_TEX_VISIBILITY 5
 #define ML_TEX_RESOLVE_SOURCE 10  // the methods' colour (multisampled or supersampled), read by the resolve
+#define ML_TEX_SHADOW_ALPHA 11    // --shadows rays: the MASK images' alpha, a layer each (renderer/raytracing/shadow_alpha.h)
 
 // Image units
 #define ML_IMG_HDR 0
@@ -201,6 +206,13 @@
 #define ML_POINT_LIGHT_CONE_COS -2.0
 // Directional lights ("suns") sit in a uniform block of this many; every shaded point loops over them.
 #define ML_MAX_SUN_LIGHTS 16
+// Shadow rays: the traversal stack's entries; the builder refuses a tree deeper than this less one.
+#define ML_SHADOW_STACK 64
+// A BVH child reference with this bit set is a leaf: (count - 1) in bits 28-30, its first
+// triangle in bits 0-27.
+#define ML_SHADOW_LEAF_BIT 0x80000000u
+// A triangle's material word for one that always blocks (not alpha-tested).
+#define ML_SHADOW_OPAQUE 0xFFFFFFFFu
 // Spot lights turn about +y as they drift: radians per metre of drift, times a per-light factor in [-1, 1).
 #define ML_SPOT_TURN_PER_METRE 0.4
 

@@ -25,6 +25,13 @@
 #ifndef ML_SPOT_LIGHTS
 #define ML_SPOT_LIGHTS 1  // as in lights.glsl: spot paths compiled in unless the renderer says none
 #endif
+// --shadows rays: a light counts only where its shadow ray reaches it (ShadingSwitches).
+#ifndef ML_SHADOW_RAYS
+#define ML_SHADOW_RAYS 0
+#endif
+#if ML_SHADOW_RAYS
+#include "include/shadow_rays.glsl"
+#endif
 
 const float kPi = 3.14159265358979;
 
@@ -157,12 +164,21 @@ vec3 shadeLight(SurfacePoint s, vec3 viewDir, vec4 positionRadius, vec4 colorCos
         falloff *= spotAttenuation(dot(-l, directionCosOuter.xyz), colorCosInner.w, directionCosOuter.w);
         if (falloff <= 0.0) return vec3(0.0);
     }
-    return shadeIncoming(s, viewDir, l, color, falloff);
+    vec3 lit = shadeIncoming(s, viewDir, l, color, falloff);
+#if ML_SHADOW_RAYS
+    // Traced only for a light that adds something: the ray is the costly part.
+    if (lit != vec3(0.0) && pointLightShadowed(s.position, s.normal, positionRadius.xyz)) return vec3(0.0);
+#endif
+    return lit;
 }
 
 // A directional light travelling along the unit `direction`: no falloff, no cone.
 vec3 shadeDirectionalLight(SurfacePoint s, vec3 viewDir, vec3 direction, vec3 color) {
-    return shadeIncoming(s, viewDir, -direction, color, 1.0);
+    vec3 lit = shadeIncoming(s, viewDir, -direction, color, 1.0);
+#if ML_SHADOW_RAYS
+    if (lit != vec3(0.0) && directionalLightShadowed(s.position, s.normal, -direction)) return vec3(0.0);
+#endif
+    return lit;
 }
 
 // What a surface shows with no light on it: the ambient term and its own glow.

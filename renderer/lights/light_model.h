@@ -55,6 +55,7 @@ struct ShadingSwitches {
     Brdf brdf = Brdf::Ggx;
     bool specular = true;
     Falloff falloff = Falloff::Smooth;
+    bool shadowRays = false;  // --shadows rays, where something casts a shadow
     bool operator==(const ShadingSwitches&) const = default;
 };
 

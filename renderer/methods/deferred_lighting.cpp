@@ -13,7 +13,7 @@ shaders::Defines deferredLightingDefines(const ClusteringSettings& clustering, c
 void bindDeferredLightingInputs(const GBuffer& gbuffer, const FrameContext& ctx, const ClusteredLighting& clustering) {
     gbuffer.bindForReading();
     glBindTextureUnit(ML_TEX_DEPTH, ctx.targets.opaqueDepth().id());
-    ctx.lights.bindForReading();
+    ctx.bindLightsForShading();
     clustering.bindForShading();
 }
 

@@ -57,7 +57,7 @@ void ForwardPlus::shadeOpaque(const FrameContext& ctx) {
         clustering_.build(ctx);
         auto pass = ctx.timer.pass("forward+.shade");
         clearTargets();
-        ctx.lights.bindForReading();
+        ctx.bindLightsForShading();
         clustering_.bindForShading();
         ctx.scene.draw(shadeProgram_);
         return;
@@ -82,7 +82,7 @@ void ForwardPlus::shadeOpaque(const FrameContext& ctx) {
         glEnable(GL_STENCIL_TEST);
         glStencilFunc(GL_EQUAL, 0, 0xFF);
         glStencilOp(GL_KEEP, GL_KEEP, GL_INCR);
-        ctx.lights.bindForReading();
+        ctx.bindLightsForShading();
         clustering_.bindForShading();
         ctx.scene.draw(shadeProgram_);
         glDisable(GL_STENCIL_TEST);

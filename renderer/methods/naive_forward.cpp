@@ -47,7 +47,7 @@ void NaiveForward::shadeOpaque(const FrameContext& ctx) {
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(depth::kNearer);
     glDepthMask(GL_TRUE);
-    ctx.lights.bindForReading();
+    ctx.bindLightsForShading();
     ctx.scene.draw(program_);
 }
 

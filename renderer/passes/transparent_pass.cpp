@@ -71,7 +71,7 @@ void TransparentPass::renderForward(const FrameContext& ctx, const ClusteredLigh
     glEnable(GL_BLEND);
     // Colour "over" the frame; the target's alpha stays 1 (the frame is opaque).
     glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
-    ctx.lights.bindForReading();
+    ctx.bindLightsForShading();
     if (lists) lists->bindForShading();
     ctx.scene.drawTransparent(forward_, glm::vec3(ctx.uniforms.cameraPos));
     glDisable(GL_BLEND);
@@ -86,7 +86,7 @@ void TransparentPass::renderCaptured(const FrameContext& ctx, const ClusteredLig
     const bool splits = !storesColors && capture_->hasDeepTileList();
     auto pass = ctx.timer.pass(timerName_);
     ctx.scene.bindGeometryStorage();
-    ctx.lights.bindForReading();
+    ctx.bindLightsForShading();
     if (lists) lists->bindForShading();
     capture_->bindForShading();
     glBindImageTexture(ML_IMG_HDR, ctx.targets.hdr().id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);

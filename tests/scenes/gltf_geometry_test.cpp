@@ -344,6 +344,31 @@ TEST(TangentFrames, DegenerateUvsGiveAUnitTangentOrthogonalToTheNormal) {
     }
 }
 
+// A file may store one vertex twice (equal position, normal and UV), and a re-export merges the
+// copies: the generated frames must not tell the two apart (issue 61's twins). Two triangles with
+// different UV directions share a corner; stored once or as two copies, it gets the same tangent.
+TEST(GltfTangents, DuplicateVerticesGetTheFrameOfTheMergedVertex) {
+    const auto vertex = [](glm::vec3 p, glm::vec2 uv) {
+        Vertex v;
+        v.position = p;
+        v.normal = {0, 0, 1};
+        v.uv = uv;
+        return v;
+    };
+    Scene merged;
+    merged.vertices = {vertex({0, 0, 0}, {0, 0}), vertex({1, 0, 0}, {1, 0}), vertex({0, 1, 0}, {0, 1}),
+                       vertex({-1, 0, 0}, {1, 1})};
+    merged.indices = {0, 1, 2, 0, 2, 3};
+    Scene duplicated = merged;
+    duplicated.vertices.push_back(merged.vertices[0]);  // vertex 4: a copy of the shared corner
+    duplicated.indices = {0, 1, 2, 4, 2, 3};
+    generateTangents(merged, {{0, 6}}, 0);
+    generateTangents(duplicated, {{0, 6}}, 0);
+    EXPECT_EQ(duplicated.tangents[0], merged.tangents[0]);
+    EXPECT_EQ(duplicated.tangents[4], merged.tangents[0]);
+    EXPECT_EQ(duplicated.tangents[2], merged.tangents[2]);
+}
+
 // --- Cameras ---------------------------------------------------------------------------------------
 
 json perspective(double yfov, double znear, double zfar = 0.0) {
@@ -444,6 +469,35 @@ TEST(GltfCameras, BadCamerasAreRefusedNamingThem) {
 
 TEST(GltfCameras, AFileWithoutCamerasHasNone) {
     EXPECT_TRUE(load(oneTriangle().writeGlb(testDir(), "no_cameras")).cameras.empty());
+}
+
+// Vertices no index uses (a 20x20 floor before the quad's corners, two strays after) are not
+// part of the scene: dropped at load, so they widen neither the bounds nor anything fitted to
+// them (issue 61's repro: its light landed under the quad once they counted). The colours that
+// go with the kept vertices stay with them.
+TEST(GltfGeometry, VerticesNoIndexUsesAreDropped) {
+    Gltf g;
+    const std::vector<glm::vec3> positions{{-10, 0, -10}, {10, 0, -10}, {10, 0, 10}, {-10, 0, 10},  // unused floor
+                                           {-1, 2, -1},   {1, 2, -1},   {1, 2, 1},   {-1, 2, 1},    // the quad
+                                           {500, 9, 0},   {0, -300, 0}};                              // unused strays
+    std::vector<glm::vec3> normals(positions.size(), glm::vec3(0, 1, 0));
+    std::vector<glm::vec4> colors;
+    for (std::size_t i = 0; i < positions.size(); ++i) colors.emplace_back(float(i) / 16.0f, 0.5f, 0.25f, 1.0f);
+    const int colorAccessor = g.accessor(g.view(colors.data(), colors.size() * 16), kFloat, colors.size(), "VEC4");
+    const json attributes = {{"POSITION", g.vec3(positions)}, {"NORMAL", g.vec3(normals)}, {"COLOR_0", colorAccessor}};
+    const int mesh = g.mesh({primitive(attributes, g.indices({4, 6, 5, 4, 7, 6}))});
+    g.scene({g.node({{"mesh", mesh}})});
+    std::vector<std::string> warnings;
+    const Scene scene = load(g.writeGltf(testDir(), "unused_vertices"), warnings);
+    ASSERT_EQ(scene.vertices.size(), 4u);
+    EXPECT_EQ(scene.bounds.min, glm::vec3(-1, 2, -1));
+    EXPECT_EQ(scene.bounds.max, glm::vec3(1, 2, 1));
+    ASSERT_EQ(scene.colors.size(), 4u);
+    for (std::size_t i = 0; i < 4; ++i) {
+        EXPECT_EQ(scene.vertices[i].position, positions[4 + i]);
+        EXPECT_FLOAT_EQ(scene.colors[i].r, float(4 + i) / 16.0f);
+    }
+    EXPECT_EQ(scene.indices, (std::vector<std::uint32_t>{0, 2, 1, 0, 3, 2}));
 }
 
 }  // namespace

@@ -1,0 +1,72 @@
+#include "renderer/raytracing/shadow_rays.h"
+
+#include <cstring>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "glsl/include/bindings.h"
+#include "renderer/raytracing/shadow_alpha.h"
+#include "renderer/raytracing/shadow_bvh.h"
+
+namespace ml {
+
+ShadowRays::ShadowRays(const Scene& scene) {
+    ShadowBvh bvh = buildShadowBvh(scene);
+    const ShadowAlphaMasks masks = buildShadowAlphaMasks(scene, bvh);
+    stats_.triangles = bvh.triangles.size();
+    stats_.nodes = bvh.nodes.size();
+    stats_.depth = bvh.depth;
+    stats_.buildSeconds = bvh.buildSeconds;
+    if (bvh.nodes.empty()) return;
+    const std::size_t nodeBytes = bvh.nodes.size() * sizeof(GpuBvhNode);
+    const std::size_t triangleBytes = bvh.triangles.size() * sizeof(GpuBvhTriangle);
+    const std::size_t uvBytes = masks.uvs.size() * sizeof(glm::vec4), materialBytes = masks.materials.size() * sizeof(glm::vec4);
+    stats_.maskTriangles = bvh.maskTriangles;
+    stats_.bytes = nodeBytes + triangleBytes + uvBytes + materialBytes;
+    GLint64 maxBlock = 0;
+    glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &maxBlock);
+    if (maxBlock > 0 && stats_.bytes > static_cast<std::size_t>(maxBlock))
+        throw std::invalid_argument(scene.name + ": the shadow rays' BVH takes " + std::to_string(stats_.bytes >> 20) +
+                                    " MiB, more than this GPU's GL_MAX_SHADER_STORAGE_BLOCK_SIZE (" +
+                                    std::to_string(maxBlock >> 20) + " MiB); --shadows off renders it unshadowed");
+    static_assert(sizeof(GpuBvhNode) % 16 == 0 && sizeof(GpuBvhTriangle) % 16 == 0);
+    firstTriangle_ = static_cast<std::uint32_t>(nodeBytes / 16);
+    firstMaterial_ = static_cast<std::uint32_t>((nodeBytes + triangleBytes + uvBytes) / 16);
+    std::vector<unsigned char> bytes(stats_.bytes);
+    std::memcpy(bytes.data(), bvh.nodes.data(), nodeBytes);
+    std::memcpy(bytes.data() + nodeBytes, bvh.triangles.data(), triangleBytes);
+    if (uvBytes > 0) std::memcpy(bytes.data() + nodeBytes + triangleBytes, masks.uvs.data(), uvBytes);
+    if (materialBytes > 0) std::memcpy(bytes.data() + nodeBytes + triangleBytes + uvBytes, masks.materials.data(), materialBytes);
+    buffer_ = gl::Buffer("shadows.bvh", bytes.size(), bytes.data(), 0);
+    if (masks.layerCount > 0) {
+        // One R8 layer per MASK image; level 0 alone, read with textureLod (shadow_alpha.h).
+        GLuint id = 0;
+        glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &id);
+        alphaLayers_ = gl::Handle<gl::TextureDeleter>(id);
+        glObjectLabel(GL_TEXTURE, id, -1, "shadows.alpha");
+        glTextureStorage3D(id, 1, GL_R8, masks.layerSize, masks.layerSize, masks.layerCount);
+        glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+        glTextureSubImage3D(id, 0, 0, 0, 0, masks.layerSize, masks.layerSize, masks.layerCount, GL_RED, GL_UNSIGNED_BYTE,
+                            masks.texels.data());
+        glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+        glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+        glTextureParameteri(id, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        glTextureParameteri(id, GL_TEXTURE_WRAP_S, GL_REPEAT);
+        glTextureParameteri(id, GL_TEXTURE_WRAP_T, GL_REPEAT);
+        stats_.bytes += masks.texels.size();
+    }
+    directionalReach_ = 2.0f * glm::length(bvh.bounds.size()) + 1.0f;
+}
+
+void ShadowRays::bindForShading() const {
+    if (empty()) return;
+    buffer_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_SHADOW_BVH);
+    if (alphaLayers_) glBindTextureUnit(ML_TEX_SHADOW_ALPHA, alphaLayers_.id());
+}
+
+glm::uvec4 ShadowRays::uniforms() const {
+    return glm::uvec4(firstTriangle_, static_cast<std::uint32_t>(stats_.nodes), static_cast<std::uint32_t>(stats_.triangles), firstMaterial_);
+}
+
+}  // namespace ml

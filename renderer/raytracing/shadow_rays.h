@@ -1,0 +1,55 @@
+// The occluders of --shadows rays in GPU memory: the scene's BVH (built on the CPU by Embree,
+// renderer/raytracing/shadow_bvh.h) as one storage buffer, nodes, triangles, then what MASK
+// triangles need to read their alpha (shadow_alpha.h), which every
+// shading pass binds (FrameContext::bindLightsForShading) and glsl/include/shadow_rays.glsl
+// traverses. Built once per scene: a static scene pays nothing per frame.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+#include <glm/glm.hpp>
+
+#include "renderer/gl/buffer.h"
+#include "renderer/gl/gl_handle.h"
+#include "scenes/scene.h"
+
+namespace ml {
+
+// What the structure holds and what it cost, for `--stats`, `info` and the benchmarks.
+struct ShadowStructureStats {
+    std::size_t triangles = 0;  // the triangles that cast shadows (BLEND surfaces do not)
+    std::size_t maskTriangles = 0;  // of them, the alpha-tested ones (their alpha read at the hit)
+    std::size_t nodes = 0;
+    std::size_t depth = 0;
+    std::size_t bytes = 0;
+    double buildSeconds = 0.0;  // Embree's build and the flattening, on the CPU
+};
+
+class ShadowRays {
+public:
+    // Builds the BVH of `scene` and uploads it. A structure larger than this GPU's
+    // GL_MAX_SHADER_STORAGE_BLOCK_SIZE throws std::invalid_argument in one line naming the scene.
+    explicit ShadowRays(const Scene& scene);
+
+    // Nothing casts a shadow (no triangle, or only BLEND ones): the frame need not trace.
+    bool empty() const { return stats_.nodes == 0; }
+    void bindForShading() const;
+    // FrameUniforms::shadows: the first triangle's vec4 in the buffer, nodes, triangles, the first
+    // MASK material record's vec4 (the MASK triangles' UVs lie between: shadow_alpha.h).
+    glm::uvec4 uniforms() const;
+    // A directional light's shadow ray: long enough to leave the occluders' bounds from any
+    // point inside them (twice their diagonal).
+    float directionalReach() const { return directionalReach_; }
+    const ShadowStructureStats& stats() const { return stats_; }
+
+private:
+    gl::Buffer buffer_;
+    gl::Handle<gl::TextureDeleter> alphaLayers_;  // MASK images' alpha, a layer each (shadow_alpha.h)
+    ShadowStructureStats stats_;
+    std::uint32_t firstTriangle_ = 0;  // in vec4s
+    std::uint32_t firstMaterial_ = 0;  // in vec4s
+    float directionalReach_ = 0.0f;
+};
+
+}  // namespace ml
