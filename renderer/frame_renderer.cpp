@@ -51,8 +51,21 @@ void FrameRenderer::resize(int width, int height) {
 MethodSettings FrameRenderer::forFrame(MethodSettings method) const {
     method.clustering.spotLights = lights_.hasSpots();
     method.clustering.shading =
-        ShadingSwitches{settings_.lightModel.brdf, settings_.specular, settings_.lightModel.falloff, activeShadowRays() != nullptr};
+        ShadingSwitches{settings_.lightModel.brdf, settings_.specular, settings_.lightModel.falloff, activeShadowRays() != nullptr,
+                        countingShadowRays_ && activeShadowRays() != nullptr};
     return method;
+}
+
+std::optional<std::uint64_t> FrameRenderer::countShadowRays(std::uint32_t frame) {
+    if (activeShadowRays() == nullptr) return std::nullopt;
+    countingShadowRays_ = true;
+    setMethod(settings_.method);
+    shadowRays_->resetRayCount();
+    render(frame);
+    const std::uint64_t rays = shadowRays_->rayCount();
+    countingShadowRays_ = false;
+    setMethod(settings_.method);
+    return rays;
 }
 
 const ShadowRays* FrameRenderer::activeShadowRays() const {

@@ -109,6 +109,10 @@ public:
     void setShadows(Shadows shadows, const Scene& scene);
     // The occluders' structure, once --shadows rays has built it (else null).
     const ShadowRays* shadowRays() const { return shadowRays_.get(); }
+    // The shadow rays one more rendering of `frame` traces, counted by programs compiled for it
+    // (ML_COUNT_SHADOW_RAYS) and rebuilt as they were after: for rays per second beside timed
+    // frames, never inside them. nullopt where the frame traces none (--shadows off, no occluder).
+    std::optional<std::uint64_t> countShadowRays(std::uint32_t frame);
     void setBloom(const BloomSettings& bloom) { settings_.bloom = bloom; }
     const BloomPass& bloom() const { return bloom_; }
     const ShadingMethod& method() const { return *method_; }
@@ -139,6 +143,7 @@ private:
     std::unique_ptr<VertexAnimationPass> vertexAnimation_;  // only where a clip plays
     LightBuffers lights_;
     std::unique_ptr<ShadowRays> shadowRays_;  // built on the first frame settings with --shadows rays
+    bool countingShadowRays_ = false;         // countShadowRays' frame
     FrameTargets targets_;
     gl::Buffer frameUniformBuffer_;
     FrameUniforms uniforms_{};

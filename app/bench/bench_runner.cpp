@@ -374,6 +374,12 @@ void BenchRunner::measureInto(BenchRow& row, const BenchPoint& point) {
             row["zbin_lights_shaded"] = s.zbinStats.meanPassedPerPixel;
         }
     }
+    // The shadow rays of that frame, counted by one more, untimed rendering, and the rate the
+    // median frame implies: every pass's time counted against the rays, a floor on the traversal's.
+    if (const std::optional<std::uint64_t> rays = renderer_->countShadowRays(first)) {
+        row["shadow_rays"] = *rays;
+        row["shadow_grays_per_s"] = frame.median > 0.0 ? nlohmann::ordered_json(double(*rays) / (frame.median * 1e6)) : nlohmann::ordered_json();
+    }
     const FloatImage& pointHdr = referenceIsSelf ? reference->hdr : hdr;
     if (run_.physicalReference) {
         // The accumulated mean first, with the point's renderer; the reference has a renderer of its own.

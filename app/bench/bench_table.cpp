@@ -22,7 +22,7 @@ const std::vector<std::string> kTrailingColumns = {
     "reference", "aa_rmse", "aa_psnr_db", "aa_reference", "physical_max_abs_err", "physical_rmse", "physical_psnr_db",
     "physical_ldr_max_abs_err", "physical_ldr_psnr_db", "physical_ldr_bad_pixel_share", "clusters", "empty_share", "mean_lights_per_cluster", "mean_lights_per_nonempty_cluster",
     "max_lights_per_cluster", "list_entries", "false_positive_share", "normal_cone_pairs_removed", "overflow_clusters", "dropped_lights", "active_clusters",
-    "list_bytes", "grid_bytes", "zbin_mask_bytes", "zbin_lights_walked", "zbin_lights_shaded", "gbuffer_bytes",
+    "list_bytes", "grid_bytes", "zbin_mask_bytes", "zbin_lights_walked", "zbin_lights_shaded", "shadow_rays", "shadow_grays_per_s", "gbuffer_bytes",
     "target_bytes", "light_bytes", "renderer", "note",
 };
 

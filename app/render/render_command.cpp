@@ -208,6 +208,13 @@ int runRender(RenderOptions o) {
         writeJsonFile(o.dumpClusters, clustering->dump(renderer.uniforms()));
     }
     if (!o.frame.saveLights.empty()) saveLightsFile(o.frame.saveLights, renderer.lights().downloadAnimated());
+    // Last: counting renders the frame again with programs of its own, replacing the method that
+    // `clustering` points into.
+    if (o.stats) {
+        if (const std::optional<std::uint64_t> rays = renderer.countShadowRays(range.last))
+            std::printf("shadow rays: %llu in frame %u (%.2f a pixel)\n", static_cast<unsigned long long>(*rays), range.last,
+                        double(*rays) / (double(frame.settings.width) * frame.settings.height));
+    }
     if (gl::debugErrorCount() > 0) {
         std::fprintf(stderr, "error: %d GL error(s); last: %s\n", gl::debugErrorCount(), gl::lastDebugError().c_str());
         return 1;

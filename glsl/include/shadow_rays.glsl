@@ -1,12 +1,28 @@
 // Exact shadow rays (--shadows rays): is anything between a shaded point and a light? Any-hit
 // traversal of a binary BVH built on the CPU by Embree (renderer/raytracing/shadow_bvh.h;
-// occludedByBvh in shadow_bvh_traversal.h mirrors this file), in one buffer: node i is the four vec4s from 4i (each
+// occludedByBvh in shadow_bvh_traversal.h mirrors this file), in one buffer after a 16-byte
+// header (the ray count below): node i is the four vec4s from 4i (each
 // child's box, in the parent, with the child references in the w of the first two), triangles
 // are three vec4s each from u_shadows.x (the corners; v0.w the material word, ML_SHADOW_OPAQUE or
 // an alpha-tested material), then two vec4s of UVs per MASK triangle and three vec4s per material
 // from u_shadows.w (renderer/raytracing/shadow_alpha.h). Every method calls it with the same
 // origin and light position, so they trace the same rays (design.md). Needs frame_uniforms.
-layout(std430, binding = ML_SSBO_SHADOW_BVH) readonly buffer ShadowBvhBuffer { vec4 shadowBvh[]; };
+// ML_COUNT_SHADOW_RAYS (FrameRenderer::countShadowRays, for rays per second): every ray adds one
+// to a 64-bit count in the buffer's 16-byte header, an untimed frame's worth.
+#ifndef ML_COUNT_SHADOW_RAYS
+#define ML_COUNT_SHADOW_RAYS 0
+#endif
+#if ML_COUNT_SHADOW_RAYS
+#define ML_SHADOW_BVH_ACCESS coherent
+#else
+#define ML_SHADOW_BVH_ACCESS readonly
+#endif
+layout(std430, binding = ML_SSBO_SHADOW_BVH) ML_SHADOW_BVH_ACCESS buffer ShadowBvhBuffer {
+    uint shadowRaysTraced;  // ML_COUNT_SHADOW_RAYS: the rays traced, modulo 2^32...
+    uint shadowRayWraps;    // ...and how often that count wrapped
+    uvec2 shadowBvhHeaderPadding;
+    vec4 shadowBvh[];
+};
 layout(binding = ML_TEX_SHADOW_ALPHA) uniform sampler2DArray u_shadowAlpha;
 
 // Wächter and Binder, "A Fast and Robust Method for Avoiding Self-Intersection" (Ray Tracing
@@ -82,6 +98,9 @@ bool shadowTriangleHit(uint triangle, vec3 origin, vec3 direction) {
 bool shadowRayBlocked(vec3 origin, vec3 direction) {
     uint nodes = u_shadows.y;
     if (nodes == 0u) return false;
+#if ML_COUNT_SHADOW_RAYS
+    if (atomicAdd(shadowRaysTraced, 1u) == 0xFFFFFFFFu) atomicAdd(shadowRayWraps, 1u);
+#endif
     vec3 inverse = shadowRayInverse(direction);
     uint stack[ML_SHADOW_STACK];
     uint top = 0u;

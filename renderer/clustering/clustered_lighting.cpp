@@ -582,6 +582,7 @@ shaders::Defines lightShadingDefines(const ClusteringSettings& settings) {
         defines.emplace_back("ML_SPECULAR", s->specular ? "1" : "0");
         defines.emplace_back("ML_FALLOFF", std::to_string(static_cast<std::uint32_t>(s->falloff)));
         defines.emplace_back("ML_SHADOW_RAYS", s->shadowRays ? "1" : "0");
+        if (s->countShadowRays) defines.emplace_back("ML_COUNT_SHADOW_RAYS", "1");
     }
     return defines;
 }

@@ -56,6 +56,7 @@ struct ShadingSwitches {
     bool specular = true;
     Falloff falloff = Falloff::Smooth;
     bool shadowRays = false;  // --shadows rays, where something casts a shadow
+    bool countShadowRays = false;  // and every ray counted (ML_COUNT_SHADOW_RAYS; FrameRenderer::countShadowRays)
     bool operator==(const ShadingSwitches&) const = default;
 };
 

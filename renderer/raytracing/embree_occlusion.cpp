@@ -97,12 +97,9 @@ EmbreeOcclusion::~EmbreeOcclusion() = default;
 
 std::size_t EmbreeOcclusion::triangles() const { return impl_->material.size(); }
 
-bool EmbreeOcclusion::occluded(glm::vec3 origin, glm::vec3 direction, float tMax, const ShadowCoverage& covered) const {
-    OcclusionQuery query;
-    rtcInitIntersectContext(&query.context);
-    query.material = &impl_->material;
-    query.sceneTriangle = &impl_->sceneTriangle;
-    query.covered = &covered;
+namespace {
+
+RTCRay segment(glm::vec3 origin, glm::vec3 direction, float tMax) {
     RTCRay ray{};
     ray.org_x = origin.x;
     ray.org_y = origin.y;
@@ -116,6 +113,31 @@ bool EmbreeOcclusion::occluded(glm::vec3 origin, glm::vec3 direction, float tMax
     ray.mask = 0xFFFFFFFFu;  // Debian's Embree is built with ray masks: a mask of 0 meets nothing
     ray.id = 0;
     ray.flags = 0;
+    return ray;
+}
+
+}  // namespace
+
+std::optional<EmbreeOcclusion::Hit> EmbreeOcclusion::firstHit(glm::vec3 origin, glm::vec3 direction, float tMax) const {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    RTCRayHit rayHit{};
+    rayHit.ray = segment(origin, direction, tMax);
+    rayHit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    rayHit.hit.primID = RTC_INVALID_GEOMETRY_ID;
+    rtcIntersect1(impl_->rtcScene, &context, &rayHit);
+    if (rayHit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
+    const unsigned primitive = rayHit.hit.primID;
+    return Hit{rayHit.ray.tfar, impl_->sceneTriangle.at(primitive), impl_->material.at(primitive), rayHit.hit.u, rayHit.hit.v};
+}
+
+bool EmbreeOcclusion::occluded(glm::vec3 origin, glm::vec3 direction, float tMax, const ShadowCoverage& covered) const {
+    OcclusionQuery query;
+    rtcInitIntersectContext(&query.context);
+    query.material = &impl_->material;
+    query.sceneTriangle = &impl_->sceneTriangle;
+    query.covered = &covered;
+    RTCRay ray = segment(origin, direction, tMax);
     rtcOccluded1(impl_->rtcScene, &query.context, &ray);
     // rtcOccluded1 sets tfar to -inf where the ray is blocked.
     return ray.tfar == -std::numeric_limits<float>::infinity();

@@ -10,7 +10,9 @@
 // |direction| (tnear 0, tfar tMax; direction need not be unit).
 #pragma once
 
+#include <cstdint>
 #include <memory>
+#include <optional>
 
 #include <glm/glm.hpp>
 
@@ -31,6 +33,16 @@ public:
     // from Embree's occlusion filter with the hit's u, v, which weigh corners 1 and 2 as ours
     // do), and always where no `covered` is given.
     bool occluded(glm::vec3 origin, glm::vec3 direction, float tMax, const ShadowCoverage& covered = {}) const;
+
+    // The nearest casting triangle along the ray (rtcIntersect1), for the tests' primary rays:
+    // MASK triangles count as opaque here (no filter), so callers set their hits apart.
+    struct Hit {
+        float t;                     // in units of |direction|
+        std::uint32_t sceneTriangle;  // indices[3t .. 3t + 2]
+        std::uint32_t material;       // kShadowOpaque, or the MASK material
+        float u, v;                   // weighing the scene triangle's corners 1 and 2
+    };
+    std::optional<Hit> firstHit(glm::vec3 origin, glm::vec3 direction, float tMax) const;
 
     std::size_t triangles() const;
 

@@ -3,6 +3,9 @@
 // the CPU by renderer/raytracing/shadow_bvh.h; its constants (ML_SHADOW_*) live in
 // glsl/include/bindings.h, the one source of truth for both languages.
 //
+//   The GPU buffer holds a 16-byte header first (the ray count of ML_COUNT_SHADOW_RAYS,
+//   shadow_rays.h); the indices below count from the end of it.
+//
 //   nodes[0] is the root. A node holds both children's boxes, so a traversal tests the two boxes
 //   of the node it pops and pushes the references of those that the ray meets:
 //

@@ -33,11 +33,14 @@ ShadowRays::ShadowRays(const Scene& scene) {
     static_assert(sizeof(GpuBvhNode) % 16 == 0 && sizeof(GpuBvhTriangle) % 16 == 0);
     firstTriangle_ = static_cast<std::uint32_t>(nodeBytes / 16);
     firstMaterial_ = static_cast<std::uint32_t>((nodeBytes + triangleBytes + uvBytes) / 16);
-    std::vector<unsigned char> bytes(stats_.bytes);
-    std::memcpy(bytes.data(), bvh.nodes.data(), nodeBytes);
-    std::memcpy(bytes.data() + nodeBytes, bvh.triangles.data(), triangleBytes);
-    if (uvBytes > 0) std::memcpy(bytes.data() + nodeBytes + triangleBytes, masks.uvs.data(), uvBytes);
-    if (materialBytes > 0) std::memcpy(bytes.data() + nodeBytes + triangleBytes + uvBytes, masks.materials.data(), materialBytes);
+    // The header (the ray count, zero), then the array the shaders index.
+    std::vector<unsigned char> bytes(kHeaderBytes + stats_.bytes);
+    unsigned char* at = bytes.data() + kHeaderBytes;
+    std::memcpy(at, bvh.nodes.data(), nodeBytes);
+    std::memcpy(at + nodeBytes, bvh.triangles.data(), triangleBytes);
+    if (uvBytes > 0) std::memcpy(at + nodeBytes + triangleBytes, masks.uvs.data(), uvBytes);
+    if (materialBytes > 0) std::memcpy(at + nodeBytes + triangleBytes + uvBytes, masks.materials.data(), materialBytes);
+    stats_.bytes += kHeaderBytes;
     buffer_ = gl::Buffer("shadows.bvh", bytes.size(), bytes.data(), 0);
     if (masks.layerCount > 0) {
         // One R8 layer per MASK image; level 0 alone, read with textureLod (shadow_alpha.h).
@@ -63,6 +66,20 @@ void ShadowRays::bindForShading() const {
     if (empty()) return;
     buffer_.bindBase(GL_SHADER_STORAGE_BUFFER, ML_SSBO_SHADOW_BVH);
     if (alphaLayers_) glBindTextureUnit(ML_TEX_SHADOW_ALPHA, alphaLayers_.id());
+}
+
+void ShadowRays::resetRayCount() const {
+    if (empty()) return;
+    const GLuint zero = 0;
+    glClearNamedBufferSubData(buffer_.id(), GL_R32UI, 0, 8, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+}
+
+std::uint64_t ShadowRays::rayCount() const {
+    if (empty()) return 0;
+    std::uint32_t words[2] = {0, 0};
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    buffer_.download(words, sizeof words);
+    return (static_cast<std::uint64_t>(words[1]) << 32) | words[0];
 }
 
 glm::uvec4 ShadowRays::uniforms() const {

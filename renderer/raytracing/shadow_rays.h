@@ -1,6 +1,6 @@
 // The occluders of --shadows rays in GPU memory: the scene's BVH (built on the CPU by Embree,
-// renderer/raytracing/shadow_bvh.h) as one storage buffer, nodes, triangles, then what MASK
-// triangles need to read their alpha (shadow_alpha.h), which every
+// renderer/raytracing/shadow_bvh.h) as one storage buffer, a 16-byte header (a ray count), nodes,
+// triangles, then what MASK triangles need to read their alpha (shadow_alpha.h), which every
 // shading pass binds (FrameContext::bindLightsForShading) and glsl/include/shadow_rays.glsl
 // traverses. Built once per scene: a static scene pays nothing per frame.
 #pragma once
@@ -43,7 +43,13 @@ public:
     float directionalReach() const { return directionalReach_; }
     const ShadowStructureStats& stats() const { return stats_; }
 
+    // The rays that shaders compiled with ML_COUNT_SHADOW_RAYS traced since resetRayCount (a
+    // 64-bit count in the buffer's header; FrameRenderer::countShadowRays).
+    void resetRayCount() const;
+    std::uint64_t rayCount() const;
+
 private:
+    static constexpr std::size_t kHeaderBytes = 16;  // shadow_rays.glsl: the ray count, then padding
     gl::Buffer buffer_;
     gl::Handle<gl::TextureDeleter> alphaLayers_;  // MASK images' alpha, a layer each (shadow_alpha.h)
     ShadowStructureStats stats_;

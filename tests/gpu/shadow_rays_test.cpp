@@ -6,6 +6,7 @@
 
 #include <cstdio>
 #include <initializer_list>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -34,14 +35,14 @@ FrameSettings frameOf(const Scene& scene, const CameraPose& pose, Shadows shadow
     return s;
 }
 
-// The pixel a world point lands on, and the HDR value there (the frame's rows run bottom-up).
+// The pixel a world point lands on, and the HDR value there (FloatImage's rows run top down).
 glm::vec3 valueAt(const FloatImage& hdr, const FrameSettings& s, const glm::vec3& world) {
     const glm::vec4 clip = s.camera.projection(float(s.width) / float(s.height)) * s.camera.view() * glm::vec4(world, 1.0f);
     const glm::vec2 ndc = glm::vec2(clip) / clip.w;
     const int x = static_cast<int>((ndc.x * 0.5f + 0.5f) * float(s.width));
     const int y = static_cast<int>((ndc.y * 0.5f + 0.5f) * float(s.height));
     EXPECT_TRUE(x >= 0 && x < s.width && y >= 0 && y < s.height) << "point off screen";
-    const float* p = &hdr.pixels[(static_cast<std::size_t>(y) * hdr.width + x) * 3];
+    const float* p = hdr.at(x, s.height - 1 - y);
     return {p[0], p[1], p[2]};
 }
 
@@ -193,6 +194,29 @@ TEST_F(ShadowRaysTest, SpotAndDirectionalLightsStopAtTheWall) {
         unshadowed.render(0);
         EXPECT_GT(luminance(valueAt(unshadowed.readHdr(), s, {0.0f, 0.0f, 0.5f})), 4.0f * unlit);
         expectClusteredVariantsMatchNaive(renderer, std::string("wall, ") + (light.type == LightType::Spot ? "spot" : "sun"));
+    }
+}
+
+// The ray count behind `bench`'s rays per second: a floor filling the frame, seen from straight
+// above, under two lights that reach all of it, traces one ray a pixel a light in every method,
+// no more (Forward+'s pre-pass shades each pixel once) and no fewer; counting leaves the frame as
+// it was. With --shadows off there is nothing to count.
+TEST_F(ShadowRaysTest, TheRayCountIsOneAPixelForEachLightThatReachesIt) {
+    const Scene floor = quadScene({{{0, 0, 0}, {6, 0, 0}, {0, 0, -6}, glm::vec3(0.8f)}});
+    const CameraPose above{{0.0f, 3.0f, 0.0f}, {0.0f, 0.0f, 0.0f}, 60.0f};
+    const std::vector<Light> lights = {Light{{0.5f, 2.0f, 0.0f}, 30.0f, glm::vec3(4.0f)}, Light{{-1.0f, 1.0f, 0.5f}, 30.0f, glm::vec3(2.0f)}};
+    for (MethodKind kind : {MethodKind::Naive, MethodKind::ForwardPlus, MethodKind::Deferred, MethodKind::Visibility}) {
+        SCOPED_TRACE(methodName(kind));
+        FrameRenderer renderer(floor, lights, frameOf(floor, above, Shadows::Rays, kind));
+        renderer.render(0);
+        const FloatImage before = renderer.readHdr();
+        const std::optional<std::uint64_t> rays = renderer.countShadowRays(0);
+        ASSERT_TRUE(rays.has_value());
+        EXPECT_EQ(*rays, 2u * kWidth * kHeight);
+        renderer.render(0);
+        EXPECT_EQ(compareImages(renderer.readHdr(), before).maxAbs, 0.0) << "counting changed the frame";
+        FrameRenderer off(floor, lights, frameOf(floor, above, Shadows::Off, kind));
+        EXPECT_FALSE(off.countShadowRays(0).has_value());
     }
 }
 
