@@ -3,7 +3,7 @@
 # (BUILD_DIR=build-test), .gl/ (Debian's GL dispatch, Embree and TBB packages) and .gpushared/
 # (../shared's repro/ and corpus/amd/ copied in) carried.
 #   run.sh repro     issue 61's repro files in every method (PNG each, and the max over the quad)
-#   run.sh bench     a minute of frames to raise the SM clock, then shadows.sweep.json twice (a, b)
+#   run.sh bench     half a minute of frames to raise the SM clock, then shadows.sweep.json twice (a, b)
 #   run.sh accuracy  accuracy.sweep.json: every method against naive with the same rays
 # Every file lands in $OUT/STEP.tgz.
 set -u
@@ -25,10 +25,10 @@ repro)
     done
   done ;;
 bench)
-  timeout 60 $M bench --scene atrium --lights 65536 --size 2560x1440 --light-radius overlap:32 --method visibility \
+  timeout 30 $M bench --scene atrium --lights 65536 --size 2560x1440 --light-radius overlap:32 --method visibility \
     --warmup 5 --timed-frames 600 --backend egl --out /tmp/warm --name warm > $OUT/warm.log 2>&1
   for run in a b; do
-    timeout 200 $M bench --sweep $D/shadows.sweep.json --backend egl --out $OUT --name shadows-$run > $OUT/shadows-$run.log 2>&1
+    timeout 250 $M bench --sweep $D/shadows.sweep.json --backend egl --out $OUT --name shadows-$run > $OUT/shadows-$run.log 2>&1
     pack
   done ;;
 accuracy)
