@@ -94,6 +94,27 @@ TEST_P(CorpusFile, EveryMethodHoldsTheContractAgainstNaive) {
     }
 }
 
+// The same contract with --shadows rays (issue 62): naive traces the same rays as every other
+// method, so a shadow changes nothing of the rule. At rest: the structure does not follow an
+// animated pose yet, so an animated file is shadowed in its rest pose.
+TEST_P(CorpusFile, EveryMethodHoldsTheContractWithShadows) {
+    const Scene scene = loadCorpusScene(GetParam());
+    const std::vector<Light> lights = ownAndGeneratedLights(scene);
+    const std::uint32_t frame = 30;
+    for (const NamedCamera& camera : corpusCameras(scene)) {
+        FrameSettings s;
+        s.width = kWidth;
+        s.height = kHeight;
+        s.camera = camera.camera;
+        s.animation = verticalDrift(lightVolume(scene.bounds), 0.5f);
+        s.sceneAnimation.clip = std::nullopt;
+        s.shadows = Shadows::Rays;
+        FrameRenderer renderer(scene, lights, s);
+        const ReferenceFrame reference = renderReference(renderer, frame);
+        expectEveryMethodHoldsTheContract(renderer, frame, reference, GetParam() + " " + camera.name + ", shadows", kMaxBadShare);
+    }
+}
+
 // The visibility buffer's compute raster gives the hardware raster's ids on every file and camera,
 // but where two surfaces tie in depth (tests/gpu/compute_raster_test.cpp says why), and at no
 // more pixels than the accuracy contract's share (1 in 10,000) elsewhere: a vertex whose window
