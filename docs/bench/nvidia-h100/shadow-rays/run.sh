@@ -5,6 +5,7 @@
 #   run.sh repro     issue 61's repro files in every method (PNG each, and the max over the quad)
 #   run.sh bench     half a minute of frames to raise the SM clock, then shadows.sweep.json twice (a, b)
 #   run.sh accuracy  accuracy.sweep.json: every method against naive with the same rays
+#   run.sh bounds    half a minute of frames, then bounds.sweep.json: the rate against the lights' reach
 # Every file lands in $OUT/STEP.tgz.
 set -u
 D=docs/bench/nvidia-h100/shadow-rays
@@ -31,10 +32,14 @@ bench)
     timeout 250 $M bench --sweep $D/shadows.sweep.json --backend egl --out $OUT --name shadows-$run > $OUT/shadows-$run.log 2>&1
     pack
   done ;;
+bounds)
+  timeout 30 $M bench --scene atrium --lights 65536 --size 2560x1440 --light-radius overlap:32 --method visibility \
+    --warmup 5 --timed-frames 600 --backend egl --out /tmp/warm --name warm > $OUT/warm.log 2>&1
+  timeout 400 $M bench --sweep $D/bounds.sweep.json --backend egl --out $OUT --name bounds > $OUT/bounds.log 2>&1 ;;
 accuracy)
   timeout 300 $M bench --sweep $D/accuracy.sweep.json --backend egl --out $OUT --name accuracy > $OUT/accuracy.log 2>&1 ;;
 *)
-  echo "run.sh: unknown step '$STEP' (repro, bench, accuracy)" >&2
+  echo "run.sh: unknown step '$STEP' (repro, bench, accuracy, bounds)" >&2
   exit 2 ;;
 esac
 pack
