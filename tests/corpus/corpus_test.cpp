@@ -78,8 +78,10 @@ std::vector<NamedCamera> corpusCameras(const Scene& scene) {
 
 class CorpusFile : public GpuTest, public ::testing::WithParamInterface<std::string> {};
 
-TEST_P(CorpusFile, EveryMethodHoldsTheContractAgainstNaive) {
-    const Scene scene = loadCorpusScene(GetParam());
+// Every method against naive on the same frame, at every camera of `relative`; with shadow rays
+// at rest (the structure does not follow an animated pose yet).
+void expectTheContractOnEveryCamera(const std::string& relative, Shadows shadows) {
+    const Scene scene = loadCorpusScene(relative);
     const std::vector<Light> lights = ownAndGeneratedLights(scene);
     const std::uint32_t frame = 30;
     for (const NamedCamera& camera : corpusCameras(scene)) {
@@ -88,32 +90,20 @@ TEST_P(CorpusFile, EveryMethodHoldsTheContractAgainstNaive) {
         s.height = kHeight;
         s.camera = camera.camera;
         s.animation = verticalDrift(lightVolume(scene.bounds), 0.5f);
+        s.shadows = shadows;
+        if (shadows == Shadows::Rays) s.sceneAnimation.clip = std::nullopt;
         FrameRenderer renderer(scene, lights, s);
         const ReferenceFrame reference = renderReference(renderer, frame);
-        expectEveryMethodHoldsTheContract(renderer, frame, reference, GetParam() + " " + camera.name, kMaxBadShare);
+        expectEveryMethodHoldsTheContract(renderer, frame, reference,
+                                          relative + " " + camera.name + (shadows == Shadows::Rays ? ", shadows" : ""), kMaxBadShare);
     }
 }
 
+TEST_P(CorpusFile, EveryMethodHoldsTheContractAgainstNaive) { expectTheContractOnEveryCamera(GetParam(), Shadows::Off); }
+
 // The same contract with --shadows rays (issue 62): naive traces the same rays as every other
-// method, so a shadow changes nothing of the rule. At rest: the structure does not follow an
-// animated pose yet, so an animated file is shadowed in its rest pose.
-TEST_P(CorpusFile, EveryMethodHoldsTheContractWithShadows) {
-    const Scene scene = loadCorpusScene(GetParam());
-    const std::vector<Light> lights = ownAndGeneratedLights(scene);
-    const std::uint32_t frame = 30;
-    for (const NamedCamera& camera : corpusCameras(scene)) {
-        FrameSettings s;
-        s.width = kWidth;
-        s.height = kHeight;
-        s.camera = camera.camera;
-        s.animation = verticalDrift(lightVolume(scene.bounds), 0.5f);
-        s.sceneAnimation.clip = std::nullopt;
-        s.shadows = Shadows::Rays;
-        FrameRenderer renderer(scene, lights, s);
-        const ReferenceFrame reference = renderReference(renderer, frame);
-        expectEveryMethodHoldsTheContract(renderer, frame, reference, GetParam() + " " + camera.name + ", shadows", kMaxBadShare);
-    }
-}
+// method, so a shadow changes nothing of the rule.
+TEST_P(CorpusFile, EveryMethodHoldsTheContractWithShadows) { expectTheContractOnEveryCamera(GetParam(), Shadows::Rays); }
 
 // The visibility buffer's compute raster gives the hardware raster's ids on every file and camera,
 // but where two surfaces tie in depth (tests/gpu/compute_raster_test.cpp says why), and at no
