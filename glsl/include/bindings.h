@@ -21,7 +21,8 @@
 #define ML_SSBO_ASSIGN_STATS 9     // overflow counters of capped lists
 #define ML_SSBO_SCAN_DATA 10       // prefix sum: the values, scanned in place
 #define ML_SSBO_SCAN_BLOCKS 11     // prefix sum: the ticket, and each block's published sums
-// --shadows rays: the occluders' BVH, nodes then triangles (glsl/include/shadow_rays.glsl). Bound
+// --shadows rays: the occluders' BVH, a ray-count header, nodes, triangles, then the MASK
+// triangles' UVs and materials (glsl/include/shadow_rays.glsl). Bound
 // by every shading pass as it starts (FrameContext::bindLightsForShading); only the light
 // assignment's prefix sum, which runs before, uses the point for its blocks.
 #define ML_SSBO_SHADOW_BVH 11
