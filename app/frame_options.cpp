@@ -159,6 +159,8 @@ void addFrameOptions(CLI::App& cmd, FrameOptions& o) {
     cmd.add_option("--brdf", o.brdf, "ggx (glTF's metallic-roughness BRDF, appendix B) or blinn-phong (the seeds' normalized Blinn-Phong, no 1/pi)")->capture_default_str();
     cmd.add_option("--shadows", o.shadows, "off: lights pass through everything; rays: an exact shadow ray for every point and light "
                    "that adds light, in every method (naive traces the same rays; BLEND surfaces cast none)")->capture_default_str();
+    cmd.add_option("--shadow-bvh-width", o.shadowBvhWidth, "--shadows rays: the BVH's children a node, 2, 4 or 8 (the same answer; "
+                   "the default measured fastest on the H100, docs/lights-and-shading.md)")->capture_default_str();
     cmd.add_option("--light-sum", o.lightSum, "how a point adds up its lights, in every method: float (lists sorted by light index, "
                    "so sums run in naive's order), or fixed (64-bit integers, the same bits in any order: the lists go unsorted; "
                    "needs GL_ARB_gpu_shader_int64; pays at millions of lights)")->capture_default_str();
@@ -301,6 +303,9 @@ PreparedFrame prepareFrame(const FrameOptions& o, const Scene* loaded) {
         throw std::invalid_argument("--spot-angle: must be in (0, 90] degrees, or 0 for a range of [20, 60]");
     parseOnOff("--scene-lights", o.sceneLights);
     f.settings.shadows = parseShadows(o.shadows);
+    if (o.shadowBvhWidth < 0 || !shadowBvhWidthSupported(static_cast<std::uint32_t>(o.shadowBvhWidth)))
+        throw std::invalid_argument("--shadow-bvh-width " + std::to_string(o.shadowBvhWidth) + ": must be 2, 4 or 8");
+    f.settings.shadowBvhWidth = static_cast<std::uint32_t>(o.shadowBvhWidth);
     if (o.seed < 0 || o.seed > std::numeric_limits<std::uint32_t>::max())
         throw std::invalid_argument("--seed " + std::to_string(o.seed) + ": must be between 0 and 4294967295");
     if (o.frames < 0 || o.frames > 100'000'000)

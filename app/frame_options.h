@@ -67,6 +67,7 @@ struct FrameOptions {
     std::string specular = "on";
     std::string brdf = "ggx";
     std::string shadows = "off";
+    int shadowBvhWidth = static_cast<int>(kDefaultShadowBvhWidth);  // --shadow-bvh-width: 2, 4 or 8
     std::string lightSum = "float";
     std::optional<float> lightCutoff;  // --light-cutoff E: radii where max(colour) / d^2 falls to E, glTF's falloff
     std::string cutoff = "hard";       // --cutoff hard|stochastic|none

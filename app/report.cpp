@@ -100,8 +100,8 @@ void printShadowStructure(Shadows shadows, const ShadowRays* rays) {
         return;
     }
     const ShadowStructureStats& s = rays->stats();
-    std::printf("shadows: rays, %zu casting triangles (%zu alpha-tested), %zu nodes, depth %zu, %.1f MiB, built in %.2f s\n",
-                s.triangles, s.maskTriangles, s.nodes, s.depth, s.bytes / 1048576.0, s.buildSeconds);
+    std::printf("shadows: rays, %zu casting triangles (%zu alpha-tested), %zu nodes of %zu children, depth %zu, %.1f MiB, built in %.2f s\n",
+                s.triangles, s.maskTriangles, s.nodes, s.width, s.depth, s.bytes / 1048576.0, s.buildSeconds);
 }
 
 void printCullAccuracy(const ClusterStatistics& s, const CullAccuracy& a) {

@@ -21,8 +21,8 @@ void printNotes(const PreparedFrame& frame);
 void printClusterStatistics(const ClusterStatistics& stats);
 // The shading options of the frame (--specular, --gbuffer, --prepass, --bloom) and what they cost in memory.
 void printShadingOptions(const FrameSettings& settings, std::uint32_t materialFeatures);
-// "shadows: rays, 262087 casting triangles (34778 alpha-tested), 132223 nodes, depth 28, 24.1 MiB, built in
-// 0.21 s" (Sponza), or "shadows: off".
+// "shadows: rays, 262087 casting triangles (34778 alpha-tested), 132223 nodes of 2 children, depth 28,
+// 24.1 MiB, built in 0.21 s" (Sponza), or "shadows: off".
 void printShadowStructure(Shadows shadows, const ShadowRays* rays);
 // "cull aabb: 548,302 references, of which 40.1 % reach no point of their cluster".
 void printCullAccuracy(const ClusterStatistics& stats, const CullAccuracy& accuracy);

@@ -9,13 +9,13 @@
 namespace ml {
 namespace {
 
-std::unique_ptr<ShadowRays> buildShadowRays(const Scene& scene, bool animated) {
+std::unique_ptr<ShadowRays> buildShadowRays(const Scene& scene, bool animated, std::uint32_t width) {
     // The structure holds the loaded pose; until it follows the posed vertices, say so rather
     // than cast the rest pose's shadows under a walking figure.
     if (animated)
         throw std::invalid_argument(scene.name + ": --shadows rays does not follow an animated pose yet; add --animation off to "
                                                  "draw and shadow it at rest");
-    return std::make_unique<ShadowRays>(scene);
+    return std::make_unique<ShadowRays>(scene, width);
 }
 
 }  // namespace
@@ -27,7 +27,7 @@ FrameRenderer::FrameRenderer(const Scene& scene, const std::vector<Light>& light
                            ? std::make_unique<VertexAnimationPass>(scene, *settings.sceneAnimation.clip, scene_.hasTangentStream())
                            : nullptr),
       lights_(lights),
-      shadowRays_(settings.shadows == Shadows::Rays ? buildShadowRays(scene, vertexAnimation_ != nullptr) : nullptr),
+      shadowRays_(settings.shadows == Shadows::Rays ? buildShadowRays(scene, vertexAnimation_ != nullptr, settings.shadowBvhWidth) : nullptr),
       // Sampled as asked from the start, so a size the GPU cannot hold is refused before allocation.
       targets_(settings.width, settings.height, false, TargetSampling{settings.method.msaa, settings.supersample}),
       frameUniformBuffer_("frame.uniforms", sizeof(FrameUniforms)),
@@ -50,9 +50,9 @@ void FrameRenderer::resize(int width, int height) {
 
 MethodSettings FrameRenderer::forFrame(MethodSettings method) const {
     method.clustering.spotLights = lights_.hasSpots();
-    method.clustering.shading =
-        ShadingSwitches{settings_.lightModel.brdf, settings_.specular, settings_.lightModel.falloff, activeShadowRays() != nullptr,
-                        countingShadowRays_ && activeShadowRays() != nullptr};
+    const ShadowRays* shadows = activeShadowRays();
+    method.clustering.shading = ShadingSwitches{settings_.lightModel.brdf, settings_.specular, settings_.lightModel.falloff, shadows != nullptr,
+                                                countingShadowRays_ && shadows != nullptr, shadows ? shadows->width() : 2u};
     return method;
 }
 
@@ -74,7 +74,7 @@ const ShadowRays* FrameRenderer::activeShadowRays() const {
 
 void FrameRenderer::setShadows(Shadows shadows, const Scene& scene) {
     settings_.shadows = shadows;
-    if (shadows == Shadows::Rays && !shadowRays_) shadowRays_ = buildShadowRays(scene, vertexAnimation_ != nullptr);
+    if (shadows == Shadows::Rays && !shadowRays_) shadowRays_ = buildShadowRays(scene, vertexAnimation_ != nullptr, settings_.shadowBvhWidth);
     rebuildForShadingSwitches();
 }
 

@@ -21,6 +21,7 @@
 #include "renderer/scene/scene_gpu.h"
 #include "renderer/scene/vertex_animation.h"
 #include "renderer/passes/tonemap_pass.h"
+#include "renderer/raytracing/shadow_bvh_layout.h"
 #include "renderer/raytracing/shadow_mode.h"
 #include "renderer/raytracing/shadow_rays.h"
 
@@ -57,6 +58,7 @@ struct FrameSettings {
     bool specular = true;  // the BRDF's specular term (--specular), compiled in (ShadingSwitches)
     LightModel lightModel;  // --brdf, --cutoff compiled in (ShadingSwitches); --light-cutoff a frame uniform
     Shadows shadows = Shadows::Off;  // --shadows, compiled in (ShadingSwitches) where something casts one
+    std::uint32_t shadowBvhWidth = kDefaultShadowBvhWidth;  // --shadow-bvh-width (shadow_bvh.h)
     BloomSettings bloom;
     LightAnimation animation;
     SceneAnimationSettings sceneAnimation;

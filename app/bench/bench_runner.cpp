@@ -101,6 +101,7 @@ BenchRow configColumns(const BenchPoint& p, int index, std::uint32_t frame, cons
     row["specular"] = o.specular;
     row["brdf"] = o.brdf;
     row["shadows"] = o.shadows;
+    row["shadow_bvh_width"] = o.shadows == "off" ? nlohmann::json() : nlohmann::json(o.shadowBvhWidth);
     row["light_sum"] = o.lightSum;
     row["light_cutoff"] = o.lightCutoff ? nlohmann::ordered_json(*o.lightCutoff) : nlohmann::ordered_json();
     row["cutoff"] = o.cutoff;

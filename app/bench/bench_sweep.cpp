@@ -166,6 +166,8 @@ const std::vector<AxisDef>& axisDefs() {
              (void)parseShadows(asText(v));
              p.frame.shadows = v.get<std::string>();
          }},
+        {{"shadow_bvh_width", "--shadow-bvh-width", "--shadows rays: the BVH's children a node, 2, 4 or 8"}, ValueKind::Number,
+         Applies::Always, [](BenchPoint& p, const json& v) { p.frame.shadowBvhWidth = static_cast<int>(asNumber(v)); }},
         {{"light_sum", "--light-sum", "how a point adds up its lights: float (lists sorted), fixed (64-bit integers, lists unsorted)"},
          ValueKind::Text, Applies::Always,
          [](BenchPoint& p, const json& v) {

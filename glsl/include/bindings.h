@@ -207,8 +207,12 @@
 #define ML_POINT_LIGHT_CONE_COS -2.0
 // Directional lights ("suns") sit in a uniform block of this many; every shaded point loops over them.
 #define ML_MAX_SUN_LIGHTS 16
-// Shadow rays: the traversal stack's entries; the builder refuses a tree deeper than this less one.
+// Shadow rays: the traversal stack's entries; the builder refuses a tree whose traversal could
+// need more (renderer/raytracing/shadow_bvh.h).
 #define ML_SHADOW_STACK 64
+// The BVH's children per node (--shadow-bvh-width): 2, or 4 and 8 in groups of four children of
+// ML_SHADOW_WIDE_GROUP_VEC4S vec4s each (renderer/raytracing/shadow_bvh_layout.h).
+#define ML_SHADOW_WIDE_GROUP_VEC4S 7
 // A BVH child reference with this bit set is a leaf: (count - 1) in bits 28-30, its first
 // triangle in bits 0-27.
 #define ML_SHADOW_LEAF_BIT 0x80000000u

@@ -1,8 +1,10 @@
 // Exact shadow rays (--shadows rays): is anything between a shaded point and a light? Any-hit
-// traversal of a binary BVH built on the CPU by Embree (renderer/raytracing/shadow_bvh.h;
-// occludedByBvh in shadow_bvh_traversal.h mirrors this file), in one buffer after a 16-byte
-// header (the ray count below): node i is the four vec4s from 4i (each
-// child's box, in the parent, with the child references in the w of the first two), triangles
+// traversal of a BVH of ML_SHADOW_BVH_WIDTH children a node, built on the CPU by Embree
+// (renderer/raytracing/shadow_bvh.h; occludedByBvh in shadow_bvh_traversal.h mirrors this file),
+// in one buffer after a 16-byte header (the ray count below): binary node i is the four vec4s
+// from 4i (each child's box, in the parent, with the child references in the w of the first
+// two); a wide node is ML_SHADOW_BVH_WIDTH / 4 groups of seven vec4s (four boxes' coordinates,
+// then their references; shadow_bvh_layout.h). Triangles
 // are three vec4s each from u_shadows.x (the corners; v0.w the material word, ML_SHADOW_OPAQUE or
 // an alpha-tested material), then two vec4s of UVs per MASK triangle and three vec4s per material
 // from u_shadows.w (renderer/raytracing/shadow_alpha.h). Every method calls it with the same
@@ -11,6 +13,9 @@
 // to a 64-bit count in the buffer's 16-byte header, an untimed frame's worth.
 #ifndef ML_COUNT_SHADOW_RAYS
 #define ML_COUNT_SHADOW_RAYS 0
+#endif
+#ifndef ML_SHADOW_BVH_WIDTH
+#define ML_SHADOW_BVH_WIDTH 2
 #endif
 #if ML_COUNT_SHADOW_RAYS
 #define ML_SHADOW_BVH_ACCESS coherent
@@ -106,7 +111,7 @@ bool shadowRayBlocked(vec3 origin, vec3 direction) {
     uint top = 0u;
     stack[top++] = 0u;
     // A tree visits each reference at most once: the bound only guards against a broken buffer.
-    for (uint step = 0u; top > 0u && step <= 2u * nodes; ++step) {
+    for (uint step = 0u; top > 0u && step <= uint(ML_SHADOW_BVH_WIDTH) * nodes; ++step) {
         uint ref = stack[--top];
         if ((ref & ML_SHADOW_LEAF_BIT) != 0u) {
             uint first = ref & 0x0FFFFFFFu, count = ((ref >> 28) & 7u) + 1u;
@@ -114,11 +119,26 @@ bool shadowRayBlocked(vec3 origin, vec3 direction) {
                 if (shadowTriangleHit(first + i, origin, direction)) return true;
             continue;
         }
+#if ML_SHADOW_BVH_WIDTH == 2
         uint at = 4u * ref;
         vec4 leftMin = shadowBvh[at], leftMax = shadowBvh[at + 1u];
         vec4 rightMin = shadowBvh[at + 2u], rightMax = shadowBvh[at + 3u];
         if (shadowBoxHit(leftMin.xyz, leftMax.xyz, origin, inverse) && top < uint(ML_SHADOW_STACK)) stack[top++] = floatBitsToUint(leftMin.w);
         if (shadowBoxHit(rightMin.xyz, rightMax.xyz, origin, inverse) && top < uint(ML_SHADOW_STACK)) stack[top++] = floatBitsToUint(leftMax.w);
+#else
+        // Four slab tests a vec4, in the scalar test's operations (shadowBoxHit) component by component.
+        uint at = uint(ML_SHADOW_BVH_WIDTH / 4 * ML_SHADOW_WIDE_GROUP_VEC4S) * ref;
+        for (uint group = 0u; group < uint(ML_SHADOW_BVH_WIDTH / 4); ++group, at += uint(ML_SHADOW_WIDE_GROUP_VEC4S)) {
+            vec4 t0x = (shadowBvh[at] - origin.x) * inverse.x, t1x = (shadowBvh[at + 1u] - origin.x) * inverse.x;
+            vec4 t0y = (shadowBvh[at + 2u] - origin.y) * inverse.y, t1y = (shadowBvh[at + 3u] - origin.y) * inverse.y;
+            vec4 t0z = (shadowBvh[at + 4u] - origin.z) * inverse.z, t1z = (shadowBvh[at + 5u] - origin.z) * inverse.z;
+            vec4 enter = max(max(min(t0x, t1x), min(t0y, t1y)), max(min(t0z, t1z), vec4(0.0)));
+            vec4 leave = min(min(max(t0x, t1x), max(t0y, t1y)), min(max(t0z, t1z), vec4(1.0)));
+            uvec4 children = floatBitsToUint(shadowBvh[at + 6u]);
+            for (int k = 0; k < 4; ++k)
+                if (children[k] != 0u && enter[k] <= leave[k] && top < uint(ML_SHADOW_STACK)) stack[top++] = children[k];
+        }
+#endif
     }
     return false;
 }

@@ -583,6 +583,7 @@ shaders::Defines lightShadingDefines(const ClusteringSettings& settings) {
         defines.emplace_back("ML_FALLOFF", std::to_string(static_cast<std::uint32_t>(s->falloff)));
         defines.emplace_back("ML_SHADOW_RAYS", s->shadowRays ? "1" : "0");
         if (s->countShadowRays) defines.emplace_back("ML_COUNT_SHADOW_RAYS", "1");
+        if (s->shadowRays) defines.emplace_back("ML_SHADOW_BVH_WIDTH", std::to_string(s->shadowBvhWidth));
     }
     return defines;
 }

@@ -17,13 +17,16 @@ namespace {
 
 // Embree's tree, in nodes of our own that its callbacks make (from its thread-local allocator:
 // they live as long as the RTCBVH) before the flattening lays them out for the GPU.
+inline constexpr std::uint32_t kMaxChildren = 8;
+
 struct BuildNode {
     bool leaf;
 };
 struct InnerNode {
     BuildNode base{false};
-    const BuildNode* children[2] = {nullptr, nullptr};
-    RTCBounds bounds[2];
+    std::uint32_t count = 0;
+    const BuildNode* children[kMaxChildren] = {};
+    RTCBounds bounds[kMaxChildren];
 };
 struct LeafNode {
     BuildNode base{true};
@@ -33,31 +36,34 @@ struct LeafNode {
 
 // What the callbacks share; they run on Embree's build threads and must not throw.
 struct BuildState {
+    std::uint32_t width = 2;
     std::atomic<bool> malformed{false};  // a node or leaf the layout cannot hold
 };
 
+bool childCountFits(unsigned int childCount, void* user) {
+    auto* state = static_cast<BuildState*>(user);
+    if (childCount >= 2 && childCount <= state->width) return true;
+    state->malformed = true;
+    return false;
+}
+
 void* createNode(RTCThreadLocalAllocator allocator, unsigned int childCount, void* user) {
-    if (childCount != 2) static_cast<BuildState*>(user)->malformed = true;
+    childCountFits(childCount, user);
     void* memory = rtcThreadLocalAlloc(allocator, sizeof(InnerNode), alignof(InnerNode));
     return memory != nullptr ? new (memory) InnerNode() : nullptr;
 }
 
 void setNodeChildren(void* node, void** children, unsigned int childCount, void* user) {
-    if (node == nullptr || childCount != 2) {
-        static_cast<BuildState*>(user)->malformed = true;
-        return;
-    }
+    if (node == nullptr || !childCountFits(childCount, user)) return;
     auto* inner = static_cast<InnerNode*>(node);
-    for (unsigned i = 0; i < 2; ++i) inner->children[i] = static_cast<const BuildNode*>(children[i]);
+    inner->count = childCount;
+    for (unsigned i = 0; i < childCount; ++i) inner->children[i] = static_cast<const BuildNode*>(children[i]);
 }
 
 void setNodeBounds(void* node, const RTCBounds** bounds, unsigned int childCount, void* user) {
-    if (node == nullptr || childCount != 2) {
-        static_cast<BuildState*>(user)->malformed = true;
-        return;
-    }
+    if (node == nullptr || !childCountFits(childCount, user)) return;
     auto* inner = static_cast<InnerNode*>(node);
-    for (unsigned i = 0; i < 2; ++i) inner->bounds[i] = *bounds[i];
+    for (unsigned i = 0; i < childCount; ++i) inner->bounds[i] = *bounds[i];
 }
 
 void* createLeaf(RTCThreadLocalAllocator allocator, const RTCBuildPrimitive* primitives, size_t count, void* user) {
@@ -75,34 +81,48 @@ void* createLeaf(RTCThreadLocalAllocator allocator, const RTCBuildPrimitive* pri
 
 glm::vec4 point(const glm::vec3& p, std::uint32_t w) { return glm::vec4(p, glm::uintBitsToFloat(w)); }
 
+// A reference and the stack entries its subtree's traversal needs once it is popped (shadow_bvh.h).
+struct Emitted {
+    std::uint32_t reference;
+    std::uint32_t stackNeed;
+};
+
 class Flattener {
 public:
     Flattener(const std::vector<ShadowCaster>& casters, const std::string& subject, ShadowBvh& out)
-        : casters_(casters), subject_(subject), out_(out) {}
+        : casters_(casters), subject_(subject), out_(out), stride_(shadowNodeVec4s(out.width)) {}
 
-    // The reference to `node`, whose nodes and triangles are appended depth-first; `level` is
-    // the level `node` would take as an inner node (the root's: 1).
-    std::uint32_t emit(const BuildNode* node, std::uint32_t level) {
-        if (node == nullptr) throw std::runtime_error(subject_ + ": Embree's shadow BVH has a missing child");
-        if (node->leaf) return emitLeaf(reinterpret_cast<const LeafNode*>(node));
-        if (level > kShadowBvhMaxDepth)
-            throw std::runtime_error(subject_ + ": the shadow BVH is deeper than " + std::to_string(kShadowBvhMaxDepth) +
-                                     " levels, more than the traversal's stack of " + std::to_string(ML_SHADOW_STACK) + " holds");
-        const auto* inner = reinterpret_cast<const InnerNode*>(node);
-        const std::size_t index = out_.nodes.size();
+    // A new node, its slots empty (wide) or zero (binary); its index.
+    std::uint32_t newNode(std::uint32_t level) {
+        const std::size_t index = out_.nodeCount();
         if (index >= kShadowLeafBit) throw std::runtime_error(subject_ + ": the shadow BVH has more than 2^31 nodes");
-        out_.nodes.emplace_back();
+        out_.nodes.resize(out_.nodes.size() + stride_, glm::vec4(0.0f));
+        if (out_.width != 2) {
+            constexpr float inf = std::numeric_limits<float>::infinity();
+            for (std::uint32_t slot = 0; slot < out_.width; ++slot)
+                setShadowNodeChild(nodeAt(index), out_.width, slot, ShadowBvhChild{glm::vec3(inf), glm::vec3(-inf), 0u, false});
+        }
         out_.depth = std::max(out_.depth, level);
-        const std::uint32_t left = emit(inner->children[0], level + 1);
-        const std::uint32_t right = emit(inner->children[1], level + 1);
-        const RTCBounds& l = inner->bounds[0];
-        const RTCBounds& r = inner->bounds[1];
-        GpuBvhNode& n = out_.nodes[index];
-        n.leftMin = point({l.lower_x, l.lower_y, l.lower_z}, left);
-        n.leftMax = point({l.upper_x, l.upper_y, l.upper_z}, right);
-        n.rightMin = point({r.lower_x, r.lower_y, r.lower_z}, 0u);
-        n.rightMax = point({r.upper_x, r.upper_y, r.upper_z}, 0u);
         return static_cast<std::uint32_t>(index);
+    }
+    glm::vec4* nodeAt(std::size_t index) { return out_.nodes.data() + index * stride_; }
+
+    // `node`'s nodes and triangles appended depth-first; `level` is the level `node` would take
+    // as an inner node (the root's: 1).
+    Emitted emit(const BuildNode* node, std::uint32_t level) {
+        if (node == nullptr) throw std::runtime_error(subject_ + ": Embree's shadow BVH has a missing child");
+        if (node->leaf) return {emitLeaf(reinterpret_cast<const LeafNode*>(node)), 0u};
+        const auto* inner = reinterpret_cast<const InnerNode*>(node);
+        const std::uint32_t index = newNode(level);
+        std::uint32_t need = inner->count;
+        for (std::uint32_t slot = 0; slot < inner->count; ++slot) {
+            const Emitted child = emit(inner->children[slot], level + 1);
+            need = std::max(need, slot + child.stackNeed);
+            const RTCBounds& b = inner->bounds[slot];
+            setShadowNodeChild(nodeAt(index), out_.width, slot,
+                               ShadowBvhChild{{b.lower_x, b.lower_y, b.lower_z}, {b.upper_x, b.upper_y, b.upper_z}, child.reference, true});
+        }
+        return {index, need};
     }
 
     std::uint32_t emitLeaf(const LeafNode* leaf) {
@@ -121,17 +141,21 @@ private:
     const std::vector<ShadowCaster>& casters_;
     const std::string& subject_;
     ShadowBvh& out_;
+    std::uint32_t stride_;
 };
 
 }  // namespace
 
-ShadowBvh buildShadowBvh(const Scene& scene) {
+ShadowBvh buildShadowBvh(const Scene& scene, std::uint32_t width) {
+    if (!shadowBvhWidthSupported(width))
+        throw std::invalid_argument("--shadow-bvh-width " + std::to_string(width) + ": the shadow BVH has 2, 4 or 8 children a node");
     const std::string subject = "scene " + scene.name;
     const std::vector<ShadowCaster> casters = shadowCasters(scene);
     if (casters.size() > kShadowTriangleLimit)
         throw std::runtime_error(subject + ": " + std::to_string(casters.size()) +
                                  " triangles, more than the shadow structure's 2^28");
     ShadowBvh out;
+    out.width = width;
     for (const ShadowCaster& c : casters)
         for (const glm::vec3& p : c.corners) out.bounds.extend(p);
     if (casters.empty()) return out;
@@ -155,10 +179,11 @@ ShadowBvh buildShadowBvh(const Scene& scene) {
     } release{bvh};
 
     BuildState state;
+    state.width = width;
     RTCBuildArguments args = rtcDefaultBuildArguments();
     args.buildQuality = RTC_BUILD_QUALITY_MEDIUM;  // binned SAH; see the header
-    args.maxBranchingFactor = 2;
-    args.maxDepth = kShadowBvhMaxDepth;  // Embree refuses, rather than exceeds, it; emit() checks ours again
+    args.maxBranchingFactor = width;
+    args.maxDepth = kShadowBvhMaxDepth;
     args.sahBlockSize = 1;
     args.minLeafSize = 1;
     args.maxLeafSize = kShadowBvhMaxLeafSize;
@@ -177,26 +202,27 @@ ShadowBvh buildShadowBvh(const Scene& scene) {
     device.check("build the shadow BVH");
     if (root == nullptr) throw std::runtime_error(subject + ": Embree built no shadow BVH");
     if (state.malformed)
-        throw std::runtime_error(subject + ": Embree's shadow BVH has a node or leaf outside the layout (2 children, 1 to " +
-                                 std::to_string(kShadowBvhMaxLeafSize) + " triangles a leaf)");
+        throw std::runtime_error(subject + ": Embree's shadow BVH has a node or leaf outside the layout (2 to " + std::to_string(width) +
+                                 " children a node, 1 to " + std::to_string(kShadowBvhMaxLeafSize) + " triangles a leaf)");
 
-    out.nodes.reserve(casters.size());
-    out.triangles.reserve(casters.size());
     Flattener flattener(casters, subject, out);
     if (root->leaf) {
-        // One leaf: node 0 holds it on the left, and on the right the same leaf behind an empty box.
-        out.nodes.emplace_back();
-        out.depth = 1;
+        // One leaf: node 0 holds it in its first slot (binary: in its second too, behind an empty box).
+        const std::uint32_t index = flattener.newNode(1);
         const std::uint32_t leaf = flattener.emitLeaf(reinterpret_cast<const LeafNode*>(root));
-        constexpr float inf = std::numeric_limits<float>::infinity();
-        GpuBvhNode& n = out.nodes[0];
-        n.leftMin = point(out.bounds.min, leaf);
-        n.leftMax = point(out.bounds.max, leaf);
-        n.rightMin = point(glm::vec3(inf), 0u);
-        n.rightMax = point(glm::vec3(-inf), 0u);
+        setShadowNodeChild(flattener.nodeAt(index), width, 0, ShadowBvhChild{out.bounds.min, out.bounds.max, leaf, true});
+        if (width == 2) {
+            constexpr float inf = std::numeric_limits<float>::infinity();
+            setShadowNodeChild(flattener.nodeAt(index), width, 1, ShadowBvhChild{glm::vec3(inf), glm::vec3(-inf), leaf, true});
+        }
+        out.stackNeed = width == 2 ? 2u : 1u;
     } else {
-        flattener.emit(root, 1);
+        out.stackNeed = flattener.emit(root, 1).stackNeed;
     }
+    if (out.stackNeed > static_cast<std::uint32_t>(ML_SHADOW_STACK))
+        throw std::runtime_error(subject + ": the shadow BVH (" + std::to_string(width) + " children a node, depth " +
+                                 std::to_string(out.depth) + ") could need " + std::to_string(out.stackNeed) +
+                                 " stack entries, more than the traversal's " + std::to_string(ML_SHADOW_STACK));
     out.buildSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (out.triangles.size() != casters.size())
         throw std::runtime_error(subject + ": the shadow BVH holds " + std::to_string(out.triangles.size()) + " of " +

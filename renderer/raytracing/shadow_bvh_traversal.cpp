@@ -63,7 +63,7 @@ bool shadowTriangleHit(const GpuBvhTriangle& triangle, glm::vec3 origin, glm::ve
 }
 
 bool occludedByBvh(const ShadowBvh& bvh, glm::vec3 origin, glm::vec3 direction, float tMax, const ShadowCoverage& covered) {
-    const std::size_t nodes = bvh.nodes.size();
+    const std::size_t nodes = bvh.nodeCount();
     if (nodes == 0) return false;
     const glm::vec3 inverse = shadowRayInverse(direction);
     std::uint32_t stack[ML_SHADOW_STACK];
@@ -75,8 +75,9 @@ bool occludedByBvh(const ShadowBvh& bvh, glm::vec3 origin, glm::vec3 direction, 
                                    " references overflowed (tree depth " + std::to_string(bvh.depth) + ")");
         stack[top++] = reference;
     };
+    const std::size_t references = bvh.width * nodes;
     std::size_t step = 0;
-    for (; top > 0 && step <= 2 * nodes; ++step) {
+    for (; top > 0 && step <= references; ++step) {
         const std::uint32_t reference = stack[--top];
         if (shadowReferenceIsLeaf(reference)) {
             const std::uint32_t first = shadowLeafFirst(reference), count = shadowLeafCount(reference);
@@ -90,14 +91,14 @@ bool occludedByBvh(const ShadowBvh& bvh, glm::vec3 origin, glm::vec3 direction, 
             }
             continue;
         }
-        const GpuBvhNode& node = bvh.nodes.at(reference);
-        if (shadowBoxHit(glm::vec3(node.leftMin), glm::vec3(node.leftMax), origin, inverse, tMax))
-            push(glm::floatBitsToUint(node.leftMin.w));
-        if (shadowBoxHit(glm::vec3(node.rightMin), glm::vec3(node.rightMax), origin, inverse, tMax))
-            push(glm::floatBitsToUint(node.leftMax.w));
+        if (reference >= nodes) throw std::logic_error("shadow BVH traversal: node " + std::to_string(reference) + " past the end");
+        for (std::uint32_t slot = 0; slot < bvh.width; ++slot) {
+            const ShadowBvhChild child = shadowNodeChild(bvh.node(reference), bvh.width, slot);
+            if (child.present && shadowBoxHit(child.lo, child.hi, origin, inverse, tMax)) push(child.reference);
+        }
     }
     if (top > 0)
-        throw std::logic_error("shadow BVH traversal: more than 2 * nodes + 1 = " + std::to_string(2 * nodes + 1) +
+        throw std::logic_error("shadow BVH traversal: more than width * nodes + 1 = " + std::to_string(references + 1) +
                                " references popped; the tree is not a tree");
     return false;
 }

@@ -30,8 +30,9 @@
 //             dot(a, b) = (a.x b.x + a.y b.y) + a.z b.z.
 //   walk      a stack of ML_SHADOW_STACK references, the root pushed first; pop one: a leaf
 //             tests its triangles in order and ends the walk at the first that blocks; a node
-//             tests its left box, then its right, pushing the reference of each box met (so the
-//             right child is popped first). At most 2 * nodes + 1 pops (each reference once).
+//             tests its children's boxes in slot order (binary: left, then right), pushing the
+//             reference of each box met (so the last child is popped first); a wide node's empty
+//             slots are skipped. At most width * nodes + 1 pops (each reference once).
 //             The GLSL skips a push onto a full stack; here it throws std::logic_error, and
 //             the build's depth bound (shadow_bvh.h) keeps it from happening.
 //   MASK      a triangle whose material word is not ML_SHADOW_OPAQUE blocks where `covered`

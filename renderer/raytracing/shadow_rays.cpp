@@ -11,15 +11,16 @@
 
 namespace ml {
 
-ShadowRays::ShadowRays(const Scene& scene) {
-    ShadowBvh bvh = buildShadowBvh(scene);
+ShadowRays::ShadowRays(const Scene& scene, std::uint32_t width) {
+    ShadowBvh bvh = buildShadowBvh(scene, width);
     const ShadowAlphaMasks masks = buildShadowAlphaMasks(scene, bvh);
     stats_.triangles = bvh.triangles.size();
-    stats_.nodes = bvh.nodes.size();
+    stats_.width = bvh.width;
+    stats_.nodes = bvh.nodeCount();
     stats_.depth = bvh.depth;
     stats_.buildSeconds = bvh.buildSeconds;
     if (bvh.nodes.empty()) return;
-    const std::size_t nodeBytes = bvh.nodes.size() * sizeof(GpuBvhNode);
+    const std::size_t nodeBytes = bvh.nodes.size() * sizeof(glm::vec4);
     const std::size_t triangleBytes = bvh.triangles.size() * sizeof(GpuBvhTriangle);
     const std::size_t uvBytes = masks.uvs.size() * sizeof(glm::vec4), materialBytes = masks.materials.size() * sizeof(glm::vec4);
     stats_.maskTriangles = bvh.maskTriangles;
@@ -30,7 +31,7 @@ ShadowRays::ShadowRays(const Scene& scene) {
         throw std::invalid_argument(scene.name + ": the shadow rays' BVH takes " + std::to_string(stats_.bytes >> 20) +
                                     " MiB, more than this GPU's GL_MAX_SHADER_STORAGE_BLOCK_SIZE (" +
                                     std::to_string(maxBlock >> 20) + " MiB); --shadows off renders it unshadowed");
-    static_assert(sizeof(GpuBvhNode) % 16 == 0 && sizeof(GpuBvhTriangle) % 16 == 0);
+    static_assert(sizeof(GpuBvhTriangle) % 16 == 0);
     firstTriangle_ = static_cast<std::uint32_t>(nodeBytes / 16);
     firstMaterial_ = static_cast<std::uint32_t>((nodeBytes + triangleBytes + uvBytes) / 16);
     // The header (the ray count, zero), then the array the shaders index.

@@ -20,6 +20,7 @@ namespace ml {
 struct ShadowStructureStats {
     std::size_t triangles = 0;  // the triangles that cast shadows (BLEND surfaces do not)
     std::size_t maskTriangles = 0;  // of them, the alpha-tested ones (their alpha read at the hit)
+    std::size_t width = 0;  // children per node (--shadow-bvh-width)
     std::size_t nodes = 0;
     std::size_t depth = 0;
     std::size_t bytes = 0;
@@ -28,12 +29,14 @@ struct ShadowStructureStats {
 
 class ShadowRays {
 public:
-    // Builds the BVH of `scene` and uploads it. A structure larger than this GPU's
-    // GL_MAX_SHADER_STORAGE_BLOCK_SIZE throws std::invalid_argument in one line naming the scene.
-    explicit ShadowRays(const Scene& scene);
+    // Builds the BVH of `scene`, `width` children a node (shadow_bvh.h), and uploads it. A
+    // structure larger than this GPU's GL_MAX_SHADER_STORAGE_BLOCK_SIZE throws
+    // std::invalid_argument in one line naming the scene.
+    ShadowRays(const Scene& scene, std::uint32_t width);
 
     // Nothing casts a shadow (no triangle, or only BLEND ones): the frame need not trace.
     bool empty() const { return stats_.nodes == 0; }
+    std::uint32_t width() const { return static_cast<std::uint32_t>(stats_.width); }
     void bindForShading() const;
     // FrameUniforms::shadows: the first triangle's vec4 in the buffer, nodes, triangles, the first
     // MASK material record's vec4 (the MASK triangles' UVs lie between: shadow_alpha.h).

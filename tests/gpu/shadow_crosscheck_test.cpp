@@ -133,7 +133,9 @@ void crossCheck(const Scene& scene, const std::vector<Light>& lights, FrameSetti
                                   << light.position.y << ", " << light.position.z << "): the GPU says " << (gpuHidden ? "hidden" : "lit")
                                   << ", Embree " << (hidden ? "hidden" : "lit");
             }
-            if (gpuHidden) EXPECT_TRUE(samePixel(b, c, i)) << "a hidden light still adds light at pixel " << i;
+            if (gpuHidden) {
+                EXPECT_TRUE(samePixel(b, c, i)) << "a hidden light still adds light at pixel " << i;
+            }
         }
     }
 }

@@ -240,6 +240,27 @@ TEST_F(ShadowRaysTest, EveryMethodMatchesNaiveOnTheAtrium) {
     EXPECT_GT(d.badPixelShare, 0.004);
 }
 
+// The node layout (--shadow-bvh-width) changes how the rays find a blocker, never whether one
+// exists: at every width naive gives the default width's frame to the bit, and every method
+// holds the contract against it.
+TEST_F(ShadowRaysTest, EveryBvhWidthGivesTheSameFrame) {
+    const TestScene t = testScene("atrium", 64, 7);
+    FrameSettings s = smallFrame(t.scene, 160, 90);
+    s.shadows = Shadows::Rays;
+    FrameRenderer reference(t.scene, t.lights, s);
+    reference.render(0);
+    const FloatImage expected = reference.readHdr();
+    for (std::uint32_t width : {2u, 4u, 8u}) {
+        SCOPED_TRACE("width " + std::to_string(width));
+        FrameSettings w = s;
+        w.shadowBvhWidth = width;
+        FrameRenderer renderer(t.scene, t.lights, w);
+        ASSERT_EQ(renderer.shadowRays()->width(), width);
+        const ReferenceFrame naive = expectClusteredVariantsMatchNaive(renderer, "atrium, width " + std::to_string(width));
+        EXPECT_EQ(compareImages(naive.hdr, expected).maxAbs, 0.0) << "naive's frame moved with the width";
+    }
+}
+
 TEST_F(ShadowRaysTest, AnAnimatedPoseIsRefusedInOneLine) {
     std::string output;
     const int status = runManylights("render --scene " + std::string(ML_CORPUS_DIR) +
@@ -254,6 +275,8 @@ TEST(ShadowsFlag, BadValueIsOneLine) {
     std::string output;
     EXPECT_NE(runManylights("render --size 32x18 --shadows maybe --out /dev/null", output), 0);
     EXPECT_NE(output.find("--shadows 'maybe': expected off"), std::string::npos) << output;
+    EXPECT_NE(runManylights("render --size 32x18 --shadows rays --shadow-bvh-width 16 --out /dev/null", output), 0);
+    EXPECT_NE(output.find("--shadow-bvh-width 16: must be 2, 4 or 8"), std::string::npos) << output;
 }
 
 }  // namespace

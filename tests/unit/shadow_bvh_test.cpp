@@ -24,6 +24,9 @@
 namespace ml {
 namespace {
 
+// Every width the layout has (--shadow-bvh-width).
+constexpr std::uint32_t kWidths[] = {2u, 4u, 8u};
+
 // --- Scenes made by hand ------------------------------------------------------------------------
 
 std::uint32_t addMaterial(Scene& scene, AlphaMode mode) {
@@ -79,14 +82,17 @@ struct Walk {
     std::vector<int> triangleSeen;   // times each triangle sits in a leaf
     std::vector<int> nodeSeen;       // times each node is referenced (the root: once, by the walk)
     std::uint32_t depth = 0;
+    std::uint32_t stackNeed = 0;     // shadow_bvh.h's need(root), worked out again here
     std::size_t leaves = 0;
     std::vector<std::string> faults;
 };
 
 // Walks the subtree of `reference`, checking that every corner under it lies in [lo, hi];
-// `level` is the level of `reference` as an inner node (the root's: 1).
-void walk(const ShadowBvh& bvh, std::uint32_t reference, glm::vec3 lo, glm::vec3 hi, std::uint32_t level, std::uint32_t parent, Walk& w) {
-    if (w.faults.size() > 10) return;
+// `level` is the level of `reference` as an inner node (the root's: 1). Returns the stack entries
+// the traversal needs under it once it is popped (shadow_bvh.h).
+std::uint32_t walk(const ShadowBvh& bvh, std::uint32_t reference, glm::vec3 lo, glm::vec3 hi, std::uint32_t level, std::uint32_t parent,
+                   Walk& w) {
+    if (w.faults.size() > 10) return 0;
     if (shadowReferenceIsLeaf(reference)) {
         const std::uint32_t first = shadowLeafFirst(reference), count = shadowLeafCount(reference);
         ++w.leaves;
@@ -94,7 +100,7 @@ void walk(const ShadowBvh& bvh, std::uint32_t reference, glm::vec3 lo, glm::vec3
         for (std::uint32_t i = first; i < first + count; ++i) {
             if (i >= bvh.triangles.size()) {
                 w.faults.push_back("a leaf past the last triangle");
-                return;
+                return 0;
             }
             ++w.triangleSeen[i];
             const GpuBvhTriangle& t = bvh.triangles[i];
@@ -102,29 +108,43 @@ void walk(const ShadowBvh& bvh, std::uint32_t reference, glm::vec3 lo, glm::vec3
                 if (glm::any(glm::lessThan(xyz(c), lo)) || glm::any(glm::greaterThan(xyz(c), hi)))
                     w.faults.push_back("triangle " + std::to_string(i) + " sticks out of its box");
         }
-        return;
+        return 0;
     }
-    if (reference >= bvh.nodes.size() || (level > 1 && reference <= parent)) {
+    if (reference >= bvh.nodeCount() || (level > 1 && reference <= parent)) {
         w.faults.push_back("node reference " + std::to_string(reference) + " out of order or past the end");
-        return;
+        return 0;
     }
     ++w.nodeSeen[reference];
     w.depth = std::max(w.depth, level);
-    const GpuBvhNode& n = bvh.nodes[reference];
-    if (wBits(n.rightMin) != 0u || wBits(n.rightMax) != 0u) w.faults.push_back("a right box's w is not 0");
-    const glm::vec3 childLo[2] = {xyz(n.leftMin), xyz(n.rightMin)}, childHi[2] = {xyz(n.leftMax), xyz(n.rightMax)};
-    const std::uint32_t child[2] = {wBits(n.leftMin), wBits(n.leftMax)};
-    for (int c = 0; c < 2; ++c) {
-        // The one-leaf tree's right child: its leaf again, behind an empty box, not walked twice.
-        if (emptyBox(childLo[c], childHi[c])) {
-            if (!(bvh.nodes.size() == 1 && c == 1 && child[1] == child[0])) w.faults.push_back("an empty box outside the one-leaf tree");
+    const glm::vec4* n = bvh.node(reference);
+    if (bvh.width == 2 && (wBits(n[2]) != 0u || wBits(n[3]) != 0u)) w.faults.push_back("a right box's w is not 0");
+    std::uint32_t pushed = 0, need = 0;
+    bool emptySeen = false;
+    for (std::uint32_t slot = 0; slot < bvh.width; ++slot) {
+        const ShadowBvhChild child = shadowNodeChild(n, bvh.width, slot);
+        if (!child.present) {
+            // A wide node's empty slots follow its children, behind empty boxes.
+            emptySeen = true;
+            if (!emptyBox(child.lo, child.hi)) w.faults.push_back("an empty slot with a box");
+            continue;
+        }
+        if (emptySeen) w.faults.push_back("a child after an empty slot");
+        // The one-leaf binary tree's right child: its leaf again, behind an empty box, not walked twice.
+        if (emptyBox(child.lo, child.hi)) {
+            const ShadowBvhChild first = shadowNodeChild(n, bvh.width, 0);
+            if (!(bvh.width == 2 && bvh.nodeCount() == 1 && slot == 1 && child.reference == first.reference))
+                w.faults.push_back("an empty box outside the one-leaf tree");
+            ++pushed;
             continue;
         }
         // A child's box lies inside its parent's.
-        if (glm::any(glm::lessThan(childLo[c], lo)) || glm::any(glm::greaterThan(childHi[c], hi)))
+        if (glm::any(glm::lessThan(child.lo, lo)) || glm::any(glm::greaterThan(child.hi, hi)))
             w.faults.push_back("node " + std::to_string(reference) + "'s child box sticks out of its own");
-        walk(bvh, child[c], childLo[c], childHi[c], level + 1, reference, w);
+        need = std::max(need, pushed + walk(bvh, child.reference, child.lo, child.hi, level + 1, reference, w));
+        ++pushed;
     }
+    if (pushed < 2 && bvh.nodeCount() > 1) w.faults.push_back("a node of fewer than two children");
+    return std::max(need, pushed);
 }
 
 // Every casting triangle of `scene` once, in a box that holds it; the stack bound; the triangles'
@@ -143,22 +163,23 @@ Walk expectLayoutInvariants(const Scene& scene, const ShadowBvh& bvh) {
     EXPECT_EQ(bvh.maskTriangles, masked);
     Walk w;
     w.triangleSeen.assign(bvh.triangles.size(), 0);
-    w.nodeSeen.assign(bvh.nodes.size(), 0);
+    w.nodeSeen.assign(bvh.nodeCount(), 0);
     if (bvh.nodes.empty()) {
         EXPECT_EQ(casting, 0u);
         return w;
     }
     const float inf = std::numeric_limits<float>::infinity();
-    walk(bvh, 0u, glm::vec3(-inf), glm::vec3(inf), 1, 0, w);
+    w.stackNeed = walk(bvh, 0u, glm::vec3(-inf), glm::vec3(inf), 1, 0, w);
     for (const std::string& f : w.faults) ADD_FAILURE() << scene.name << ": " << f;
     EXPECT_EQ(std::count(w.triangleSeen.begin(), w.triangleSeen.end(), 1), static_cast<std::ptrdiff_t>(bvh.triangles.size()))
         << "every triangle in exactly one leaf";
-    EXPECT_EQ(std::count(w.nodeSeen.begin(), w.nodeSeen.end(), 1), static_cast<std::ptrdiff_t>(bvh.nodes.size()))
+    EXPECT_EQ(std::count(w.nodeSeen.begin(), w.nodeSeen.end(), 1), static_cast<std::ptrdiff_t>(bvh.nodeCount()))
         << "every node reached exactly once";
     EXPECT_EQ(w.depth, bvh.depth);
     EXPECT_EQ(w.leaves, bvh.leaves);
     EXPECT_LE(bvh.depth, kShadowBvhMaxDepth);
-    EXPECT_LE(bvh.depth + 1, static_cast<std::uint32_t>(ML_SHADOW_STACK)) << "the traversal's stack holds depth + 1";
+    EXPECT_EQ(w.stackNeed, bvh.stackNeed);
+    EXPECT_LE(bvh.stackNeed, static_cast<std::uint32_t>(ML_SHADOW_STACK)) << "the traversal's stack holds every push";
 
     // The triangles are the scene's, corners in its order, each once, with their material words.
     std::vector<int> sceneSeen(scene.triangleCount(), 0);
@@ -335,17 +356,24 @@ TEST(ShadowBvh, OneTriangleIsOneNodeWithTheLeafOnTheLeft) {
     scene.indices = {0, 1, 2};
     scene.draws = {DrawRange{0, 3, 0}};
     computeBounds(scene);
-    const ShadowBvh bvh = buildShadowBvh(scene);
-    ASSERT_EQ(bvh.nodes.size(), 1u);
-    ASSERT_EQ(bvh.triangles.size(), 1u);
-    EXPECT_EQ(bvh.depth, 1u);
-    const GpuBvhNode& root = bvh.nodes[0];
-    EXPECT_EQ(wBits(root.leftMin), shadowLeafReference(0, 1));
-    EXPECT_EQ(wBits(root.leftMax), shadowLeafReference(0, 1)) << "the right child: the same leaf";
-    EXPECT_TRUE(emptyBox(xyz(root.rightMin), xyz(root.rightMax)));
-    EXPECT_EQ(xyz(root.leftMin), glm::vec3(0.0f));
-    EXPECT_EQ(xyz(root.leftMax), glm::vec3(1.0f, 1.0f, 0.0f));
-    expectLayoutInvariants(scene, bvh);
+    for (std::uint32_t width : kWidths) {
+        SCOPED_TRACE("width " + std::to_string(width));
+        const ShadowBvh bvh = buildShadowBvh(scene, width);
+        ASSERT_EQ(bvh.nodeCount(), 1u);
+        ASSERT_EQ(bvh.triangles.size(), 1u);
+        EXPECT_EQ(bvh.depth, 1u);
+        const ShadowBvhChild first = shadowNodeChild(bvh.node(0), width, 0), second = shadowNodeChild(bvh.node(0), width, 1);
+        EXPECT_EQ(first.reference, shadowLeafReference(0, 1));
+        EXPECT_EQ(first.lo, glm::vec3(0.0f));
+        EXPECT_EQ(first.hi, glm::vec3(1.0f, 1.0f, 0.0f));
+        // Binary: the right child is the same leaf behind an empty box; wide: an empty slot.
+        EXPECT_EQ(second.present, width == 2);
+        EXPECT_EQ(second.reference, width == 2 ? first.reference : 0u);
+        EXPECT_TRUE(emptyBox(second.lo, second.hi));
+        expectLayoutInvariants(scene, bvh);
+        EXPECT_TRUE(occludedByBvh(bvh, {0.2f, 0.2f, 1.0f}, {0.0f, 0.0f, -2.0f}, 1.0f));
+        EXPECT_FALSE(occludedByBvh(bvh, {0.8f, 0.8f, 1.0f}, {0.0f, 0.0f, -2.0f}, 1.0f));
+    }
     expectBoth(true, occlusion(scene, {0.2f, 0.2f, 1.0f}, {0.0f, 0.0f, -2.0f}, 1.0f));
     expectBoth(false, occlusion(scene, {0.8f, 0.8f, 1.0f}, {0.0f, 0.0f, -2.0f}, 1.0f));
 }
@@ -416,13 +444,25 @@ Scene builtin(const std::string& name, float detail = 1.0f) {
 
 TEST(ShadowBvh, LayoutHoldsEveryCastingTriangleOnceInsideItsBoxes) {
     for (const auto& [name, detail] : {std::pair<std::string, float>{"boxes", 1.0f}, {"atrium", 0.25f}, {"plane", 1.0f}}) {
-        SCOPED_TRACE(name);
         const Scene scene = builtin(name, detail);
-        const ShadowBvh bvh = buildShadowBvh(scene);
-        expectLayoutInvariants(scene, bvh);
-        std::printf("%s: %zu of %zu triangles cast (%zu alpha-tested), %zu nodes, %zu leaves, depth %u, %zu bytes, built in %.3f ms\n",
-                    name.c_str(), bvh.triangles.size(), scene.triangleCount(), bvh.maskTriangles, bvh.nodes.size(), bvh.leaves,
-                    bvh.depth, bvh.bytes(), 1e3 * bvh.buildSeconds);
+        for (std::uint32_t width : kWidths) {
+            SCOPED_TRACE(name + ", width " + std::to_string(width));
+            const ShadowBvh bvh = buildShadowBvh(scene, width);
+            expectLayoutInvariants(scene, bvh);
+            std::printf("%s, width %u: %zu of %zu triangles cast (%zu alpha-tested), %zu nodes, %zu leaves, depth %u, stack %u, %zu bytes, "
+                        "built in %.3f ms\n",
+                        name.c_str(), width, bvh.triangles.size(), scene.triangleCount(), bvh.maskTriangles, bvh.nodeCount(), bvh.leaves,
+                        bvh.depth, bvh.stackNeed, bvh.bytes(), 1e3 * bvh.buildSeconds);
+        }
+    }
+}
+
+TEST(ShadowBvh, AWidthTheLayoutDoesNotHaveIsOneLine) {
+    try {
+        buildShadowBvh(quadScene(), 3);
+        FAIL() << "no error";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_STREQ(e.what(), "--shadow-bvh-width 3: the shadow BVH has 2, 4 or 8 children a node");
     }
 }
 
@@ -519,9 +559,9 @@ Agreement compareWithEmbree(const Scene& scene, const ShadowBvh& bvh, const Embr
     return a;
 }
 
-void expectAgreementWithEmbree(const std::string& name, float detail) {
+void expectAgreementWithEmbree(const std::string& name, float detail, std::uint32_t width) {
     const Scene scene = builtin(name, detail);
-    const ShadowBvh bvh = buildShadowBvh(scene);
+    const ShadowBvh bvh = buildShadowBvh(scene, width);
     const EmbreeOcclusion embree(scene);
     ASSERT_EQ(embree.triangles(), bvh.triangles.size());
     constexpr std::size_t kRays = 100000;
@@ -530,8 +570,8 @@ void expectAgreementWithEmbree(const std::string& name, float detail) {
         const char* what = pass == 0 ? "alpha-tested triangles block" : "alpha-tested triangles are holes";
         SCOPED_TRACE(what);
         const Agreement a = compareWithEmbree(scene, bvh, embree, kRays, pass == 0 ? ShadowCoverage{} : holes, 62u + pass);
-        std::printf("%s (%s): %zu rays, %.1f %% blocked; %zu disagree with Embree (%zu away from any edge, epsilon %.2g)\n", name.c_str(),
-                    what, a.rays, 100.0 * double(a.blocked) / double(a.rays), a.disagreements, a.unexplained,
+        std::printf("%s, width %u (%s): %zu rays, %.1f %% blocked; %zu disagree with Embree (%zu away from any edge, epsilon %.2g)\n", name.c_str(),
+                    width, what, a.rays, 100.0 * double(a.blocked) / double(a.rays), a.disagreements, a.unexplained,
                     kEdgeEpsilon * glm::length(glm::dvec3(scene.bounds.size())));
         EXPECT_GT(a.rays, kRays * 99 / 100);
         // Both answers occur often: the comparison means something.
@@ -542,8 +582,13 @@ void expectAgreementWithEmbree(const std::string& name, float detail) {
     }
 }
 
-TEST(ShadowBvh, AgreesWithEmbreeOnRandomRaysInBoxes) { expectAgreementWithEmbree("boxes", 1.0f); }
-TEST(ShadowBvh, AgreesWithEmbreeOnRandomRaysInTheAtrium) { expectAgreementWithEmbree("atrium", 0.25f); }
+class ShadowBvhWidth : public ::testing::TestWithParam<std::uint32_t> {};
+
+TEST_P(ShadowBvhWidth, AgreesWithEmbreeOnRandomRaysInBoxes) { expectAgreementWithEmbree("boxes", 1.0f, GetParam()); }
+TEST_P(ShadowBvhWidth, AgreesWithEmbreeOnRandomRaysInTheAtrium) { expectAgreementWithEmbree("atrium", 0.25f, GetParam()); }
+
+INSTANTIATE_TEST_SUITE_P(ShadowBvh, ShadowBvhWidth, ::testing::ValuesIn(kWidths),
+                         [](const ::testing::TestParamInfo<std::uint32_t>& info) { return "Width" + std::to_string(info.param); });
 
 }  // namespace
 }  // namespace ml

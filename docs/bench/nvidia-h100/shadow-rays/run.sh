@@ -6,6 +6,7 @@
 #   run.sh bench     half a minute of frames to raise the SM clock, then shadows.sweep.json twice (a, b)
 #   run.sh accuracy  accuracy.sweep.json: every method against naive with the same rays
 #   run.sh bounds    half a minute of frames, then bounds.sweep.json: the rate against the lights' reach
+#   run.sh layout    half a minute of frames, then layout.sweep.json: the node layout (2, 4, 8 children)
 # Every file lands in $OUT/STEP.tgz.
 set -u
 D=docs/bench/nvidia-h100/shadow-rays
@@ -36,10 +37,14 @@ bounds)
   timeout 30 $M bench --scene atrium --lights 65536 --size 2560x1440 --light-radius overlap:32 --method visibility \
     --warmup 5 --timed-frames 600 --backend egl --out /tmp/warm --name warm > $OUT/warm.log 2>&1
   timeout 400 $M bench --sweep $D/bounds.sweep.json --backend egl --out $OUT --name bounds > $OUT/bounds.log 2>&1 ;;
+layout)
+  timeout 30 $M bench --scene atrium --lights 65536 --size 2560x1440 --light-radius overlap:32 --method visibility \
+    --warmup 5 --timed-frames 600 --backend egl --out /tmp/warm --name warm > $OUT/warm.log 2>&1
+  timeout 500 $M bench --sweep $D/layout.sweep.json --backend egl --out $OUT --name layout > $OUT/layout.log 2>&1 ;;
 accuracy)
   timeout 300 $M bench --sweep $D/accuracy.sweep.json --backend egl --out $OUT --name accuracy > $OUT/accuracy.log 2>&1 ;;
 *)
-  echo "run.sh: unknown step '$STEP' (repro, bench, accuracy, bounds)" >&2
+  echo "run.sh: unknown step '$STEP' (repro, bench, accuracy, bounds, layout)" >&2
   exit 2 ;;
 esac
 pack
