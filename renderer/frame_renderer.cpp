@@ -7,18 +7,6 @@
 #include "renderer/context/gl_context.h"
 
 namespace ml {
-namespace {
-
-std::unique_ptr<ShadowRays> buildShadowRays(const Scene& scene, bool animated, std::uint32_t width) {
-    // The structure holds the loaded pose; until it follows the posed vertices, say so rather
-    // than cast the rest pose's shadows under a walking figure.
-    if (animated)
-        throw std::invalid_argument(scene.name + ": --shadows rays does not follow an animated pose yet; add --animation off to "
-                                                 "draw and shadow it at rest");
-    return std::make_unique<ShadowRays>(scene, width);
-}
-
-}  // namespace
 
 FrameRenderer::FrameRenderer(const Scene& scene, const std::vector<Light>& lights, const FrameSettings& settings)
     : settings_(settings),
@@ -27,7 +15,10 @@ FrameRenderer::FrameRenderer(const Scene& scene, const std::vector<Light>& light
                            ? std::make_unique<VertexAnimationPass>(scene, *settings.sceneAnimation.clip, scene_.hasTangentStream())
                            : nullptr),
       lights_(lights),
-      shadowRays_(settings.shadows == Shadows::Rays ? buildShadowRays(scene, vertexAnimation_ != nullptr, settings.shadowBvhWidth) : nullptr),
+      // An animated scene's structure follows its pose (ShadowRays::refit, each frame).
+      shadowRays_(settings.shadows == Shadows::Rays
+                      ? std::make_unique<ShadowRays>(scene, settings.shadowBvhWidth, vertexAnimation_ != nullptr)
+                      : nullptr),
       // Sampled as asked from the start, so a size the GPU cannot hold is refused before allocation.
       targets_(settings.width, settings.height, false, TargetSampling{settings.method.msaa, settings.supersample}),
       frameUniformBuffer_("frame.uniforms", sizeof(FrameUniforms)),
@@ -74,7 +65,7 @@ const ShadowRays* FrameRenderer::activeShadowRays() const {
 
 void FrameRenderer::setShadows(Shadows shadows, const Scene& scene) {
     settings_.shadows = shadows;
-    if (shadows == Shadows::Rays && !shadowRays_) shadowRays_ = buildShadowRays(scene, vertexAnimation_ != nullptr, settings_.shadowBvhWidth);
+    if (shadows == Shadows::Rays && !shadowRays_) shadowRays_ = std::make_unique<ShadowRays>(scene, settings_.shadowBvhWidth, vertexAnimation_ != nullptr);
     rebuildForShadingSwitches();
 }
 
@@ -143,6 +134,10 @@ std::vector<PassTime> FrameRenderer::renderAt(float time, std::uint32_t drawSeed
         // Transparent ranges blend back to front by their boxes, which move with them.
         if (scene_.transparentRangeCount() > 0)
             scene_.refitTransparentBounds([&](std::uint32_t v, const glm::vec3& loaded) { return vertexAnimation_->posedPosition(v, loaded); });
+    }
+    if (const ShadowRays* shadows = activeShadowRays(); shadows && shadows->followsPose()) {
+        auto pass = timer_.pass("shadows.refit");
+        shadows->refit(scene_);
     }
     {
         auto pass = timer_.pass("lights.animate");

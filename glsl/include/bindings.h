@@ -156,6 +156,12 @@
 #define ML_SSBO_MORPH_DELTAS 2         // morph target deltas: position, normal, tangent per (target, vertex)
 #define ML_SSBO_ANIMATION_POSE 3       // this frame's mesh and joint matrices and morph weights
 #define ML_DEFORM_WORKGROUP 64
+// The shadow BVH's refit (glsl/refit_shadow_bvh.comp, renderer/raytracing/shadow_bvh_refit.h)
+// runs right after the vertex animation, so its inputs share the deformation's points; it reads
+// ML_SSBO_VERTICES and rewrites ML_SSBO_SHADOW_BVH.
+#define ML_SSBO_SHADOW_REFIT_CORNERS 0  // per BVH triangle: its three scene vertices
+#define ML_SSBO_SHADOW_REFIT_ORDER 1    // the inner nodes, deepest level first
+#define ML_SHADOW_REFIT_WORKGROUP 64
 #define ML_DEFORM_NO_SKIN 0xFFFFFFFFu  // DeformMesh::pose.y of a mesh without a skin
 
 // Texture units. A material's textures, one unit per slot (ML_SLOT_*): ML_TEX_MATERIAL + slot,

@@ -11,7 +11,7 @@
 
 namespace ml {
 
-ShadowRays::ShadowRays(const Scene& scene, std::uint32_t width) {
+ShadowRays::ShadowRays(const Scene& scene, std::uint32_t width, bool followsPose) {
     ShadowBvh bvh = buildShadowBvh(scene, width);
     const ShadowAlphaMasks masks = buildShadowAlphaMasks(scene, bvh);
     stats_.triangles = bvh.triangles.size();
@@ -61,6 +61,17 @@ ShadowRays::ShadowRays(const Scene& scene, std::uint32_t width) {
         stats_.bytes += masks.texels.size();
     }
     directionalReach_ = 2.0f * glm::length(bvh.bounds.size()) + 1.0f;
+    if (followsPose) {
+        refit_ = std::make_unique<ShadowBvhRefit>(scene, bvh, firstTriangle_);
+        stats_.refitLevels = refit_->levels();
+        stats_.bytes += refit_->bytes();
+        // A pose may reach past the loaded pose's bounds: the sun's rays go four times as far.
+        directionalReach_ = 8.0f * glm::length(bvh.bounds.size()) + 1.0f;
+    }
+}
+
+void ShadowRays::refit(const SceneGpu& scene) const {
+    if (refit_ && !empty()) refit_->run(buffer_, scene);
 }
 
 void ShadowRays::bindForShading() const {

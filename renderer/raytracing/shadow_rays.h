@@ -7,11 +7,13 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 
 #include <glm/glm.hpp>
 
 #include "renderer/gl/buffer.h"
 #include "renderer/gl/gl_handle.h"
+#include "renderer/raytracing/shadow_bvh_refit.h"
 #include "scenes/scene.h"
 
 namespace ml {
@@ -25,14 +27,16 @@ struct ShadowStructureStats {
     std::size_t depth = 0;
     std::size_t bytes = 0;
     double buildSeconds = 0.0;  // Embree's build and the flattening, on the CPU
+    std::size_t refitLevels = 0;  // an animated scene's refit: its dispatches of nodes (0: static)
 };
 
 class ShadowRays {
 public:
-    // Builds the BVH of `scene`, `width` children a node (shadow_bvh.h), and uploads it. A
-    // structure larger than this GPU's GL_MAX_SHADER_STORAGE_BLOCK_SIZE throws
-    // std::invalid_argument in one line naming the scene.
-    ShadowRays(const Scene& scene, std::uint32_t width);
+    // Builds the BVH of `scene`, `width` children a node (shadow_bvh.h), and uploads it;
+    // `followsPose` where the scene is animated: refit() then moves it to each frame's pose
+    // (shadow_bvh_refit.h). A structure larger than this GPU's GL_MAX_SHADER_STORAGE_BLOCK_SIZE
+    // throws std::invalid_argument in one line naming the scene.
+    ShadowRays(const Scene& scene, std::uint32_t width, bool followsPose);
 
     // Nothing casts a shadow (no triangle, or only BLEND ones): the frame need not trace.
     bool empty() const { return stats_.nodes == 0; }
@@ -45,6 +49,10 @@ public:
     // point inside them (twice their diagonal).
     float directionalReach() const { return directionalReach_; }
     const ShadowStructureStats& stats() const { return stats_; }
+    // After the vertex animation: the structure takes the posed vertices `scene` holds now.
+    // Nothing where the scene does not move.
+    void refit(const SceneGpu& scene) const;
+    bool followsPose() const { return refit_ != nullptr; }
 
     // The rays that shaders compiled with ML_COUNT_SHADOW_RAYS traced since resetRayCount (a
     // 64-bit count in the buffer's header; FrameRenderer::countShadowRays).
@@ -59,6 +67,7 @@ private:
     std::uint32_t firstTriangle_ = 0;  // in vec4s
     std::uint32_t firstMaterial_ = 0;  // in vec4s
     float directionalReach_ = 0.0f;
+    std::unique_ptr<ShadowBvhRefit> refit_;
 };
 
 }  // namespace ml
