@@ -62,9 +62,13 @@ bool shadowTriangleHit(const GpuBvhTriangle& triangle, glm::vec3 origin, glm::ve
     return t > 0.0f && t < tMax;
 }
 
-bool occludedByBvh(const ShadowBvh& bvh, glm::vec3 origin, glm::vec3 direction, float tMax, const ShadowCoverage& covered) {
+bool occludedByBvh(const ShadowBvh& bvh, glm::vec3 origin, glm::vec3 direction, float tMax, const ShadowCoverage& covered,
+                   ShadowTraversalCounts* counts) {
     const std::size_t nodes = bvh.nodeCount();
     if (nodes == 0) return false;
+    ShadowTraversalCounts ignored;
+    ShadowTraversalCounts& work = counts ? *counts : ignored;
+    ++work.rays;
     const glm::vec3 inverse = shadowRayInverse(direction);
     std::uint32_t stack[ML_SHADOW_STACK];
     std::uint32_t top = 0;
@@ -74,6 +78,7 @@ bool occludedByBvh(const ShadowBvh& bvh, glm::vec3 origin, glm::vec3 direction, 
             throw std::logic_error("shadow BVH traversal: the stack of " + std::to_string(ML_SHADOW_STACK) +
                                    " references overflowed (tree depth " + std::to_string(bvh.depth) + ")");
         stack[top++] = reference;
+        ++work.pushes;
     };
     const std::size_t references = bvh.width * nodes;
     std::size_t step = 0;
@@ -84,6 +89,7 @@ bool occludedByBvh(const ShadowBvh& bvh, glm::vec3 origin, glm::vec3 direction, 
             for (std::uint32_t i = 0; i < count; ++i) {
                 const GpuBvhTriangle& triangle = bvh.triangles.at(first + i);
                 float u = 0.0f, v = 0.0f;
+                ++work.triangles;
                 if (!shadowTriangleHit(triangle, origin, direction, tMax, u, v)) continue;
                 const std::uint32_t material = glm::floatBitsToUint(triangle.v0.w);
                 if (material == kShadowOpaque || !covered || covered(material, glm::floatBitsToUint(triangle.v1.w), u, v))
@@ -92,9 +98,12 @@ bool occludedByBvh(const ShadowBvh& bvh, glm::vec3 origin, glm::vec3 direction, 
             continue;
         }
         if (reference >= nodes) throw std::logic_error("shadow BVH traversal: node " + std::to_string(reference) + " past the end");
+        ++work.nodes;
         for (std::uint32_t slot = 0; slot < bvh.width; ++slot) {
             const ShadowBvhChild child = shadowNodeChild(bvh.node(reference), bvh.width, slot);
-            if (child.present && shadowBoxHit(child.lo, child.hi, origin, inverse, tMax)) push(child.reference);
+            if (!child.present) continue;
+            ++work.boxes;
+            if (shadowBoxHit(child.lo, child.hi, origin, inverse, tMax)) push(child.reference);
         }
     }
     if (top > 0)

@@ -53,9 +53,19 @@ namespace ml {
 // (1 - u - v) v0 + u v1 + v v2 of the scene triangle's corners, in the scene's order.
 using ShadowCoverage = std::function<bool(std::uint32_t material, std::uint32_t sceneTriangle, float u, float v)>;
 
-// Whether anything blocks the segment from origin to origin + tMax direction.
+// What a walk did, added up over rays: the work the GPU's traversal does for the same rays.
+struct ShadowTraversalCounts {
+    std::uint64_t rays = 0;
+    std::uint64_t nodes = 0;      // inner nodes popped (their boxes read and tested)
+    std::uint64_t boxes = 0;      // child boxes tested
+    std::uint64_t pushes = 0;     // references pushed (stack writes)
+    std::uint64_t triangles = 0;  // triangles tested
+};
+
+// Whether anything blocks the segment from origin to origin + tMax direction; `counts`, where
+// given, adds up the walk's work.
 bool occludedByBvh(const ShadowBvh& bvh, glm::vec3 origin, glm::vec3 direction, float tMax,
-                   const ShadowCoverage& covered = {});
+                   const ShadowCoverage& covered = {}, ShadowTraversalCounts* counts = nullptr);
 
 // The pieces, for tests of their own.
 glm::vec3 shadowRayInverse(glm::vec3 direction);

@@ -521,27 +521,47 @@ struct Agreement {
     std::size_t rays = 0, blocked = 0, disagreements = 0, unexplained = 0;  // unexplained: not near an edge, or past 200
 };
 
-// `rays` rays from points spread over the scene's surface (by area: renderer/scene/surface_samples.h),
-// moved off it toward the light as the GPU moves them, to points uniform in the scene's bounds.
-Agreement compareWithEmbree(const Scene& scene, const ShadowBvh& bvh, const EmbreeOcclusion& embree, std::size_t rays,
-                            const ShadowCoverage& covered, std::uint32_t seed) {
+struct ShadowRay {
+    glm::vec3 origin, direction;
+};
+
+// `count` rays from points spread over the scene's surface (by area: renderer/scene/surface_samples.h),
+// moved off it toward the light as the GPU moves them, to lights uniform in the scene's bounds,
+// or, with `reach` > 0, at most `reach` away in a uniform direction off the surface (the short
+// rays of lights whose radius is `reach`).
+std::vector<ShadowRay> randomShadowRays(const Scene& scene, std::size_t count, std::uint32_t seed, float reach = 0.0f) {
     const SurfaceSamples samples(scene);
     const glm::vec3 lo = scene.bounds.min - 0.05f * scene.bounds.size(), size = 1.1f * scene.bounds.size();
-    const double epsilon = kEdgeEpsilon * glm::length(glm::dvec3(scene.bounds.size()));
-    Agreement a;
-    for (std::uint32_t i = 0; i < rays; ++i) {
+    std::vector<ShadowRay> rays;
+    for (std::uint32_t i = 0; i < count; ++i) {
         const auto r = [&](std::uint32_t k) { return hashToUnitFloat(pcgHash(seed) ^ (8u * i + k)); };
         const SurfaceSamples::Point s = samples.at(r(0), r(1), r(2));
         const glm::vec3 p = s.position(scene);
-        const glm::vec3 light = lo + size * glm::vec3(r(3), r(4), r(5));
         const glm::vec3 c0 = scene.vertices[s.corners[0]].position, c1 = scene.vertices[s.corners[1]].position,
                         c2 = scene.vertices[s.corners[2]].position;
         glm::vec3 n = glm::cross(c1 - c0, c2 - c0);
         if (glm::length(n) == 0.0f) continue;
         n = glm::normalize(n);
+        glm::vec3 light = lo + size * glm::vec3(r(3), r(4), r(5));
+        if (reach > 0.0f) {
+            const glm::vec3 d(r(3) - 0.5f, r(4) - 0.5f, r(5) - 0.5f);
+            if (glm::length(d) == 0.0f) continue;
+            light = p + reach * r(6) * glm::normalize(d);
+        }
         if (glm::dot(n, light - p) < 0.0f) n = -n;
         const glm::vec3 origin = shadowRayOrigin(p, n);
-        const glm::vec3 direction = light - origin;
+        rays.push_back({origin, light - origin});
+    }
+    return rays;
+}
+
+Agreement compareWithEmbree(const Scene& scene, const ShadowBvh& bvh, const EmbreeOcclusion& embree, std::size_t count,
+                            const ShadowCoverage& covered, std::uint32_t seed) {
+    const double epsilon = kEdgeEpsilon * glm::length(glm::dvec3(scene.bounds.size()));
+    Agreement a;
+    const std::vector<ShadowRay> rays = randomShadowRays(scene, count, seed);
+    for (std::size_t i = 0; i < rays.size(); ++i) {
+        const auto [origin, direction] = rays[i];
         const bool ours = occludedByBvh(bvh, origin, direction, 1.0f, covered);
         const bool theirs = embree.occluded(origin, direction, 1.0f, covered);
         ++a.rays;
@@ -552,7 +572,7 @@ Agreement compareWithEmbree(const Scene& scene, const ShadowBvh& bvh, const Embr
         if (a.disagreements > 200 || !nearAnEdge(bvh, origin, direction, epsilon)) {
             ++a.unexplained;
             if (a.unexplained <= 5)
-                std::printf("  disagreement away from any edge: ray %u from (%.9g, %.9g, %.9g) along (%.9g, %.9g, %.9g): ours %d, Embree's %d\n", i,
+                std::printf("  disagreement away from any edge: ray %zu from (%.9g, %.9g, %.9g) along (%.9g, %.9g, %.9g): ours %d, Embree's %d\n", i,
                             origin.x, origin.y, origin.z, direction.x, direction.y, direction.z, ours, theirs);
         }
     }
@@ -586,6 +606,30 @@ class ShadowBvhWidth : public ::testing::TestWithParam<std::uint32_t> {};
 
 TEST_P(ShadowBvhWidth, AgreesWithEmbreeOnRandomRaysInBoxes) { expectAgreementWithEmbree("boxes", 1.0f, GetParam()); }
 TEST_P(ShadowBvhWidth, AgreesWithEmbreeOnRandomRaysInTheAtrium) { expectAgreementWithEmbree("atrium", 0.25f, GetParam()); }
+
+// What the node layout buys, in the work the traversal does (the GPU's walk, operation for
+// operation): short rays (lights within 2 m, as `overlap:32` makes them) over the atrium, the
+// same rays at every width. Wider nodes pop fewer nodes a ray, each testing more boxes; the
+// H100 record says what that is worth in time (docs/bench/nvidia-h100/shadow-rays/).
+TEST(ShadowBvh, WiderNodesPopFewerNodesARay) {
+    const Scene scene = builtin("atrium", 0.25f);
+    const std::vector<ShadowRay> rays = randomShadowRays(scene, 20000, 11u, 2.0f);
+    double nodesARay[3] = {};
+    for (int w = 0; w < 3; ++w) {
+        const ShadowBvh bvh = buildShadowBvh(scene, kWidths[w]);
+        ShadowTraversalCounts c;
+        std::size_t blocked = 0;
+        for (const ShadowRay& r : rays) blocked += occludedByBvh(bvh, r.origin, r.direction, 1.0f, {}, &c) ? 1 : 0;
+        const double n = double(c.rays);
+        nodesARay[w] = double(c.nodes) / n;
+        std::printf("atrium, rays up to 2 m, width %u: %.1f nodes, %.1f boxes, %.1f pushes, %.1f triangles a ray (%.1f %% blocked); "
+                    "%.0f node bytes read a ray\n",
+                    kWidths[w], nodesARay[w], double(c.boxes) / n, double(c.pushes) / n, double(c.triangles) / n, 100.0 * double(blocked) / n,
+                    nodesARay[w] * 16.0 * shadowNodeVec4s(kWidths[w]));
+    }
+    EXPECT_LT(nodesARay[1], 0.7 * nodesARay[0]);
+    EXPECT_LT(nodesARay[2], nodesARay[1]);
+}
 
 INSTANTIATE_TEST_SUITE_P(ShadowBvh, ShadowBvhWidth, ::testing::ValuesIn(kWidths),
                          [](const ::testing::TestParamInfo<std::uint32_t>& info) { return "Width" + std::to_string(info.param); });

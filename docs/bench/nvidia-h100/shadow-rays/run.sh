@@ -7,6 +7,7 @@
 #   run.sh accuracy  accuracy.sweep.json: every method against naive with the same rays
 #   run.sh bounds    half a minute of frames, then bounds.sweep.json: the rate against the lights' reach
 #   run.sh layout    half a minute of frames, then layout.sweep.json: the node layout (2, 4, 8 children)
+#   run.sh animated  animated.sweep.json (the refit's cost) and --stats of each animated file (Embree's build)
 # Every file lands in $OUT/STEP.tgz.
 set -u
 D=docs/bench/nvidia-h100/shadow-rays
@@ -41,10 +42,16 @@ layout)
   timeout 30 $M bench --scene atrium --lights 65536 --size 2560x1440 --light-radius overlap:32 --method visibility \
     --warmup 5 --timed-frames 600 --backend egl --out /tmp/warm --name warm > $OUT/warm.log 2>&1
   timeout 500 $M bench --sweep $D/layout.sweep.json --backend egl --out $OUT --name layout > $OUT/layout.log 2>&1 ;;
+animated)
+  timeout 200 $M bench --sweep $D/animated.sweep.json --backend egl --out $OUT --name animated > $OUT/animated.log 2>&1
+  for file in .gpushared/corpus/khronos/CesiumMan/glTF/CesiumMan.gltf .gpushared/corpus/amd/gas_station/GasStation.gltf; do
+    timeout 60 $M render --scene $file --shadows rays --size 2560x1440 --lights 65536 --light-radius overlap:32 --method visibility \
+      --backend egl --stats --time --out $OUT/$(basename $file .gltf).png > $OUT/$(basename $file .gltf).log 2>&1
+  done ;;
 accuracy)
   timeout 300 $M bench --sweep $D/accuracy.sweep.json --backend egl --out $OUT --name accuracy > $OUT/accuracy.log 2>&1 ;;
 *)
-  echo "run.sh: unknown step '$STEP' (repro, bench, accuracy, bounds, layout)" >&2
+  echo "run.sh: unknown step '$STEP' (repro, bench, accuracy, bounds, layout, animated)" >&2
   exit 2 ;;
 esac
 pack
