@@ -1,20 +1,31 @@
 #!/usr/bin/python3
-"""A reference that is not naive (issue 61): simple scenes generated here (rectangles, boxes,
-spheres; point, spot and directional lights; a few metallic-roughness materials) are written as
-glTF files, rendered by `manylights render` at 1280x720 in every method with the file's own camera
-and lights at animation frame 0, and compared with an independent CPU rendering of the same
-analytic scene (cpu_reference.py: a ray cast per pixel centre, glTF's BRDF from its appendix B).
+"""A reference that is not naive (issues 61 and 62): simple scenes generated here (rectangles,
+boxes, spheres; point, spot and directional lights; a few metallic-roughness materials) are written
+as glTF files, rendered by `manylights render` at 1280x720 in every method with the file's own
+camera and lights at animation frame 0, with `--shadows off` and with `--shadows rays`, and
+compared with an independent CPU rendering of the same analytic scene (cpu_reference.py: a ray
+cast per pixel centre, glTF's BRDF from its appendix B, and with shadows an analytic shadow ray
+per pixel and light against the exact shapes).
 
 Each method must hold the accuracy contract against the CPU frame on the 8-bit output at
 --exposure 0: at most 1/255 off on at least 99.99 % of the compared pixels. Pixels whose coverage
 the rasterizer and the tessellation decide (any pixel whose 3x3 neighbourhood in the CPU frame
 holds another surface, another face of a box, or the background: edges, contacts, sphere
-silhouettes) are left out and counted. Where a scene names points that must be lit (issue 61's
-quad, a box's top face under a light), each such pixel must be well above its ambient value in
-the rendered frame, so a dark surface cannot pass by being dark everywhere.
+silhouettes) are left out and counted. Shadow edges are not left out: where a shadow's edge
+crosses the pixel grid (a pixel whose 3x3 neighbourhood in the CPU frame holds both a point that a
+light reaches and one that a surface hides from it) a ray that grazes the edge may decide either
+way (the renderer's spheres are tessellated and its rays leave the surface from an offset origin),
+but so few do that they fit in the contract's 0.01 %; those pixels are counted, with how many of
+them are over 1/255, so a failure there shows as such. Where a scene names points that must
+be lit (issue 61's quad, a box's top face under a light), each such pixel must be well above its
+ambient value in the rendered frame, so a dark surface cannot pass by being dark everywhere. Where
+it names floor points in a shadow (behind a box, a sphere), each must render darker than half-way
+between the CPU's shadowed and unshadowed values with shadows on, and lighter with them off, so the
+shadowed comparison cannot pass by the scene having no shadow.
 
-One line per scene and method: max error in 1/255, share of compared pixels over 1/255, PSNR of
-the 8-bit output over the compared pixels, and the pixels left out. On failure the CPU frame, the
+One line per scene, method and shadow setting: max error in 1/255, share of compared pixels over
+1/255 (with shadows, how many of them lie on a shadow edge), PSNR of the 8-bit output over the
+compared pixels, the pixels left out and the shadow-edge pixels. On failure the CPU frame, the
 rendered frame and a diff go to <work>/failures/ as PNGs, and the exit status is 1.
 
   check_cpu_reference.py --manylights build-test/manylights --work /tmp/cpu_reference
@@ -27,6 +38,7 @@ import subprocess
 import sys
 import time
 import zlib
+from typing import NamedTuple
 
 import numpy as np
 
@@ -37,6 +49,7 @@ from cpu_reference import Camera, Light, Material, Rect, Scene, Sphere  # noqa: 
 
 WIDTH, HEIGHT = 1280, 720
 METHODS = ["naive", "forward-plus", "deferred", "visibility"]
+SHADOWS = ["off", "rays"]
 MAX_ABS_8BIT = 1                  # tests/gpu/gpu_test.h, kMaxAbs8Bit: the accuracy contract
 MAX_SHARE_OVER = 1e-4             # at most 0.01 % of the compared pixels more than 1/255 off
 LIT_MARGIN_8BIT = 64              # a lit check point: at least this far above its ambient value
@@ -120,17 +133,32 @@ def grid_of_lights():
                  lights=lights)
 
 
+class Case(NamedTuple):
+    scene: Scene
+    unused: dict        # surface index -> vertices no index uses, before the surface's own
+    lit: list           # world points that must render lit
+    shadowed: tuple = ()  # floor points a surface hides from a light: dark with shadows on, lit off
+
+
+def box_shadow(height):
+    """The floor point in front of the box (+z) half-way across its shadow under a light at
+    (0, height, 0): the shadow ends where the ray over the top edge (x or z = 1, y = 2) lands."""
+    return ((0.0, 0.0, 0.5 * (1.0 + height / (height - 2.0))),)
+
+
 def cases():
-    """(scene, unused vertices before a surface's own, world points that must render lit)."""
     top = [(0.0, 2.0, 0.0)]
     return [
-        (repro_quad("quad"), {}, top),
-        (repro_quad("quad_after_unused_vertices"), {0: UNUSED_FLOOR}, top),
-        (box_under_light(3, Material(base=(0.85, 0.45, 0.25), roughness=0.5)), {}, top),
-        (box_under_light(4, Material(base=(0.9, 0.9, 0.9), roughness=0.35)), {}, top),
-        (box_under_light(5, Material(base=(0.3, 0.75, 0.35), roughness=0.7)), {}, top),
-        (spheres_spot_sun(), {}, []),
-        (grid_of_lights(), {}, []),
+        Case(repro_quad("quad"), {}, top),
+        Case(repro_quad("quad_after_unused_vertices"), {0: UNUSED_FLOOR}, top),
+        Case(box_under_light(3, Material(base=(0.85, 0.45, 0.25), roughness=0.5)), {}, top, box_shadow(3)),
+        Case(box_under_light(4, Material(base=(0.9, 0.9, 0.9), roughness=0.35)), {}, top, box_shadow(4)),
+        Case(box_under_light(5, Material(base=(0.3, 0.75, 0.35), roughness=0.7)), {}, top, box_shadow(5)),
+        # Beside the red and the white sphere's feet, away from the camera: hidden from every light.
+        Case(spheres_spot_sun(), {}, [], ((-2.05, 0.0, 0.09), (2.02, 0.0, -0.1))),
+        # Beside the middle right box and behind the near left sphere, at least 3 pixels from every
+        # coverage and shadow edge (under 26 lights most of the floor near a shadow is near one).
+        Case(grid_of_lights(), {}, [], ((2.32, 0.0, 0.2), (-3.0, 0.0, 3.4))),
     ]
 
 
@@ -163,19 +191,31 @@ def write_png(path, rgb):
                 chunk(b"IDAT", zlib.compress(raw, 6)) + chunk(b"IEND", b""))
 
 
+def neighbourhood(a):
+    """The nine shifted copies of a (H, W) array that put each pixel's 3x3 neighbours on it (the
+    border repeated)."""
+    padded = np.pad(a, 1, mode="edge")
+    return [padded[1 + dy:1 + dy + a.shape[0], 1 + dx:1 + dx + a.shape[1]] for dy in (-1, 0, 1) for dx in (-1, 0, 1)]
+
+
 def coverage_edges(ids):
     """Pixels whose 3x3 neighbourhood holds another surface id (or the background)."""
-    padded = np.pad(ids, 1, mode="edge")
-    edge = np.zeros(ids.shape, dtype=bool)
-    for dy in (-1, 0, 1):
-        for dx in (-1, 0, 1):
-            edge |= padded[1 + dy:1 + dy + ids.shape[0], 1 + dx:1 + dx + ids.shape[1]] != ids
+    return np.logical_or.reduce([n != ids for n in neighbourhood(ids)])
+
+
+def shadow_edges(frame):
+    """Pixels whose 3x3 neighbourhood holds, for some light, a point the light reaches and a point
+    a surface hides from it: where a shadow's edge crosses the pixel grid."""
+    edge = np.zeros(frame.ids.shape, dtype=bool)
+    for reached, hidden in zip(frame.reached, frame.hidden):
+        if hidden.any():
+            edge |= np.logical_or.reduce(neighbourhood(reached)) & np.logical_or.reduce(neighbourhood(hidden))
     return edge
 
 
-def render(manylights, gltf, method, work):
-    stem = os.path.join(work, f"{os.path.splitext(os.path.basename(gltf))[0]}_{method}")
-    cmd = [manylights, "render", "--scene", gltf, "--method", method, "--size", f"{WIDTH}x{HEIGHT}",
+def render(manylights, gltf, method, shadows, work):
+    stem = os.path.join(work, f"{os.path.splitext(os.path.basename(gltf))[0]}_{method}_shadows_{shadows}")
+    cmd = [manylights, "render", "--scene", gltf, "--method", method, "--shadows", shadows, "--size", f"{WIDTH}x{HEIGHT}",
            "--exposure", "0", "--lights", "0", "--out", stem + ".png", "--out-float", stem + ".pfm"]
     result = subprocess.run(cmd, capture_output=True, text=True)
     if result.returncode != 0:
@@ -195,10 +235,10 @@ def compare(expected8, got8, excluded):
             "diff": diff, "compared": count}
 
 
-def write_failure_images(work, name, method, expected8, got8, diff, excluded):
+def write_failure_images(work, name, expected8, got8, diff, excluded):
     out = os.path.join(work, "failures")
     os.makedirs(out, exist_ok=True)
-    stem = os.path.join(out, f"{name}_{method}")
+    stem = os.path.join(out, name)
     write_png(stem + "_cpu.png", expected8)
     write_png(stem + "_rendered.png", got8)
     # The diff: |error| x 32 in grey, pixels over the contract in red, pixels left out in dark blue.
@@ -209,11 +249,64 @@ def write_failure_images(work, name, method, expected8, got8, diff, excluded):
     return stem + "_{cpu,rendered,diff}.png"
 
 
+class Probe(NamedTuple):
+    """A world point whose pixel a frame must show lit or shadowed, and the 8-bit values it is held to."""
+    point: tuple
+    x: int
+    y: int
+    low: int            # lit: the ambient value; shadowed: the CPU's value with shadows on
+    high: int = 0       # shadowed: the CPU's value with shadows off
+
+
+def probes(scene, points, low8, high8=None):
+    out = []
+    for point in points:
+        x, y = ref.project(scene.camera, point, WIDTH, HEIGHT)
+        out.append(Probe(point, x, y, int(low8[y, x].max()), int(high8[y, x].max()) if high8 is not None else 0))
+    return out
+
+
+def check_cpu_frames(case, expected8, ambient8, edges):
+    """The scene's own claims, on the CPU frames: its lit points are lit, and its shadowed points
+    lie in a shadow (well darker with shadows on), away from every coverage and shadow edge (`edges`)."""
+    failures = []
+    for shadows, frame8 in expected8.items():
+        for p in probes(case.scene, case.lit, ambient8):
+            if not frame8[p.y, p.x].max() >= p.low + LIT_MARGIN_8BIT:
+                failures.append(f"{case.scene.name}: the CPU reference (shadows {shadows}) is not lit at {p.point} "
+                                f"(pixel {p.x},{p.y})")
+    for p in probes(case.scene, case.shadowed, expected8["rays"], expected8["off"]):
+        if edges[p.y, p.x] or p.high < p.low + LIT_MARGIN_8BIT:
+            failures.append(f"{case.scene.name}: the CPU reference has no clear shadow at {p.point} (pixel {p.x},{p.y}: "
+                            f"{p.low}/255 with shadows, {p.high}/255 without{', on an edge' if edges[p.y, p.x] else ''})")
+    return failures
+
+
+def check_probes(label, got8, lit, shadowed, shadows):
+    """Notes for the line and failures: a lit point well above its ambient value; a shadowed point on
+    the CPU's shadowed side of half-way between its two values with shadows on, on the other side off."""
+    notes, failures = [], []
+    for p in lit:
+        value = int(got8[p.y, p.x].max())
+        notes.append(f"lit at {p.point}: {value}/255 (ambient {p.low})")
+        if value < p.low + LIT_MARGIN_8BIT:
+            failures.append(f"{label}: pixel ({p.x},{p.y}) at {p.point} is {value}/255, not lit (ambient alone {p.low}/255)")
+    for p in shadowed:
+        value, half = int(got8[p.y, p.x].max()), 0.5 * (p.low + p.high)
+        notes.append(f"shadow at {p.point}: {value}/255 (cpu {p.low} with, {p.high} without)")
+        if (value < half) != (shadows == "rays"):
+            failures.append(f"{label}: pixel ({p.x},{p.y}) at {p.point} is {value}/255, "
+                            f"{'not in shadow' if shadows == 'rays' else 'shadowed'} (the CPU frame: {p.low}/255 with "
+                            f"shadows, {p.high}/255 without)")
+    return notes, failures
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--manylights", required=True)
     parser.add_argument("--work", default=os.path.join(os.environ.get("ML_TEST_TMP", "."), "cpu_reference"))
     parser.add_argument("--methods", default=",".join(METHODS))
+    parser.add_argument("--shadows", default=",".join(SHADOWS), help="comma-separated --shadows settings to render")
     parser.add_argument("--scenes", default="", help="comma-separated scene names (default: all)")
     args = parser.parse_args()
     os.makedirs(args.work, exist_ok=True)
@@ -221,51 +314,49 @@ def main():
     chosen = set(filter(None, args.scenes.split(",")))
     failures = []
     start = time.monotonic()
-    for scene, unused, lit_points in cases():
+    for case in cases():
+        scene = case.scene
         if chosen and scene.name not in chosen:
             continue
         gltf = os.path.join(args.work, scene.name + ".gltf")
-        analytic_gltf.write_gltf(scene, gltf, unused_before=unused)
-        cpu, ids = ref.shade(scene, WIDTH, HEIGHT)
-        ambient_only, _ = ref.shade(Scene(scene.name, scene.camera, scene.rects, scene.spheres, []), WIDTH, HEIGHT)
-        expected8 = ref.tonemap_8bit(cpu)
-        ambient8 = ref.tonemap_8bit(ambient_only)
-        excluded = coverage_edges(ids)   # a box's faces are rectangles of their own, so its edges count
-        pixels = [ref.project(scene.camera, p, WIDTH, HEIGHT) for p in lit_points]
-        for px, point in zip(pixels, lit_points):
-            x, y = px
-            if not expected8[y, x].max() >= ambient8[y, x].max() + LIT_MARGIN_8BIT:
-                failures.append(f"{scene.name}: the CPU reference itself is not lit at {point} (pixel {x},{y})")
-        for method in methods:
-            try:
-                got = render(args.manylights, gltf, method, args.work)
-            except (RuntimeError, OSError, ValueError) as e:
-                print(f"{scene.name:28s} {method:13s} FAIL: {e}", flush=True)
-                failures.append(f"{scene.name} {method}: {e}")
-                continue
-            got8 = ref.tonemap_8bit(got)
-            r = compare(expected8, got8, excluded)
-            holds = r["share"] <= MAX_SHARE_OVER
-            lit_notes = []
-            for (x, y), point in zip(pixels, lit_points):
-                value, floor8 = int(got8[y, x].max()), int(ambient8[y, x].max())
-                lit_notes.append(f"lit at {point}: {value}/255 (ambient {floor8}, cpu {int(expected8[y, x].max())})")
-                if value < floor8 + LIT_MARGIN_8BIT:
-                    holds = False
-                    failures.append(f"{scene.name} {method}: pixel ({x},{y}) at {point} is {value}/255, "
-                                    f"not lit (ambient alone {floor8}/255, the CPU frame {int(expected8[y, x].max())}/255)")
-            print(f"{scene.name:28s} {method:13s} max {r['max']:3d}/255  over 1/255 {100.0 * r['share']:.4f} % "
-                  f"({r['over']} px)  PSNR {r['psnr']:6.1f} dB  excluded {int(excluded.sum())} px"
-                  + (f"  {'; '.join(lit_notes)}" if lit_notes else "") + ("" if holds else "  FAIL"), flush=True)
-            if r["share"] > MAX_SHARE_OVER:
-                worst = np.unravel_index(np.argmax(np.where(excluded, -1, r["diff"])), r["diff"].shape)
-                wy, wx = int(worst[0]), int(worst[1])
-                failures.append(f"{scene.name} {method}: {100.0 * r['share']:.4f} % of {r['compared']} compared pixels "
-                                f"over 1/255 (max {r['max']}/255; worst at pixel ({wx},{wy}): expected "
-                                f"{expected8[wy, wx].tolist()}, got {got8[wy, wx].tolist()})")
-            if not holds:
-                where = write_failure_images(args.work, scene.name, method, expected8, got8, r["diff"], excluded)
-                failures.append(f"  images: {where}")
+        analytic_gltf.write_gltf(scene, gltf, unused_before=case.unused)
+        frames = {shadows: ref.shade(scene, WIDTH, HEIGHT, shadows=shadows == "rays") for shadows in SHADOWS}
+        expected8 = {shadows: ref.tonemap_8bit(frame.hdr) for shadows, frame in frames.items()}
+        ambient8 = ref.tonemap_8bit(ref.shade(Scene(scene.name, scene.camera, scene.rects, scene.spheres, []),
+                                              WIDTH, HEIGHT).hdr)
+        excluded = coverage_edges(frames["off"].ids)   # a box's faces are rectangles of their own, so its edges count
+        edges = shadow_edges(frames["rays"]) & ~excluded
+        failures += check_cpu_frames(case, expected8, ambient8, excluded | edges)
+        lit = probes(scene, case.lit, ambient8)
+        shadowed = probes(scene, case.shadowed, expected8["rays"], expected8["off"])
+        for shadows in args.shadows.split(","):
+            for method in methods:
+                label = f"{scene.name} {method} shadows {shadows}"
+                try:
+                    got8 = ref.tonemap_8bit(render(args.manylights, gltf, method, shadows, args.work))
+                except (RuntimeError, OSError, ValueError) as e:
+                    print(f"{scene.name:28s} {method:13s} {shadows:4s} FAIL: {e}", flush=True)
+                    failures.append(f"{label}: {e}")
+                    continue
+                r = compare(expected8[shadows], got8, excluded)
+                notes, probe_failures = check_probes(label, got8, lit, shadowed, shadows)
+                holds = r["share"] <= MAX_SHARE_OVER and not probe_failures
+                on_edges = f", {int((r['diff'][edges] > MAX_ABS_8BIT).sum())} on shadow edges" if shadows == "rays" else ""
+                print(f"{scene.name:28s} {method:13s} {shadows:4s} max {r['max']:3d}/255  over 1/255 "
+                      f"{100.0 * r['share']:.4f} % ({r['over']} px{on_edges})  PSNR {r['psnr']:6.1f} dB  "
+                      f"excluded {int(excluded.sum())} px" + (f", shadow edges {int(edges.sum())} px" if shadows == "rays" else "")
+                      + (f"  {'; '.join(notes)}" if notes else "") + ("" if holds else "  FAIL"), flush=True)
+                failures += probe_failures
+                if r["share"] > MAX_SHARE_OVER:
+                    worst = np.unravel_index(np.argmax(np.where(excluded, -1, r["diff"])), r["diff"].shape)
+                    wy, wx = int(worst[0]), int(worst[1])
+                    failures.append(f"{label}: {100.0 * r['share']:.4f} % of {r['compared']} compared pixels over "
+                                    f"1/255 (max {r['max']}/255; worst at pixel ({wx},{wy}): expected "
+                                    f"{expected8[shadows][wy, wx].tolist()}, got {got8[wy, wx].tolist()})")
+                if not holds:
+                    where = write_failure_images(args.work, label.replace(" ", "_"), expected8[shadows], got8,
+                                                 r["diff"], excluded)
+                    failures.append(f"  images: {where}")
     print(f"{time.monotonic() - start:.0f} s")
     if failures:
         print("FAILED:\n" + "\n".join(failures))

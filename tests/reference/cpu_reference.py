@@ -17,7 +17,14 @@ marked "Renderer convention" below:
 - the camera: the frame's own aspect ratio (width / height), not the file's aspectRatio, and a
   pixel's ray through its centre (OpenGL's rasterization rule);
 - the 8-bit output: exposure 2^EV, Reinhard per channel, the sRGB transfer function, rounded
-  (renderer/reference/tonemap_reference.h, docs/lights-and-shading.md "Exposure").
+  (renderer/reference/tonemap_reference.h, docs/lights-and-shading.md "Exposure");
+- shadows (`--shadows rays`, issue 62): a light counts at a point only where nothing lies strictly
+  between them, on the segment to a point or spot light's position, or on a ray towards a
+  directional light longer than the scene; every surface casts from both sides (the renderer's
+  rays are two-sided, while its rasterization culls back faces). glTF has no shadows; the rays are
+  the renderer's feature, so this frame is what they must give on the exact shapes. A rectangle or
+  sphere never hides a light from a point on itself where it faces the light, so a point's own
+  surface is not tested (the renderer moves its ray's origin off the surface instead).
 
 Everything is numpy, vectorised over the pixels, in float64.
 """
@@ -205,6 +212,40 @@ def dot(a, b):
     return np.sum(a * b, axis=-1)
 
 
+SUN_RAY_LENGTH = 1.0e4    # towards a directional light: far past every generated scene's surfaces
+
+
+def segments_blocked(scene, origins, ends, own):
+    """Whether any surface but the point's own (`own`: surface ids, (N,)) crosses each segment from
+    origins to ends (N, 3) strictly between its two ends. Rectangles are hit from either side."""
+    d = ends - origins
+    blocked = np.zeros(len(origins), dtype=bool)
+    for sid, s in enumerate(scene.surfaces()):
+        test = (own != sid) & ~blocked
+        if not test.any():
+            continue
+        o, dd = origins[test], d[test]
+        if isinstance(s, Rect):
+            n = s.normal
+            c, t1, t2 = (np.asarray(v, float) for v in (s.centre, s.t1, s.t2))
+            denom = dd @ n
+            with np.errstate(divide="ignore", invalid="ignore"):
+                t = (c - o) @ n / denom
+            q = o + np.where(np.isfinite(t), t, 0.0)[:, None] * dd - c
+            hit = (np.isfinite(t) & (t > 0.0) & (t < 1.0) & (np.abs(q @ t1) <= np.dot(t1, t1)) &
+                   (np.abs(q @ t2) <= np.dot(t2, t2)))
+        else:
+            oc = o - np.asarray(s.centre, float)
+            a = dot(dd, dd)
+            b = dot(dd, oc)
+            disc = b * b - a * (dot(oc, oc) - s.radius * s.radius)
+            root = np.sqrt(np.maximum(disc, 0.0))
+            near, far = (-b - root) / a, (-b + root) / a
+            hit = (disc >= 0.0) & (((near > 0.0) & (near < 1.0)) | ((far > 0.0) & (far < 1.0)))
+        blocked[np.flatnonzero(test)[hit]] = True
+    return blocked
+
+
 def ggx_brdf_times_cos(n, v, l, base, metallic, roughness):
     """glTF 2.0 appendix B for unit vectors n, v, l (N, 3) and per-pixel material arrays: the BRDF
     times N.L, with N.L <= 0 giving zero. Returns (N, 3).
@@ -245,9 +286,19 @@ def unbounded_radius(color):
     return math.sqrt(255.0 * max(color))
 
 
-def shade(scene, width, height):
-    """The linear HDR frame (H, W, 3), rows top first, and the surface id of every pixel (-1:
-    background, which is black)."""
+@dataclass
+class Frame:
+    """A CPU frame: the linear HDR image (H, W, 3), rows top first; the surface id of every pixel
+    (-1: background, which is black); and two masks (H, W) for each light: where it adds light
+    (`reached`), and where it would but a surface stands in its way (`hidden`, with shadows only)."""
+    hdr: np.ndarray
+    ids: np.ndarray
+    reached: list
+    hidden: list
+
+
+def shade(scene, width, height, shadows=False):
+    """The scene's Frame, with a shadow ray per (pixel, light) that adds light when `shadows`."""
     origin, dirs = primary_rays(scene.camera, width, height)
     _, ids, points, normals = cast(scene, origin, dirs)
     surfaces = scene.surfaces()
@@ -264,12 +315,15 @@ def shade(scene, width, height):
     f0 = 0.04 * (1.0 - metallic)[:, None] + base * metallic[:, None]
     radiance = scene.ambient * (diffuse + f0)
 
+    reached, hidden = [], []
     for light in scene.lights:
         c = np.asarray(light.color, float) * light.intensity      # KHR_lights_punctual: color x intensity
         if light.type == "directional":
             l = np.broadcast_to(-normalize(light.direction), p.shape)
             weight = np.ones(len(p))
+            target = p + SUN_RAY_LENGTH * l
         else:
+            target = np.broadcast_to(np.asarray(light.position, float), p.shape)
             to_light = np.asarray(light.position, float) - p
             d2 = dot(to_light, to_light)
             l = to_light / np.sqrt(d2)[:, None]
@@ -283,11 +337,20 @@ def shade(scene, width, height):
                 scale = 1.0 / max(cos_inner - cos_outer, 1e-3)
                 t = np.clip((cos_theta - cos_outer) * scale, 0.0, 1.0)
                 weight = weight * t * t
-        radiance = radiance + c * weight[:, None] * ggx_brdf_times_cos(n, v, l, base, metallic, roughness)
+        added = c * weight[:, None] * ggx_brdf_times_cos(n, v, l, base, metallic, roughness)
+        adds = np.any(added != 0.0, axis=-1)
+        blocked = np.zeros(len(p), dtype=bool)
+        if shadows:
+            blocked[adds] = segments_blocked(scene, p[adds], target[adds], sid[adds])
+        radiance = radiance + np.where(blocked[:, None], 0.0, added)
+        reached.append(np.zeros((height, width), dtype=bool))
+        reached[-1][lit] = adds & ~blocked
+        hidden.append(np.zeros((height, width), dtype=bool))
+        hidden[-1][lit] = blocked
 
     frame = np.zeros((height, width, 3))
     frame[lit] = radiance
-    return frame, ids
+    return Frame(frame, ids, reached, hidden)
 
 
 def tonemap_8bit(hdr, exposure_ev=0.0):
