@@ -43,7 +43,7 @@ MethodSettings FrameRenderer::forFrame(MethodSettings method) const {
     method.clustering.spotLights = lights_.hasSpots();
     const ShadowRays* shadows = activeShadowRays();
     method.clustering.shading = ShadingSwitches{settings_.lightModel.brdf, settings_.specular, settings_.lightModel.falloff, shadows != nullptr,
-                                                countingShadowRays_ && shadows != nullptr, shadows ? shadows->width() : 2u};
+                                                countingShadowRays_ && shadows != nullptr, shadows ? shadows->width() : kDefaultShadowBvhWidth};
     return method;
 }
 

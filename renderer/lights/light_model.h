@@ -11,6 +11,7 @@
 
 #include "glsl/include/bindings.h"
 #include "renderer/lights/light_set.h"
+#include "renderer/raytracing/shadow_bvh_layout.h"
 
 namespace ml {
 
@@ -57,7 +58,7 @@ struct ShadingSwitches {
     Falloff falloff = Falloff::Smooth;
     bool shadowRays = false;  // --shadows rays, where something casts a shadow
     bool countShadowRays = false;  // and every ray counted (ML_COUNT_SHADOW_RAYS; FrameRenderer::countShadowRays)
-    std::uint32_t shadowBvhWidth = 2;  // the BVH's children a node (ML_SHADOW_BVH_WIDTH; shadow_bvh.h)
+    std::uint32_t shadowBvhWidth = kDefaultShadowBvhWidth;  // the BVH's children a node (ML_SHADOW_BVH_WIDTH; shadow_bvh.h)
     bool operator==(const ShadingSwitches&) const = default;
 };
 
