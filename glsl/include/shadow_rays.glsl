@@ -15,7 +15,7 @@
 #define ML_COUNT_SHADOW_RAYS 0
 #endif
 #ifndef ML_SHADOW_BVH_WIDTH
-#define ML_SHADOW_BVH_WIDTH 4
+#define ML_SHADOW_BVH_WIDTH 2
 #endif
 #if ML_COUNT_SHADOW_RAYS
 #define ML_SHADOW_BVH_ACCESS coherent
@@ -99,10 +99,17 @@ bool shadowTriangleHit(uint triangle, vec3 origin, vec3 direction) {
     return material == ML_SHADOW_OPAQUE || shadowAlphaCovers(material, floatBitsToUint(c.w), u, v);
 }
 
-// Whether anything blocks the segment from `origin` to origin + direction.
+// Whether a coordinate is infinite or NaN, by its bits (a compiler may take x != x as false).
+bool shadowNotFinite(vec3 v) { return any(equal(floatBitsToUint(v) & 0x7F800000u, uvec3(0x7F800000u))); }
+
+// Whether anything blocks the segment from `origin` to origin + direction. A ray that is not
+// finite is not traced: a NaN meets every box in min and max that drop NaN operands, so it
+// would walk the whole tree (helper invocations beside a silhouette make such rays from
+// extrapolated surfaces; on llvmpipe the walk then ran past the shader's loop limit and ended
+// the pixels' light loops with it).
 bool shadowRayBlocked(vec3 origin, vec3 direction) {
     uint nodes = u_shadows.y;
-    if (nodes == 0u) return false;
+    if (nodes == 0u || shadowNotFinite(origin) || shadowNotFinite(direction)) return false;
 #if ML_COUNT_SHADOW_RAYS
     if (atomicAdd(shadowRaysTraced, 1u) == 0xFFFFFFFFu) atomicAdd(shadowRayWraps, 1u);
 #endif

@@ -78,9 +78,9 @@ inline constexpr std::uint32_t kShadowLeafCountLimit = 8;
 inline constexpr std::uint32_t kShadowTriangleLimit = 1u << 28;
 static_assert(kShadowLeafBit == 0x80000000u && kShadowOpaque == 0xFFFFFFFFu);
 
-// --shadow-bvh-width's default (docs/lights-and-shading.md says why: half the binary tree's node
-// visits a ray, and the binary walk loses lights on llvmpipe's fragment path).
-inline constexpr std::uint32_t kDefaultShadowBvhWidth = 4;
+// --shadow-bvh-width's default: binary, the layout the H100 record has timed, until it has timed
+// the wide ones (docs/lights-and-shading.md).
+inline constexpr std::uint32_t kDefaultShadowBvhWidth = 2;
 // The widths the layout has (--shadow-bvh-width), and a node's size in vec4s at each.
 constexpr bool shadowBvhWidthSupported(std::uint32_t width) { return width == 2 || width == 4 || width == 8; }
 constexpr std::uint32_t shadowNodeVec4s(std::uint32_t width) {

@@ -65,7 +65,8 @@ bool shadowTriangleHit(const GpuBvhTriangle& triangle, glm::vec3 origin, glm::ve
 bool occludedByBvh(const ShadowBvh& bvh, glm::vec3 origin, glm::vec3 direction, float tMax, const ShadowCoverage& covered,
                    ShadowTraversalCounts* counts) {
     const std::size_t nodes = bvh.nodeCount();
-    if (nodes == 0) return false;
+    const auto finite = [](glm::vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); };
+    if (nodes == 0 || !finite(origin) || !finite(direction) || !std::isfinite(tMax)) return false;
     ShadowTraversalCounts ignored;
     ShadowTraversalCounts& work = counts ? *counts : ignored;
     ++work.rays;

@@ -35,6 +35,8 @@
 //             slots are skipped. At most width * nodes + 1 pops (each reference once).
 //             The GLSL skips a push onto a full stack; here it throws std::logic_error, and
 //             the build's depth bound (shadow_bvh.h) keeps it from happening.
+//   finite    a ray whose origin or direction is infinite or NaN is not traced (unblocked): a
+//             NaN meets every box where min and max drop NaN operands, as GPUs' do.
 //   MASK      a triangle whose material word is not ML_SHADOW_OPAQUE blocks where `covered`
 //             says so for its material, its scene triangle and the hit's (u, v) (the GPU samples
 //             the base colour's alpha there); with no `covered`, it blocks as an opaque one.

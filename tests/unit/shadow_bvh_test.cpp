@@ -442,6 +442,21 @@ Scene builtin(const std::string& name, float detail = 1.0f) {
     return loadScene(SceneRequest{name, detail}, warnings);
 }
 
+// A ray that is not finite (a NaN from a helper invocation's extrapolated surface) is not traced:
+// NaN operands dropped by min and max would meet every box and walk the whole tree.
+TEST(ShadowBvh, ARayThatIsNotFiniteIsNotTraced) {
+    const Scene scene = builtin("boxes");
+    const ShadowBvh bvh = buildShadowBvh(scene);
+    const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
+    for (const auto& [origin, direction] : {std::pair{glm::vec3(nan, 0.5f, 0.5f), glm::vec3(0, 1, 0)},
+                                            std::pair{glm::vec3(0.5f), glm::vec3(0, nan, 0)},
+                                            std::pair{glm::vec3(0.5f), glm::vec3(inf, 1, 0)}}) {
+        ShadowTraversalCounts c;
+        EXPECT_FALSE(occludedByBvh(bvh, origin, direction, 1.0f, {}, &c));
+        EXPECT_EQ(c.nodes, 0u);
+    }
+}
+
 TEST(ShadowBvh, LayoutHoldsEveryCastingTriangleOnceInsideItsBoxes) {
     for (const auto& [name, detail] : {std::pair<std::string, float>{"boxes", 1.0f}, {"atrium", 0.25f}, {"plane", 1.0f}}) {
         const Scene scene = builtin(name, detail);
