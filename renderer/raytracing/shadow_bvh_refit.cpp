@@ -1,6 +1,7 @@
 #include "renderer/raytracing/shadow_bvh_refit.h"
 
 #include <algorithm>
+#include <stdexcept>
 #include <string>
 
 #include "glsl/include/bindings.h"
@@ -29,6 +30,12 @@ ShadowBvhRefit::ShadowBvhRefit(const Scene& scene, const ShadowBvh& bvh, std::ui
       triangles_(static_cast<std::uint32_t>(bvh.triangles.size())),
       nodes_(static_cast<std::uint32_t>(bvh.nodeCount())),
       firstTriangle_(firstTriangle) {
+    // One invocation a triangle along x: past the device's workgroups along x, say so rather than
+    // leave the rest at the loaded pose.
+    if (gl::groupsFor(triangles_, ML_SHADOW_REFIT_WORKGROUP) > gl::maxWorkGroupsX())
+        throw std::invalid_argument(scene.name + ": " + std::to_string(triangles_) +
+                                    " animated casting triangles, more than the shadow refit's one dispatch holds on this GPU; "
+                                    "--animation off draws and shadows the file at rest");
     std::vector<glm::uvec4> corners(bvh.triangles.size());
     for (std::size_t t = 0; t < bvh.triangles.size(); ++t) {
         const std::uint32_t s = glm::floatBitsToUint(bvh.triangles[t].v1.w);

@@ -22,7 +22,8 @@ class SceneGpu;
 class ShadowBvhRefit {
 public:
     // `bvh` as built from `scene` (its triangles name their scene triangles), `firstTriangle` the
-    // vec4 where its triangles start in the GPU buffer (ShadowRays::uniforms().x).
+    // vec4 where its triangles start in the GPU buffer (ShadowRays::uniforms().x). More triangles
+    // than one dispatch along x covers throws std::invalid_argument in one line naming the scene.
     ShadowBvhRefit(const Scene& scene, const ShadowBvh& bvh, std::uint32_t firstTriangle);
 
     // Refits `bvhBuffer` (shadow_rays.h's buffer) to the vertices `scene` holds now.
