@@ -158,7 +158,14 @@ void addFrameOptions(CLI::App& cmd, FrameOptions& o) {
     cmd.add_option("--specular", o.specular, "on: the BRDF's specular term; off: Lambert only (every method and the reference alike)")->capture_default_str();
     cmd.add_option("--brdf", o.brdf, "ggx (glTF's metallic-roughness BRDF, appendix B) or blinn-phong (the seeds' normalized Blinn-Phong, no 1/pi)")->capture_default_str();
     cmd.add_option("--shadows", o.shadows, "off: lights pass through everything; rays: an exact shadow ray for every point and light "
-                   "that adds light, in every method (naive traces the same rays; BLEND surfaces cast none)")->capture_default_str();
+                   "that adds light, in every method (naive traces the same rays; BLEND surfaces cast none); sampled: deferred's "
+                   "compute lighting and the visibility buffer sum every light unshadowed and trace a few rays a pixel to lights "
+                   "drawn by their light, the visibility ratio reused and filtered (the other methods and glass trace the exact rays)")->capture_default_str();
+    cmd.add_option("--shadow-rays-per-pixel", o.shadowRaysPerPixel, "--shadows sampled: rays a pixel, 1, 2 or 4")->capture_default_str();
+    cmd.add_option("--shadow-reuse", o.shadowReuse, "--shadows sampled: temporal (each pixel's ratio averaged with its past frames', "
+                   "reprojected, where the same surface was there) or none")->capture_default_str();
+    cmd.add_option("--shadow-denoise", o.shadowDenoise, "--shadows sampled: on (the ratio filtered over the pixel's neighbours on its "
+                   "surface) or off (the raw estimate: unbiased, noisy)")->capture_default_str();
     cmd.add_option("--shadow-bvh-width", o.shadowBvhWidth, "--shadows rays: the BVH's children a node, 2, 4 or 8 (the same answer; "
                    "the default measured fastest on the H100, docs/lights-and-shading.md)")->capture_default_str();
     cmd.add_option("--light-sum", o.lightSum, "how a point adds up its lights, in every method: float (lists sorted by light index, "
@@ -306,6 +313,11 @@ PreparedFrame prepareFrame(const FrameOptions& o, const Scene* loaded) {
     if (o.shadowBvhWidth < 0 || !shadowBvhWidthSupported(static_cast<std::uint32_t>(o.shadowBvhWidth)))
         throw std::invalid_argument("--shadow-bvh-width " + std::to_string(o.shadowBvhWidth) + ": must be 2, 4 or 8");
     f.settings.shadowBvhWidth = static_cast<std::uint32_t>(o.shadowBvhWidth);
+    f.settings.sampledShadows.raysPerPixel = checkShadowRaysPerPixel(o.shadowRaysPerPixel);
+    if (o.shadowReuse != "temporal" && o.shadowReuse != "none")
+        throw std::invalid_argument("--shadow-reuse '" + o.shadowReuse + "': expected temporal or none");
+    f.settings.sampledShadows.temporal = o.shadowReuse == "temporal";
+    f.settings.sampledShadows.denoise = parseOnOff("--shadow-denoise", o.shadowDenoise);
     if (o.seed < 0 || o.seed > std::numeric_limits<std::uint32_t>::max())
         throw std::invalid_argument("--seed " + std::to_string(o.seed) + ": must be between 0 and 4294967295");
     if (o.frames < 0 || o.frames > 100'000'000)

@@ -68,6 +68,9 @@ struct FrameOptions {
     std::string brdf = "ggx";
     std::string shadows = "off";
     int shadowBvhWidth = static_cast<int>(kDefaultShadowBvhWidth);  // --shadow-bvh-width: 2, 4 or 8
+    int shadowRaysPerPixel = 2;          // --shadow-rays-per-pixel (--shadows sampled): 1, 2 or 4
+    std::string shadowReuse = "temporal";  // --shadow-reuse temporal|none
+    std::string shadowDenoise = "on";      // --shadow-denoise on|off
     std::string lightSum = "float";
     std::optional<float> lightCutoff;  // --light-cutoff E: radii where max(colour) / d^2 falls to E, glTF's falloff
     std::string cutoff = "hard";       // --cutoff hard|stochastic|none

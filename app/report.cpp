@@ -96,12 +96,12 @@ void printShadowStructure(Shadows shadows, const ShadowRays* rays) {
         return;
     }
     if (rays == nullptr || rays->empty()) {
-        std::printf("shadows: rays, nothing casts one (no triangle that is not BLEND): no ray is traced\n");
+        std::printf("shadows: %s, nothing casts one (no triangle that is not BLEND): no ray is traced\n", shadowsName(shadows));
         return;
     }
     const ShadowStructureStats& s = rays->stats();
-    std::printf("shadows: rays, %zu casting triangles (%zu alpha-tested), %zu nodes of %zu children, depth %zu, %.1f MiB, built in %.2f s\n",
-                s.triangles, s.maskTriangles, s.nodes, s.width, s.depth, s.bytes / 1048576.0, s.buildSeconds);
+    std::printf("shadows: %s, %zu casting triangles (%zu alpha-tested), %zu nodes of %zu children, depth %zu, %.1f MiB, built in %.2f s\n",
+                shadowsName(shadows), s.triangles, s.maskTriangles, s.nodes, s.width, s.depth, s.bytes / 1048576.0, s.buildSeconds);
 }
 
 void printCullAccuracy(const ClusterStatistics& s, const CullAccuracy& a) {

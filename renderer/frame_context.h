@@ -8,6 +8,7 @@
 #include "renderer/gpu_types.h"
 #include "renderer/lights/light_buffers.h"
 #include "renderer/pass_timer.h"
+#include "renderer/raytracing/sampled_shadows.h"
 #include "renderer/raytracing/shadow_rays.h"
 #include "renderer/scene/scene_gpu.h"
 
@@ -21,7 +22,9 @@ struct FrameContext {
     const FrameUniforms& uniforms;      // the same values on the CPU
     FrameTargets& targets;              // render into targets.hdr() (+ depth)
     PassTimer& timer;
-    const ShadowRays* shadows = nullptr;  // --shadows rays: the occluders; null when off
+    const ShadowRays* shadows = nullptr;  // --shadows rays or sampled: the occluders; null when off
+    // --shadows sampled: the passes that reuse and filter the compute lighting's ratio (null otherwise)
+    SampledShadowPass* sampledShadows = nullptr;
 
     // What shading reads of the lights: their buffers and, with shadow rays, what blocks them.
     void bindLightsForShading() const {

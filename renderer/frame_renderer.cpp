@@ -16,9 +16,10 @@ FrameRenderer::FrameRenderer(const Scene& scene, const std::vector<Light>& light
                            : nullptr),
       lights_(lights),
       // An animated scene's structure follows its pose (ShadowRays::refit, each frame).
-      shadowRays_(settings.shadows == Shadows::Rays
+      shadowRays_(settings.shadows != Shadows::Off
                       ? std::make_unique<ShadowRays>(scene, settings.shadowBvhWidth, vertexAnimation_ != nullptr)
                       : nullptr),
+      sampledShadows_(settings.shadows == Shadows::Sampled ? std::make_unique<SampledShadowPass>(settings.sampledShadows) : nullptr),
       // Sampled as asked from the start, so a size the GPU cannot hold is refused before allocation.
       targets_(settings.width, settings.height, false, TargetSampling{settings.method.msaa, settings.supersample}),
       frameUniformBuffer_("frame.uniforms", sizeof(FrameUniforms)),
@@ -43,6 +44,7 @@ MethodSettings FrameRenderer::forFrame(MethodSettings method) const {
     method.clustering.spotLights = lights_.hasSpots();
     const ShadowRays* shadows = activeShadowRays();
     method.clustering.shading = ShadingSwitches{settings_.lightModel.brdf, settings_.specular, settings_.lightModel.falloff, shadows != nullptr,
+                                                activeSampledShadows() ? settings_.sampledShadows.raysPerPixel : 0u,
                                                 countingShadowRays_ && shadows != nullptr, shadows ? shadows->width() : kDefaultShadowBvhWidth};
     return method;
 }
@@ -60,12 +62,24 @@ std::optional<std::uint64_t> FrameRenderer::countShadowRays(std::uint32_t frame)
 }
 
 const ShadowRays* FrameRenderer::activeShadowRays() const {
-    return settings_.shadows == Shadows::Rays && shadowRays_ && !shadowRays_->empty() ? shadowRays_.get() : nullptr;
+    return settings_.shadows != Shadows::Off && shadowRays_ && !shadowRays_->empty() ? shadowRays_.get() : nullptr;
+}
+
+SampledShadowPass* FrameRenderer::activeSampledShadows() const {
+    return settings_.shadows == Shadows::Sampled && activeShadowRays() ? sampledShadows_.get() : nullptr;
 }
 
 void FrameRenderer::setShadows(Shadows shadows, const Scene& scene) {
     settings_.shadows = shadows;
-    if (shadows == Shadows::Rays && !shadowRays_) shadowRays_ = std::make_unique<ShadowRays>(scene, settings_.shadowBvhWidth, vertexAnimation_ != nullptr);
+    if (shadows != Shadows::Off && !shadowRays_) shadowRays_ = std::make_unique<ShadowRays>(scene, settings_.shadowBvhWidth, vertexAnimation_ != nullptr);
+    if (shadows == Shadows::Sampled && !sampledShadows_) sampledShadows_ = std::make_unique<SampledShadowPass>(settings_.sampledShadows);
+    if (sampledShadows_) sampledShadows_->resetHistory();
+    rebuildForShadingSwitches();
+}
+
+void FrameRenderer::setSampledShadows(const SampledShadowSettings& settings) {
+    settings_.sampledShadows = settings;
+    if (sampledShadows_) sampledShadows_ = std::make_unique<SampledShadowPass>(settings);
     rebuildForShadingSwitches();
 }
 
@@ -98,7 +112,7 @@ void FrameRenderer::setLights(const std::vector<Light>& lights) {
     setMethod(settings_.method);
 }
 
-void FrameRenderer::updateUniforms(float time) {
+void FrameRenderer::updateUniforms(float time, std::uint32_t drawSeed) {
     const Camera& c = settings_.camera;
     // The size the method draws at (times --supersample); the aspect ratio is the output's.
     const float w = static_cast<float>(targets_.width()), h = static_cast<float>(targets_.height());
@@ -112,7 +126,7 @@ void FrameRenderer::updateUniforms(float time) {
     uniforms_.depthRange = glm::vec4(c.nearPlane, c.farPlane, time, settings_.ambient);
     const LightModel& model = settings_.lightModel;
     const std::uint32_t switches = (settings_.specular ? ML_SHADING_SPECULAR : 0u) | (model.brdf == Brdf::Ggx ? ML_SHADING_GGX : 0u);
-    uniforms_.counts = glm::uvec4(lights_.count(), switches, static_cast<std::uint32_t>(model.falloff), 0);
+    uniforms_.counts = glm::uvec4(lights_.count(), switches, static_cast<std::uint32_t>(model.falloff), drawSeed);
     const ShadowRays* shadows = activeShadowRays();
     uniforms_.lightModel = glm::vec4(model.cutoff, shadows ? shadows->directionalReach() : 0.0f, 0.0f, 0.0f);
     uniforms_.shadows = shadows ? shadows->uniforms() : glm::uvec4(0u);
@@ -127,7 +141,7 @@ std::vector<PassTime> FrameRenderer::render(std::uint32_t frameIndex, std::uint3
 
 std::vector<PassTime> FrameRenderer::renderAt(float time, std::uint32_t drawSeed) {
     timer_.beginFrame();
-    updateUniforms(time);
+    updateUniforms(time, drawSeed);
     if (vertexAnimation_) {
         auto pass = timer_.pass("scene.animate");
         vertexAnimation_->run(scene_, settings_.sceneAnimation.startSeconds + static_cast<double>(time));
@@ -153,7 +167,7 @@ std::vector<PassTime> FrameRenderer::renderAt(float time, std::uint32_t drawSeed
         overdraw_->run(scene_, targets_, timer_);
     } else {
         targets_.setComputedDepth(nullptr);
-        method_->render(FrameContext{scene_, lights_, frameUniformBuffer_, uniforms_, targets_, timer_, activeShadowRays()});
+        method_->render(FrameContext{scene_, lights_, frameUniformBuffer_, uniforms_, targets_, timer_, activeShadowRays(), activeSampledShadows()});
     }
     // After the method and anything it drew last (a transparent pass lands in the samples too).
     if (targets_.sampling().resolves()) {

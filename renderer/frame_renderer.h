@@ -59,6 +59,7 @@ struct FrameSettings {
     LightModel lightModel;  // --brdf, --cutoff compiled in (ShadingSwitches); --light-cutoff a frame uniform
     Shadows shadows = Shadows::Off;  // --shadows, compiled in (ShadingSwitches) where something casts one
     std::uint32_t shadowBvhWidth = kDefaultShadowBvhWidth;  // --shadow-bvh-width (shadow_bvh.h)
+    SampledShadowSettings sampledShadows;  // --shadow-rays-per-pixel, --shadow-reuse, --shadow-denoise (--shadows sampled)
     BloomSettings bloom;
     LightAnimation animation;
     SceneAnimationSettings sceneAnimation;
@@ -81,7 +82,7 @@ public:
     // The last frame's context (its scene, lights, uniforms and targets) timed by `timer`: for
     // passes run outside a frame (`raster-floors`).
     FrameContext frameContext(PassTimer& timer) {
-        return FrameContext{scene_, lights_, frameUniformBuffer_, uniforms_, targets_, timer, activeShadowRays()};
+        return FrameContext{scene_, lights_, frameUniformBuffer_, uniforms_, targets_, timer, activeShadowRays(), activeSampledShadows()};
     }
 
     RgbaImage readLdr() const;
@@ -109,6 +110,12 @@ public:
     // --shadows; `scene` (the one this renderer was built from) gives the occluders the first
     // time shadow rays are asked for.
     void setShadows(Shadows shadows, const Scene& scene);
+    // --shadows sampled's estimate; its history starts again.
+    void setSampledShadows(const SampledShadowSettings& settings);
+    // Forgets --shadows sampled's reused history (a cut: the next frame reuses nothing).
+    void resetShadowHistory() {
+        if (sampledShadows_) sampledShadows_->resetHistory();
+    }
     // The occluders' structure, once --shadows rays has built it (else null).
     const ShadowRays* shadowRays() const { return shadowRays_.get(); }
     // The shadow rays one more rendering of `frame` traces, counted by programs compiled for it
@@ -129,9 +136,11 @@ public:
     const VertexAnimationPass* vertexAnimation() const { return vertexAnimation_.get(); }
 
 private:
-    void updateUniforms(float time);
+    void updateUniforms(float time, std::uint32_t drawSeed);
     // The occluders the frame traces: null with --shadows off or where nothing casts a shadow.
     const ShadowRays* activeShadowRays() const;
+    // --shadows sampled's passes where the frame traces rays; else null.
+    SampledShadowPass* activeSampledShadows() const;
     // The targets' stencil and sampling as the method needs them.
     void configureTargets();
     // The method's settings with what the frame decides: ClusteringSettings::spotLights from the
@@ -144,7 +153,8 @@ private:
     SceneGpu scene_;
     std::unique_ptr<VertexAnimationPass> vertexAnimation_;  // only where a clip plays
     LightBuffers lights_;
-    std::unique_ptr<ShadowRays> shadowRays_;  // built on the first frame settings with --shadows rays
+    std::unique_ptr<ShadowRays> shadowRays_;  // built on the first frame settings with --shadows rays or sampled
+    std::unique_ptr<SampledShadowPass> sampledShadows_;  // --shadows sampled, built with its settings
     bool countingShadowRays_ = false;         // countShadowRays' frame
     FrameTargets targets_;
     gl::Buffer frameUniformBuffer_;

@@ -54,7 +54,7 @@ struct alignas(16) FrameUniforms {
     glm::vec4 cameraPos;
     glm::vec4 viewport;    // width, height, 1/width, 1/height
     glm::vec4 depthRange;  // near, far, time, ambient
-    glm::uvec4 counts;     // light count, shading switches (ML_SHADING_*), falloff (ML_FALLOFF_*), stochastic draw seed
+    glm::uvec4 counts;     // light count, shading switches (ML_SHADING_*), falloff (ML_FALLOFF_*), the frame's draw seed (stochasticDrawSeed)
     glm::vec4 lightModel;  // --light-cutoff E, a directional shadow ray's length, 0, 0
     glm::uvec4 shadows;    // --shadows rays: the first triangle's vec4 in the BVH buffer, nodes, triangles, 0
 };

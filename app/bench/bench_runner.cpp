@@ -31,6 +31,8 @@ namespace {
 constexpr std::size_t kReferenceCacheBytes = std::size_t{1} << 30;
 constexpr double kPhysicalBudgetScale = 10.0;
 constexpr std::size_t kSupersampledReferenceBytes = std::size_t{4} << 30;  // two 2560x1440 references at K = 4
+// --shadows sampled's accuracy frame is reached through this many frames, its history theirs.
+constexpr std::uint32_t kSampledHistoryFrames = 16;
 
 std::string scientific(double v) {
     char buf[32];
@@ -61,6 +63,11 @@ std::string frameKeyOf(const FrameOptions& o, double radius) {
     k["specular"] = o.specular;  // the naive reference must shade with the same model
     k["brdf"] = o.brdf;
     k["shadows"] = o.shadows;  // naive traces the same rays
+    // The renderer builds its occluders and programs for these (naive's frame is the same for all).
+    k["shadow_bvh_width"] = o.shadowBvhWidth;
+    k["shadow_rays_per_pixel"] = o.shadowRaysPerPixel;
+    k["shadow_reuse"] = o.shadowReuse;
+    k["shadow_denoise"] = o.shadowDenoise;
     k["light_sum"] = o.lightSum;
     k["light_cutoff"] = o.lightCutoff ? nlohmann::json(*o.lightCutoff) : nlohmann::json();
     k["cutoff"] = o.cutoff;
@@ -102,6 +109,10 @@ BenchRow configColumns(const BenchPoint& p, int index, std::uint32_t frame, cons
     row["brdf"] = o.brdf;
     row["shadows"] = o.shadows;
     row["shadow_bvh_width"] = o.shadows == "off" ? nlohmann::json() : nlohmann::json(o.shadowBvhWidth);
+    const bool sampled = o.shadows == "sampled";
+    row["shadow_rays_per_pixel"] = sampled ? nlohmann::json(o.shadowRaysPerPixel) : nlohmann::json();
+    row["shadow_reuse"] = sampled ? nlohmann::json(o.shadowReuse) : nlohmann::json();
+    row["shadow_denoise"] = sampled ? nlohmann::json(o.shadowDenoise) : nlohmann::json();
     row["light_sum"] = o.lightSum;
     row["light_cutoff"] = o.lightCutoff ? nlohmann::ordered_json(*o.lightCutoff) : nlohmann::ordered_json();
     row["cutoff"] = o.cutoff;
@@ -317,7 +328,14 @@ void BenchRunner::measureInto(BenchRow& row, const BenchPoint& point) {
         row[column + "_p90"] = s.p90;
     }
 
-    // Accuracy on the first timed frame, rendered again now that the timing is done.
+    // Accuracy on the first timed frame, rendered again now that the timing is done. --shadows
+    // sampled reuses the frames before it: its history is rebuilt from kSampledHistoryFrames
+    // frames before, as a sequence that reached the frame would have it.
+    const bool sampledShadows = f.settings.shadows == Shadows::Sampled;
+    if (sampledShadows) {
+        renderer_->resetShadowHistory();
+        for (std::uint32_t frame = first > kSampledHistoryFrames ? first - kSampledHistoryFrames : 0; frame < first; ++frame) renderFrame(frame);
+    }
     renderFrame(first);
     FloatImage hdr = renderer_->readHdr();
     RgbaImage ldr = renderer_->readLdr();
@@ -347,6 +365,8 @@ void BenchRunner::measureInto(BenchRow& row, const BenchPoint& point) {
     } else {
         addNote(row, "no naive reference: " + overBudget);
     }
+
+    if (sampledShadows && !naive) compareWithExactShadows(row, scene, hdr, ldr, renderFrame);
 
     // What the light assignment built on that frame.
     row["dropped_lights"] = 0;
@@ -393,6 +413,29 @@ void BenchRunner::measureInto(BenchRow& row, const BenchPoint& point) {
     row["gbuffer_bytes"] = renderer_->method().extraTargetBytes();
     row["target_bytes"] = renderer_->targets().bytes();
     row["light_bytes"] = renderer_->lights().bytes();
+}
+
+void BenchRunner::compareWithExactShadows(BenchRow& row, const Scene& scene, const FloatImage& hdr, const RgbaImage& ldr,
+                                          const std::function<std::vector<PassTime>(std::uint32_t)>& renderFrame) {
+    const std::uint32_t first = run_.firstFrame;
+    // Frame to frame: the next frame, its history this one's (noise alone where the lights and camera are still).
+    renderFrame(first + 1);
+    const ImageDifference next = compareImages(renderer_->readHdr(), hdr), next8 = compareImages(renderer_->readLdr(), ldr);
+    row["shadow_flicker_psnr_db"] = finiteOr(next.psnrDb, "inf");
+    row["shadow_flicker_ldr_share"] = next8.badPixelShare;
+    // The exact shadows of the same frame: the same renderer tracing a ray per pixel and light.
+    renderer_->setShadows(Shadows::Rays, scene);
+    renderFrame(first);
+    const FloatImage exactHdr = renderer_->readHdr();
+    const RgbaImage exactLdr = renderer_->readLdr();
+    renderer_->setShadows(Shadows::Sampled, scene);
+    renderFrame(first);  // the rebuilt method's buffers exist once it has drawn (the statistics read them)
+    const ImageDifference d = compareImages(hdr, exactHdr), d8 = compareImages(ldr, exactLdr);
+    row["shadow_max_abs_err"] = d.maxAbs;
+    row["shadow_rmse"] = d.rmse;
+    row["shadow_psnr_db"] = finiteOr(d.psnrDb, "inf");
+    row["shadow_ldr_max_abs_err"] = d8.maxAbs;
+    row["shadow_ldr_bad_pixel_share"] = d8.badPixelShare;
 }
 
 void BenchRunner::compareWithSupersampled(BenchRow& row, const PreparedFrame& f, const std::string& frameKey,

@@ -4,6 +4,7 @@
 // between points that share them (a scene load or a naive frame can cost seconds).
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -43,6 +44,10 @@ private:
     void measureInto(BenchRow& row, const BenchPoint& point);
     // aa_rmse, aa_psnr_db: the point's HDR frame against naive at K x K samples per pixel
     // (RunSettings::supersampledReference), cached per frame as the naive reference is.
+    // --shadows sampled: the frame `hdr`/`ldr` (the first timed one) against the same frame with
+    // the exact shadows (--shadows rays), and against the next frame (the shadow_* columns).
+    void compareWithExactShadows(BenchRow& row, const Scene& scene, const FloatImage& hdr, const RgbaImage& ldr,
+                                 const std::function<std::vector<PassTime>(std::uint32_t)>& renderFrame);
     void compareWithSupersampled(BenchRow& row, const PreparedFrame& frame, const std::string& frameKey, const FloatImage& hdr);
     // physical_*: `hdr` (the point's frame, or the mean of its accumulated draws) against naive with
     // no cut-off (RunSettings::physicalReference), and the same after the CPU tonemap.

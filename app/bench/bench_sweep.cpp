@@ -160,7 +160,7 @@ const std::vector<AxisDef>& axisDefs() {
              (void)parseBrdf(asText(v));
              p.frame.brdf = v.get<std::string>();
          }},
-        {{"shadows", "--shadows", "off, or rays (an exact shadow ray for every point and light that adds light)"}, ValueKind::Text,
+        {{"shadows", "--shadows", "off, rays (an exact shadow ray for every point and light that adds light) or sampled (a few rays a pixel, the ratio reused and filtered)"}, ValueKind::Text,
          Applies::Always,
          [](BenchPoint& p, const json& v) {
              (void)parseShadows(asText(v));
@@ -168,6 +168,17 @@ const std::vector<AxisDef>& axisDefs() {
          }},
         {{"shadow_bvh_width", "--shadow-bvh-width", "--shadows rays: the BVH's children a node, 2, 4 or 8"}, ValueKind::Number,
          Applies::Always, [](BenchPoint& p, const json& v) { p.frame.shadowBvhWidth = static_cast<int>(asNumber(v)); }},
+        {{"shadow_rays_per_pixel", "--shadow-rays-per-pixel", "--shadows sampled: rays a pixel, 1, 2 or 4"}, ValueKind::Number,
+         Applies::Always,
+         [](BenchPoint& p, const json& v) { p.frame.shadowRaysPerPixel = static_cast<int>(checkShadowRaysPerPixel(static_cast<int>(asNumber(v)))); }},
+        {{"shadow_reuse", "--shadow-reuse", "--shadows sampled: temporal or none"}, ValueKind::Text, Applies::Always,
+         [](BenchPoint& p, const json& v) {
+             const std::string reuse = asText(v);
+             if (reuse != "temporal" && reuse != "none") throw std::invalid_argument("expected temporal or none");
+             p.frame.shadowReuse = reuse;
+         }},
+        {{"shadow_denoise", "--shadow-denoise", "--shadows sampled: the ratio filtered over its neighbours, on or off"}, ValueKind::Boolean,
+         Applies::Always, [](BenchPoint& p, const json& v) { p.frame.shadowDenoise = asBoolean(v) ? "on" : "off"; }},
         {{"light_sum", "--light-sum", "how a point adds up its lights: float (lists sorted), fixed (64-bit integers, lists unsorted)"},
          ValueKind::Text, Applies::Always,
          [](BenchPoint& p, const json& v) {

@@ -11,7 +11,7 @@ namespace {
 
 // Before the pass columns: what the point is and how long a frame took.
 const std::vector<std::string> kLeadingColumns = {
-    "experiment", "point", "scene", "method", "lights", "spot_share", "radius", "radius_rule", "seed", "intensity", "drift_speed", "specular", "brdf", "shadows", "shadow_bvh_width", "light_sum", "light_cutoff", "cutoff", "accumulate", "bloom",
+    "experiment", "point", "scene", "method", "lights", "spot_share", "radius", "radius_rule", "seed", "intensity", "drift_speed", "specular", "brdf", "shadows", "shadow_bvh_width", "shadow_rays_per_pixel", "shadow_reuse", "shadow_denoise", "light_sum", "light_cutoff", "cutoff", "accumulate", "bloom",
     "width", "height", "camera", "near", "far", "tiles_x", "tiles_y", "slices", "slicing", "assign",
     "max_per_cluster", "active_only", "cull", "normal_cones", "gbuffer", "resolve", "vis_raster", "prepass", "msaa", "draw", "draw_calls", "backface_culling", "transparency", "triangle_order", "workgroup", "frame_index", "warmup_frames",
     "timed_frames", "clock", "sm_clock_mhz", "sm_clock_mhz_min", "frame_ms", "frame_ms_p10", "frame_ms_p90", "wall_ms",
@@ -20,7 +20,8 @@ const std::vector<std::string> kLeadingColumns = {
 const std::vector<std::string> kTrailingColumns = {
     "max_abs_err", "rmse", "psnr_db", "bad_pixel_share", "ldr_max_abs_err", "ldr_psnr_db", "ldr_bad_pixel_share",
     "reference", "aa_rmse", "aa_psnr_db", "aa_reference", "physical_max_abs_err", "physical_rmse", "physical_psnr_db",
-    "physical_ldr_max_abs_err", "physical_ldr_psnr_db", "physical_ldr_bad_pixel_share", "clusters", "empty_share", "mean_lights_per_cluster", "mean_lights_per_nonempty_cluster",
+    "physical_ldr_max_abs_err", "physical_ldr_psnr_db", "physical_ldr_bad_pixel_share", "shadow_max_abs_err", "shadow_rmse", "shadow_psnr_db",
+    "shadow_ldr_max_abs_err", "shadow_ldr_bad_pixel_share", "shadow_flicker_psnr_db", "shadow_flicker_ldr_share", "clusters", "empty_share", "mean_lights_per_cluster", "mean_lights_per_nonempty_cluster",
     "max_lights_per_cluster", "list_entries", "false_positive_share", "normal_cone_pairs_removed", "overflow_clusters", "dropped_lights", "active_clusters",
     "list_bytes", "grid_bytes", "zbin_mask_bytes", "zbin_lights_walked", "zbin_lights_shaded", "shadow_rays", "shadow_grays_per_s", "gbuffer_bytes",
     "target_bytes", "light_bytes", "renderer", "note",

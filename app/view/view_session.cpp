@@ -210,7 +210,8 @@ Camera ViewSession::interactiveCamera(double now) {
 }
 
 void ViewSession::toggleShadows() {
-    const Shadows next = renderer_->settings().shadows == Shadows::Off ? Shadows::Rays : Shadows::Off;
+    const Shadows now = renderer_->settings().shadows;
+    const Shadows next = now == Shadows::Off ? Shadows::Rays : now == Shadows::Rays ? Shadows::Sampled : Shadows::Off;
     try {
         renderer_->setShadows(next, frame_.scene);
         options_.frame.shadows = shadowsName(next);

@@ -179,6 +179,12 @@
 #define ML_TEX_VISIBILITY 5
 #define ML_TEX_RESOLVE_SOURCE 10  // the methods' colour (multisampled or supersampled), read by the resolve
 #define ML_TEX_SHADOW_ALPHA 11    // --shadows rays: the MASK images' alpha, a layer each (renderer/raytracing/shadow_alpha.h)
+// --shadows sampled (renderer/raytracing/sampled_shadows.h): what the lighting pass left, read by
+// the reuse and the filter, and the ratio each keeps.
+#define ML_TEX_SHADOW_LIGHT 12            // rgb: the lights' part of the colour, unshadowed; a: the drawn rays' ratio
+#define ML_TEX_SHADOW_GUIDE 13            // xyz: world position; w: octahedral normal bits
+#define ML_TEX_SHADOW_GUIDE_PREVIOUS 14   // the previous frame's guide
+#define ML_TEX_SHADOW_HISTORY 15          // r: a reused ratio, g: the frames it holds
 
 // Image units
 #define ML_IMG_HDR 0
@@ -186,6 +192,9 @@
 #define ML_IMG_GBUFFER0 2
 #define ML_IMG_GBUFFER1 3
 #define ML_IMG_GBUFFER2 4
+#define ML_IMG_SHADOW_LIGHT 5     // --shadows sampled: written by the compute lighting (ML_TEX_SHADOW_LIGHT)...
+#define ML_IMG_SHADOW_GUIDE 6     // ...and ML_TEX_SHADOW_GUIDE
+#define ML_IMG_SHADOW_HISTORY 7   // the reused ratio this frame (shadow_temporal.comp)
 
 // A material's texture slots (Material::info bits, GpuMaterial::transforms).
 #define ML_SLOT_BASE_COLOR 0

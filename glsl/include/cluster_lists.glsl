@@ -41,7 +41,9 @@ vec3 shadeClusterLights(SurfacePoint s, vec3 viewDir, uint cluster, float viewDe
             bits &= bits - 1u;
             uint index = zbinSortedLights[i];
             Light l = lights[index];
-            addLight(sum, shadeLight(s, viewDir, l.positionRadius, l.colorCosInner, lightCone(index)));
+            vec3 c = shadeLight(s, viewDir, l.positionRadius, l.colorCosInner, lightCone(index));
+            addLight(sum, c);
+            ML_OFFER_SHADOW_SAMPLE(c, vec4(l.positionRadius.xyz, 1.0), index);
         }
     }
     return lightSumValue(sum);
@@ -74,7 +76,9 @@ vec3 shadeClusterLights(SurfacePoint s, vec3 viewDir, uint cluster, float viewDe
     for (uint k = 0u; k < range.y; ++k) {
         uint index = lightIndices[range.x + k];
         Light l = lights[index];
-        addLight(sum, shadeLight(s, viewDir, l.positionRadius, l.colorCosInner, lightCone(index)));
+        vec3 c = shadeLight(s, viewDir, l.positionRadius, l.colorCosInner, lightCone(index));
+        addLight(sum, c);
+        ML_OFFER_SHADOW_SAMPLE(c, vec4(l.positionRadius.xyz, 1.0), index);
     }
     return lightSumValue(sum);
 }

@@ -8,7 +8,7 @@ layout(std140, binding = ML_UBO_FRAME) uniform FrameUniformsBlock {
     vec4 u_cameraPos;      // xyz: world-space eye
     vec4 u_viewport;       // width, height, 1/width, 1/height
     vec4 u_depthRange;     // near, far, time (s), ambient
-    uvec4 u_counts;        // x: light count, y: shading switches (ML_SHADING_*), z: falloff (ML_FALLOFF_*), w: stochastic draw seed
+    uvec4 u_counts;        // x: light count, y: shading switches (ML_SHADING_*), z: falloff (ML_FALLOFF_*), w: the frame's draw seed (stochasticDrawSeed: --shadows sampled's draws)
     vec4 u_lightModel;     // x: --light-cutoff E (output units; 0 when none), y: a directional shadow ray's length
     uvec4 u_shadows;       // --shadows rays: x: the first triangle's vec4 in the BVH buffer, y: nodes, z: triangles, w: the first MASK material record's vec4
 };

@@ -21,6 +21,9 @@ shared uint s_boundsMin[3], s_boundsMax[3];  // the box of the served pixels, as
 #endif
 shared uint s_normalMin[3], s_normalMax[3];  // the box of their normals, likewise
 shared Light s_lights[kLightBatch];
+#if ML_SHADOW_RAYS && defined(ML_SHADOW_SAMPLED_LIGHTING)
+shared uint s_lightIndices[kLightBatch];  // --shadows sampled: each staged light's index, its draws' key
+#endif
 #if ML_SPOT_LIGHTS
 shared vec4 s_cones[kLightBatch];
 #endif
@@ -117,6 +120,9 @@ bool serveListRound(uint pending, SurfacePoint s, vec3 viewDir, inout LightSum l
             Light l = lights[index];
             vec4 cone = lightCone(index);
             s_lights[lane] = l;
+#if ML_SHADOW_RAYS && defined(ML_SHADOW_SAMPLED_LIGHTING)
+            s_lightIndices[lane] = index;
+#endif
 #if ML_SPOT_LIGHTS
             s_cones[lane] = cone;
 #endif
@@ -134,7 +140,9 @@ bool serveListRound(uint pending, SurfacePoint s, vec3 viewDir, inout LightSum l
 #else
                     vec4 cone = lightCone(0u);  // a point's: the set has no spots
 #endif
-                    addLight(lightSum, shadeLight(s, viewDir, s_lights[i].positionRadius, s_lights[i].colorCosInner, cone));
+                    vec3 c = shadeLight(s, viewDir, s_lights[i].positionRadius, s_lights[i].colorCosInner, cone);
+                    addLight(lightSum, c);
+                    ML_OFFER_SHADOW_SAMPLE(c, vec4(s_lights[i].positionRadius.xyz, 1.0), s_lightIndices[i]);
                 }
             }
         }

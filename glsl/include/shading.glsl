@@ -32,6 +32,17 @@
 #if ML_SHADOW_RAYS
 #include "include/shadow_rays.glsl"
 #endif
+// --shadows sampled: the program that defines ML_SHADOW_SAMPLED_LIGHTING (the compute lighting,
+// deferred_lighting.comp) sums its lights unshadowed and draws ML_SHADOW_SAMPLES of them a pixel to
+// trace (shadow_sampling.glsl); every other program traces the exact rays.
+#if ML_SHADOW_RAYS && defined(ML_SHADOW_SAMPLED_LIGHTING)
+#define ML_TRACE_EVERY_LIGHT 0
+#include "include/shadow_sampling.glsl"
+#define ML_OFFER_SHADOW_SAMPLE(contribution, target, key) offerShadowSample(contribution, target, key)
+#else
+#define ML_TRACE_EVERY_LIGHT ML_SHADOW_RAYS
+#define ML_OFFER_SHADOW_SAMPLE(contribution, target, key)
+#endif
 
 const float kPi = 3.14159265358979;
 
@@ -165,7 +176,7 @@ vec3 shadeLight(SurfacePoint s, vec3 viewDir, vec4 positionRadius, vec4 colorCos
         if (falloff <= 0.0) return vec3(0.0);
     }
     vec3 lit = shadeIncoming(s, viewDir, l, color, falloff);
-#if ML_SHADOW_RAYS
+#if ML_TRACE_EVERY_LIGHT
     // Traced only for a light that adds something: the ray is the costly part.
     if (lit != vec3(0.0) && pointLightShadowed(s.position, s.normal, positionRadius.xyz)) return vec3(0.0);
 #endif
@@ -175,7 +186,7 @@ vec3 shadeLight(SurfacePoint s, vec3 viewDir, vec4 positionRadius, vec4 colorCos
 // A directional light travelling along the unit `direction`: no falloff, no cone.
 vec3 shadeDirectionalLight(SurfacePoint s, vec3 viewDir, vec3 direction, vec3 color) {
     vec3 lit = shadeIncoming(s, viewDir, -direction, color, 1.0);
-#if ML_SHADOW_RAYS
+#if ML_TRACE_EVERY_LIGHT
     if (lit != vec3(0.0) && directionalLightShadowed(s.position, s.normal, -direction)) return vec3(0.0);
 #endif
     return lit;

@@ -6,9 +6,16 @@ layout(std140, binding = ML_UBO_SUN_LIGHTS) uniform SunLightsBlock {
     vec4 u_sunColor[ML_MAX_SUN_LIGHTS];           // rgb: linear colour times intensity
 };
 
-// What a point shows before the clustered lights: the unlit terms and every sun.
-vec3 shadeUnclustered(SurfacePoint s, vec3 viewDir) {
-    vec3 color = shadeUnlit(s);
-    for (uint i = 0u; i < u_sunCount.x; ++i) color += shadeDirectionalLight(s, viewDir, u_sunDirection[i].xyz, u_sunColor[i].rgb);
+// Every sun's light at a point (offered to --shadows sampled's draws where it draws them).
+vec3 shadeSuns(SurfacePoint s, vec3 viewDir) {
+    vec3 color = vec3(0.0);
+    for (uint i = 0u; i < u_sunCount.x; ++i) {
+        vec3 sun = shadeDirectionalLight(s, viewDir, u_sunDirection[i].xyz, u_sunColor[i].rgb);
+        color += sun;
+        ML_OFFER_SHADOW_SAMPLE(sun, vec4(-u_sunDirection[i].xyz, 0.0), kSunSampleKey + i);
+    }
     return color;
 }
+
+// What a point shows before the clustered lights: the unlit terms and every sun.
+vec3 shadeUnclustered(SurfacePoint s, vec3 viewDir) { return shadeUnlit(s) + shadeSuns(s, viewDir); }

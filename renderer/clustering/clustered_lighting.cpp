@@ -584,6 +584,8 @@ shaders::Defines lightShadingDefines(const ClusteringSettings& settings) {
         defines.emplace_back("ML_SHADOW_RAYS", s->shadowRays ? "1" : "0");
         if (s->countShadowRays) defines.emplace_back("ML_COUNT_SHADOW_RAYS", "1");
         if (s->shadowRays) defines.emplace_back("ML_SHADOW_BVH_WIDTH", std::to_string(s->shadowBvhWidth));
+        // Read by the compute lighting alone (deferred_lighting.comp); every other program traces the exact rays.
+        if (s->shadowRays && s->shadowSamples > 0) defines.emplace_back("ML_SHADOW_SAMPLES", std::to_string(s->shadowSamples));
     }
     return defines;
 }

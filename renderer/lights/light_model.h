@@ -56,7 +56,9 @@ struct ShadingSwitches {
     Brdf brdf = Brdf::Ggx;
     bool specular = true;
     Falloff falloff = Falloff::Smooth;
-    bool shadowRays = false;  // --shadows rays, where something casts a shadow
+    bool shadowRays = false;  // --shadows rays or sampled, where something casts a shadow
+    // --shadows sampled: rays a pixel in the compute lighting (ML_SHADOW_SAMPLES; sampled_shadows.h), 0 otherwise
+    std::uint32_t shadowSamples = 0;
     bool countShadowRays = false;  // and every ray counted (ML_COUNT_SHADOW_RAYS; FrameRenderer::countShadowRays)
     std::uint32_t shadowBvhWidth = kDefaultShadowBvhWidth;  // the BVH's children a node (ML_SHADOW_BVH_WIDTH; shadow_bvh.h)
     bool operator==(const ShadingSwitches&) const = default;

@@ -53,7 +53,7 @@ void ClusteredDeferred::render(const FrameContext& ctx) {
         bindDeferredLightingInputs(gbuffer_, ctx, clustering_);
         lightingProgram_.use();
         if (resolve_ == Resolve::Compute) {
-            dispatchComputeLighting(ctx.targets);
+            dispatchComputeLighting(ctx);
         } else {
             // Colour only: the depth texture is read, so it must not be attached while drawing.
             ctx.targets.hdrOnlyFramebuffer().bind();
@@ -63,6 +63,8 @@ void ClusteredDeferred::render(const FrameContext& ctx) {
             glEnable(GL_DEPTH_TEST);
         }
     }
+    // The fragment resolve traces the exact rays (only the compute lighting samples).
+    if (resolve_ == Resolve::Compute) applySampledShadows(ctx);
     transparent_.render(ctx, &clustering_);
 }
 

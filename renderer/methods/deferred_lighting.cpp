@@ -17,10 +17,16 @@ void bindDeferredLightingInputs(const GBuffer& gbuffer, const FrameContext& ctx,
     clustering.bindForShading();
 }
 
-void dispatchComputeLighting(const FrameTargets& targets) {
+void dispatchComputeLighting(const FrameContext& ctx) {
+    const FrameTargets& targets = ctx.targets;
+    if (ctx.sampledShadows) ctx.sampledShadows->bindForLighting(targets);
     glBindImageTexture(ML_IMG_HDR, targets.hdr().id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     glDispatchCompute(gl::groupsFor(targets.width(), ML_SCREEN_TILE), gl::groupsFor(targets.height(), ML_SCREEN_TILE), 1);
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+}
+
+void applySampledShadows(const FrameContext& ctx) {
+    if (ctx.sampledShadows) ctx.sampledShadows->run(ctx.targets, ctx.uniforms.viewProj, ctx.timer);
 }
 
 }  // namespace ml

@@ -15,7 +15,12 @@ shaders::Defines deferredLightingDefines(const ClusteringSettings& clustering, c
 // Binds the G-buffer, the depth, the lights and the cluster lists the lighting shaders read.
 void bindDeferredLightingInputs(const GBuffer& gbuffer, const FrameContext& ctx, const ClusteredLighting& clustering);
 
-// Runs the bound compute lighting program over the frame, writing the HDR target.
-void dispatchComputeLighting(const FrameTargets& targets);
+// Runs the bound compute lighting program over the frame, writing the HDR target (and, with
+// --shadows sampled, what the shadow passes read beside it).
+void dispatchComputeLighting(const FrameContext& ctx);
+
+// --shadows sampled: the visibility ratio reused, filtered and multiplied in, after the compute
+// lighting (nothing otherwise).
+void applySampledShadows(const FrameContext& ctx);
 
 }  // namespace ml

@@ -146,8 +146,9 @@ void VisibilityBuffer::render(const FrameContext& ctx) {
         if (besideCount) glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
         bindDeferredLightingInputs(gbuffer_, ctx, clustering_);
         lightingProgram_.use();
-        dispatchComputeLighting(ctx.targets);
+        dispatchComputeLighting(ctx);
     }
+    applySampledShadows(ctx);
     transparent_.render(ctx, &clustering_);
 }
 
