@@ -39,7 +39,7 @@ void main() {
     ivec2 p = ivec2(gl_GlobalInvocationID.xy);
     if (any(greaterThanEqual(p, ivec2(u_viewport.xy)))) return;
 #ifdef ML_SHADOW_SAMPLED_LIGHTING
-    beginShadowSampling(p);
+    beginShadowSampling(p, 0u);
     ResolvedPixel px;
     bool surface = resolveSurface(p, px);
     vec3 lightSum = surface && viewShadesLights() ? shadeClusterLights(px.surface, px.viewDir, px.cluster, px.viewDepth) : vec3(0.0);
@@ -60,7 +60,7 @@ void main() {
     uint pending = surface && viewShadesLights() ? clusterListKey(px.cluster, px.surface.normal) : kNoList;
     LightSum lightSum = noLight();
 #ifdef ML_SHADOW_SAMPLED_LIGHTING
-    beginShadowSampling(p);
+    beginShadowSampling(p, 0u);
 #endif
     bool served;
     while (serveListRound(pending, px.surface, px.viewDir, lightSum, served))

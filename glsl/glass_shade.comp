@@ -34,6 +34,11 @@
 //
 // Order: nearest first by depth, equal depths by triangle id, so every method (and naive)
 // blends the same fragments in the same order, intersecting and interleaved panes included.
+// --shadows sampled: each glass fragment draws its rays as the opaque pixels do and scales its
+// lights by their raw ratio (no history or filter: a fragment is not there the next frame).
+#if defined(ML_SHADOW_SAMPLES) && ML_SHADOW_RAYS
+#define ML_SHADOW_SAMPLED_LIGHTING 1
+#endif
 #include "include/bindings.h"
 #include "include/frame_uniforms.glsl"
 #include "include/lights.glsl"
@@ -131,17 +136,33 @@ void sortFragments(uint begin, uint end) {
     }
 }
 
+// The fragment's colour from its light sum: as shadeUnclustered adds, or, with --shadows sampled,
+// the lights scaled by the fragment's drawn rays (begun with beginGlassSampling before its loop).
+vec3 litGlassColor(SurfacePoint s, vec3 viewDir, vec3 lightSum) {
+#ifdef ML_SHADOW_SAMPLED_LIGHTING
+    return sampledShadowColor(s, viewDir, lightSum);
+#else
+    return shadeUnclustered(s, viewDir) + lightSum;
+#endif
+}
+void beginGlassSampling(ivec2 p, uint triangle) {
+#ifdef ML_SHADOW_SAMPLED_LIGHTING
+    beginShadowSampling(p, triangle + 1u);
+#endif
+}
+
 // The fragment's shaded colour and its alpha, as the forward pass's fragment shader gives them.
 vec4 shadeFragment(uint triangle, Material m, ivec2 p) {
     float alpha;
     SurfacePoint s = triangleSurface(triangle, m, p, alpha);
     vec3 viewDir = normalize(u_cameraPos.xyz - s.position);
+    beginGlassSampling(p, triangle);
 #if ML_GLASS_ALL_LIGHTS
-    return vec4(shadeUnclustered(s, viewDir) + shadeEveryLight(s, viewDir), alpha);
+    return vec4(litGlassColor(s, viewDir, shadeEveryLight(s, viewDir)), alpha);
 #else
     float viewDepth = -(u_view * vec4(s.position, 1.0)).z;
     uint cluster = clusterForFragment(vec2(p) + 0.5, viewDepth);
-    return vec4(shadeUnclustered(s, viewDir) + shadeClusterLights(s, viewDir, cluster, viewDepth), alpha);
+    return vec4(litGlassColor(s, viewDir, shadeClusterLights(s, viewDir, cluster, viewDepth)), alpha);
 #endif
 }
 
@@ -235,6 +256,7 @@ uint beginFragment(uint k, ivec2 p, out SurfacePoint s, out vec3 viewDir, out fl
     uint triangle = fragmentAt(k).y;
     s = triangleSurface(triangle, materials[triangleMaterial[triangle]], p, alpha);
     viewDir = normalize(u_cameraPos.xyz - s.position);
+    beginGlassSampling(p, triangle);
     float viewDepth = -(u_view * vec4(s.position, 1.0)).z;
     return clusterListKey(clusterForFragment(vec2(p) + 0.5, viewDepth), s.normal);
 }
@@ -289,7 +311,7 @@ void main() {
     bool served;
     while (serveListRound(pending, s, viewDir, lightSum, served)) {
         if (!served) continue;
-        vec4 c = vec4(shadeUnclustered(s, viewDir) + lightSumValue(lightSum), alpha);
+        vec4 c = vec4(litGlassColor(s, viewDir, lightSumValue(lightSum)), alpha);
         if (u_storesColors != 0u) storeColor(k, c);
         else color = over(c, color);
         lightSum = noLight();

@@ -8,9 +8,9 @@
 //
 // A shadow that moves with its light leaves a history that the new rays contradict. The history is
 // held to the mean of the pixel's 5x5 neighbours on its surface, plus or minus their spread
-// (variance clipping, Salvi 2016), the spread floored at kMinSpread: a few rays a pixel give
+// (variance clipping, Salvi 2016), the spread floored at kMinSpread (a few rays a pixel give
 // neighbourhoods of all ones where the true ratio is 0.95, and a clip to those alone would pull
-// every history towards lit. Where the clip moves the history, the frames it holds drop to
+// every history towards lit), the window stretched to take in the pixel's own new ratio. Where the clip moves the history, the frames it holds drop to
 // kFramesAfterClip, so the ratio catches up in a few frames rather than thirty. A ratio that every
 // neighbour shares (0 or 1: lit, or in shadow) passes through exactly.
 #include "include/bindings.h"
@@ -52,7 +52,11 @@ void main() {
             count += 1.0;
         }
     const float kMinSpread = 0.5, kFramesAfterClip = 4.0;
-    float mean = sum / count, spread = max(sqrt(max(sumSquares / count - mean * mean, 0.0)), kMinSpread);
+    float mean = count > 0.0 ? sum / count : ratio;  // none where the guide is not finite
+    float spread = max(sqrt(max(sumSquares / max(count, 1.0) - mean * mean, 0.0)), kMinSpread);
+    // The window reaches the pixel's own ratio too: a pixel that a close light outshines in its
+    // neighbourhood (a bright spot whose neighbours are in shadow) keeps its own history.
+    float lo = min(mean - spread, ratio), hi = max(mean + spread, ratio);
 
     float held = 0.0, reused = ratio;
     vec4 clip = u_previousViewProj * vec4(g.position, 1.0);
@@ -63,7 +67,7 @@ void main() {
             vec2 history = texelFetch(u_previousHistory, q, 0).rg;
             if (history.g > 0.0 && sameShadowSurface(g, readShadowGuide(u_previousGuide, q))) {
                 held = history.g;
-                reused = clamp(history.r, mean - spread, mean + spread);
+                reused = clamp(history.r, lo, hi);
                 if (reused != history.r) held = min(held, kFramesAfterClip);
             }
         }

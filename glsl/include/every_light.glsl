@@ -8,7 +8,9 @@ vec3 shadeEveryLight(SurfacePoint s, vec3 viewDir) {
     LightSum sum = noLight();
     for (uint i = 0u; i < n; ++i) {
         Light l = lights[i];
-        addLight(sum, shadeLight(s, viewDir, l.positionRadius, l.colorCosInner, lightCone(i)));
+        vec3 c = shadeLight(s, viewDir, l.positionRadius, l.colorCosInner, lightCone(i));
+        addLight(sum, c);
+        ML_OFFER_SHADOW_SAMPLE(c, vec4(l.positionRadius.xyz, 1.0), i);
     }
     return lightSumValue(sum);
 }

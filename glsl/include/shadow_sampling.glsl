@@ -19,8 +19,9 @@ float g_sampleKey[ML_SHADOW_SAMPLES];
 vec4 g_sampleTarget[ML_SHADOW_SAMPLES];  // xyz: the light's position (w = 1), or the unit direction towards it (w = 0)
 uint g_sampleSeed;
 
-void beginShadowSampling(ivec2 pixel) {
-    g_sampleSeed = pcgHash(uint(pixel.x) ^ pcgHash(uint(pixel.y) ^ pcgHash(u_counts.w)));
+// `layer` tells apart the surfaces one pixel shades (its glass fragments: their triangles).
+void beginShadowSampling(ivec2 pixel, uint layer) {
+    g_sampleSeed = pcgHash(uint(pixel.x) ^ pcgHash(uint(pixel.y) ^ pcgHash(u_counts.w ^ pcgHash(layer))));
     for (int k = 0; k < ML_SHADOW_SAMPLES; ++k) {
         g_sampleKey[k] = uintBitsToFloat(0x7F800000u);  // +infinity: nothing drawn yet
         g_sampleTarget[k] = vec4(0.0);
@@ -43,19 +44,19 @@ void offerShadowSample(vec3 contribution, vec4 target, uint lightKey) {
 }
 
 // The share of the drawn lights that the surface point sees (1 where no light adds anything). A
-// light drawn into two slots is traced once.
+// light drawn into two slots is traced once. (Bit masks, not arrays indexed at run time: those
+// went to local memory on the H100 and made four rays cost as much as every light's.)
 float sampledShadowRatio(vec3 position, vec3 normal) {
     if (isinf(g_sampleKey[0])) return 1.0;
-    bool blocked[ML_SHADOW_SAMPLES];
-    uint seen = 0u;
+    uint blocked = 0u;
     for (int k = 0; k < ML_SHADOW_SAMPLES; ++k) {
         vec4 t = g_sampleTarget[k];
         int same = k;
-        for (int j = 0; j < k; ++j)
-            if (same == k && g_sampleTarget[j] == t) same = j;
-        if (same < k) blocked[k] = blocked[same];
-        else blocked[k] = t.w > 0.5 ? pointLightShadowed(position, normal, t.xyz) : directionalLightShadowed(position, normal, t.xyz);
-        if (!blocked[k]) ++seen;
+        for (int j = k - 1; j >= 0; --j)
+            if (g_sampleTarget[j] == t) same = j;
+        bool hidden = same < k ? ((blocked >> uint(same)) & 1u) != 0u
+                               : (t.w > 0.5 ? pointLightShadowed(position, normal, t.xyz) : directionalLightShadowed(position, normal, t.xyz));
+        if (hidden) blocked |= 1u << uint(k);
     }
-    return float(seen) * (1.0 / float(ML_SHADOW_SAMPLES));
+    return float(ML_SHADOW_SAMPLES - bitCount(blocked)) * (1.0 / float(ML_SHADOW_SAMPLES));
 }

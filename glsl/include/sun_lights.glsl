@@ -19,3 +19,15 @@ vec3 shadeSuns(SurfacePoint s, vec3 viewDir) {
 
 // What a point shows before the clustered lights: the unlit terms and every sun.
 vec3 shadeUnclustered(SurfacePoint s, vec3 viewDir) { return shadeUnlit(s) + shadeSuns(s, viewDir); }
+
+#ifdef ML_SHADOW_SAMPLED_LIGHTING
+// A point's colour from the sum of its clustered lights: the unlit terms, the suns and the sum,
+// as shadeUnclustered adds them, the lights' part scaled by the drawn rays' ratio. The raw
+// estimate, unreused and unfiltered: for surfaces that keep no history (glass fragments).
+vec3 sampledShadowColor(SurfacePoint s, vec3 viewDir, vec3 lightSum) {
+    vec3 suns = shadeSuns(s, viewDir);
+    float ratio = sampledShadowRatio(s.position, s.normal);
+    // Where every drawn ray arrives, the sums of --shadows off, bit for bit.
+    return ratio == 1.0 ? shadeUnlit(s) + suns + lightSum : shadeUnlit(s) + (suns + lightSum) * ratio;
+}
+#endif
