@@ -8,7 +8,7 @@
 // ML_SHADOW_BVH_WIDTH children a node.
 #include "include/bindings.h"
 #ifndef ML_SHADOW_BVH_WIDTH
-#define ML_SHADOW_BVH_WIDTH 2
+#define ML_SHADOW_BVH_WIDTH 4  // kDefaultShadowBvhWidth; the renderer always defines it
 #endif
 
 layout(local_size_x = ML_SHADOW_REFIT_WORKGROUP) in;

@@ -15,7 +15,7 @@
 #define ML_COUNT_SHADOW_RAYS 0
 #endif
 #ifndef ML_SHADOW_BVH_WIDTH
-#define ML_SHADOW_BVH_WIDTH 2
+#define ML_SHADOW_BVH_WIDTH 4  // kDefaultShadowBvhWidth; the renderer always defines it
 #endif
 #if ML_COUNT_SHADOW_RAYS
 #define ML_SHADOW_BVH_ACCESS coherent

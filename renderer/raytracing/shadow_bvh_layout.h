@@ -78,9 +78,9 @@ inline constexpr std::uint32_t kShadowLeafCountLimit = 8;
 inline constexpr std::uint32_t kShadowTriangleLimit = 1u << 28;
 static_assert(kShadowLeafBit == 0x80000000u && kShadowOpaque == 0xFFFFFFFFu);
 
-// --shadow-bvh-width's default: binary, the layout the H100 record has timed, until it has timed
-// the wide ones (docs/lights-and-shading.md).
-inline constexpr std::uint32_t kDefaultShadowBvhWidth = 2;
+// --shadow-bvh-width's default: 4-wide, the fastest of the three on the H100 at every camera of
+// the atrium and Sponza (2-11 % faster than binary, 8-wide 20-30 % slower; docs/lights-and-shading.md).
+inline constexpr std::uint32_t kDefaultShadowBvhWidth = 4;
 // The widths the layout has (--shadow-bvh-width), and a node's size in vec4s at each.
 constexpr bool shadowBvhWidthSupported(std::uint32_t width) { return width == 2 || width == 4 || width == 8; }
 constexpr std::uint32_t shadowNodeVec4s(std::uint32_t width) {
