@@ -337,7 +337,7 @@ void statisticsSection(const ViewStatistics& st) {
         ImGui::Text("%8.3f ms", totalMilliseconds(st.passes));
         ImGui::EndTable();
     }
-    ImGui::TextUnformatted(st.shadows.c_str());
+    if (!st.shadows.empty()) ImGui::TextUnformatted(st.shadows.c_str());
 
     if (st.clusters) {
         const ClusterStatistics& c = *st.clusters;

@@ -63,7 +63,7 @@ struct ViewStatistics {
     std::string glRenderer, glVersion;
     int width = 0, height = 0;                // the renderer's (the window's times the render scale)
     std::string renderScaleNote;             // why the scale is what it is, when chosen automatically
-    std::string shadows;                     // --shadows, and with sampled its rays a pixel and the passes' share
+    std::string shadows;                     // --shadows rays or sampled (with its rays a pixel and the passes' share); empty when off
     std::size_t lights = 0;
     bool lightsFromFile = false;
     std::size_t sceneLights = 0;             // lights the scene file brings (KHR_lights_punctual)

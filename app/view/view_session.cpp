@@ -405,6 +405,7 @@ namespace {
 // "shadows: sampled, 2 rays a pixel, reuse and filter 0.87 ms (9.1 % of the frame)", from the
 // recent frames' mean pass times (shadows.temporal and shadows.denoise).
 std::string shadowsLine(const FrameSettings& s, const std::vector<PassTime>& passes) {
+    if (s.shadows == Shadows::Off) return "";  // no line: the panel keeps its height
     std::string line = std::string("shadows: ") + shadowsName(s.shadows);
     if (s.shadows != Shadows::Sampled) return line;
     double filter = 0.0;
