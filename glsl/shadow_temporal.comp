@@ -10,8 +10,8 @@
 // held to the mean of the pixel's 5x5 neighbours on its surface, plus or minus their spread
 // (variance clipping, Salvi 2016), the spread floored at kMinSpread (a few rays a pixel give
 // neighbourhoods of all ones where the true ratio is 0.95, and a clip to those alone would pull
-// every history towards lit), the window stretched to take in the pixel's own new ratio. Where the clip moves the history, the frames it holds drop to
-// kFramesAfterClip, so the ratio catches up in a few frames rather than thirty. A ratio that every
+// every history towards lit), the window stretched to take in the pixel's own new ratio. Where the
+// clip moves the history, the frames it holds drop to kFramesAfterClip, so the ratio catches up in a few frames rather than thirty. A ratio that every
 // neighbour shares (0 or 1: lit, or in shadow) passes through exactly.
 #include "include/bindings.h"
 #include "include/frame_uniforms.glsl"

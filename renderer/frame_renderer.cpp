@@ -77,12 +77,6 @@ void FrameRenderer::setShadows(Shadows shadows, const Scene& scene) {
     rebuildForShadingSwitches();
 }
 
-void FrameRenderer::setSampledShadows(const SampledShadowSettings& settings) {
-    settings_.sampledShadows = settings;
-    if (sampledShadows_) sampledShadows_ = std::make_unique<SampledShadowPass>(settings);
-    rebuildForShadingSwitches();
-}
-
 void FrameRenderer::setSpecular(bool on) {
     settings_.specular = on;
     rebuildForShadingSwitches();

@@ -110,8 +110,6 @@ public:
     // --shadows; `scene` (the one this renderer was built from) gives the occluders the first
     // time shadow rays are asked for.
     void setShadows(Shadows shadows, const Scene& scene);
-    // --shadows sampled's estimate; its history starts again.
-    void setSampledShadows(const SampledShadowSettings& settings);
     // Forgets --shadows sampled's reused history (a cut: the next frame reuses nothing).
     void resetShadowHistory() {
         if (sampledShadows_) sampledShadows_->resetHistory();
