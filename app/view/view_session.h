@@ -50,7 +50,7 @@ public:
 
 private:
     // O: --shadows off -> rays -> sampled -> off (the occluders are built the first time; the
-    // statistics show the sampled passes' times, shadows.temporal and shadows.denoise).
+    // statistics show the sampled passes' times: shadows.trace, shadows.temporal, shadows.denoise).
     void toggleShadows();
     void handleKeys(const std::vector<int>& keys);
     // Jumps the free camera to the scene's front framing (F, the panel's "frame").

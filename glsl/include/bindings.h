@@ -195,6 +195,9 @@
 #define ML_IMG_SHADOW_LIGHT 5     // --shadows sampled: written by the compute lighting (ML_TEX_SHADOW_LIGHT)...
 #define ML_IMG_SHADOW_GUIDE 6     // ...and ML_TEX_SHADOW_GUIDE
 #define ML_IMG_SHADOW_HISTORY 7   // the reused ratio this frame (shadow_temporal.comp)
+// --shadows sampled: the rays the compute lighting drew, traced by glsl/shadow_trace.comp; rows of
+// the frame's height a layer: the rays' origin, then each draw's target (sampled_shadow_lighting.glsl)
+#define ML_IMG_SHADOW_RAYS 8
 
 // A material's texture slots (Material::info bits, GpuMaterial::transforms).
 #define ML_SLOT_BASE_COLOR 0

@@ -43,17 +43,25 @@ void offerShadowSample(vec3 contribution, vec4 target, uint lightKey) {
     }
 }
 
-// The share of the drawn lights that the surface point sees (1 where no light adds anything). A
-// light drawn into two slots is traced once. (Bit masks, not arrays indexed at run time: those
-// went to local memory on the H100 and made four rays cost as much as every light's.)
+// The first slot that drew the same light as slot k (k where none before it did): a light drawn
+// into two slots is traced once.
+int firstSlotOfSameLight(int k) {
+    int same = k;
+    for (int j = k - 1; j >= 0; --j)
+        if (g_sampleTarget[j] == g_sampleTarget[k]) same = j;
+    return same;
+}
+
+// The share of the drawn lights that the surface point sees (1 where no light adds anything),
+// traced here (the glass shading; the compute lighting leaves its rays to shadow_trace.comp). (Bit
+// masks, not arrays indexed at run time: those went to local memory on the H100 and made four rays
+// cost as much as every light's.)
 float sampledShadowRatio(vec3 position, vec3 normal) {
     if (isinf(g_sampleKey[0])) return 1.0;
     uint blocked = 0u;
     for (int k = 0; k < ML_SHADOW_SAMPLES; ++k) {
         vec4 t = g_sampleTarget[k];
-        int same = k;
-        for (int j = k - 1; j >= 0; --j)
-            if (g_sampleTarget[j] == t) same = j;
+        int same = firstSlotOfSameLight(k);
         bool hidden = same < k ? ((blocked >> uint(same)) & 1u) != 0u
                                : (t.w > 0.5 ? pointLightShadowed(position, normal, t.xyz) : directionalLightShadowed(position, normal, t.xyz));
         if (hidden) blocked |= 1u << uint(k);

@@ -64,7 +64,7 @@ void ClusteredDeferred::render(const FrameContext& ctx) {
         }
     }
     // The fragment resolve traces the exact rays (only the compute lighting samples).
-    if (resolve_ == Resolve::Compute) applySampledShadows(ctx);
+    if (resolve_ == Resolve::Compute) applySampledShadows(ctx, clustering_.settings());
     transparent_.render(ctx, &clustering_);
 }
 

@@ -25,8 +25,8 @@ void dispatchComputeLighting(const FrameContext& ctx) {
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
 }
 
-void applySampledShadows(const FrameContext& ctx) {
-    if (ctx.sampledShadows) ctx.sampledShadows->run(ctx.targets, ctx.uniforms.viewProj, ctx.timer);
+void applySampledShadows(const FrameContext& ctx, const ClusteringSettings& clustering) {
+    if (ctx.sampledShadows) ctx.sampledShadows->run(ctx.targets, ctx.uniforms.viewProj, lightShadingDefines(clustering), ctx.timer);
 }
 
 }  // namespace ml

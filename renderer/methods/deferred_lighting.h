@@ -19,8 +19,8 @@ void bindDeferredLightingInputs(const GBuffer& gbuffer, const FrameContext& ctx,
 // --shadows sampled, what the shadow passes read beside it).
 void dispatchComputeLighting(const FrameContext& ctx);
 
-// --shadows sampled: the visibility ratio reused, filtered and multiplied in, after the compute
-// lighting (nothing otherwise).
-void applySampledShadows(const FrameContext& ctx);
+// --shadows sampled: the drawn rays traced, their visibility ratio reused, filtered and multiplied
+// in, after the compute lighting (nothing otherwise); `clustering` the lighting's settings.
+void applySampledShadows(const FrameContext& ctx, const ClusteringSettings& clustering);
 
 }  // namespace ml

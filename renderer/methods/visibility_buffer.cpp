@@ -148,7 +148,7 @@ void VisibilityBuffer::render(const FrameContext& ctx) {
         lightingProgram_.use();
         dispatchComputeLighting(ctx);
     }
-    applySampledShadows(ctx);
+    applySampledShadows(ctx, clustering_.settings());
     transparent_.render(ctx, &clustering_);
 }
 

@@ -12,6 +12,8 @@ SampledShadowPass::SampledShadowPass(const SampledShadowSettings& settings)
 void SampledShadowPass::prepare(int width, int height) {
     if (light_ && light_.width() == width && light_.height() == height) return;
     light_ = gl::Texture2D("shadows.sampled-light", GL_RGBA32F, width, height);
+    // The origin, then each draw's target, a layer of `height` rows each (ML_IMG_SHADOW_RAYS).
+    rays_ = gl::Texture2D("shadows.sampled-rays", GL_RGBA32F, width, height * static_cast<int>(1 + settings_.raysPerPixel));
     for (int i = 0; i < 2; ++i) {
         guide_[i] = gl::Texture2D("shadows.sampled-guide", GL_RGBA32F, width, height);
         history_[i] = gl::Texture2D("shadows.sampled-history", GL_RG32F, width, height);
@@ -24,10 +26,25 @@ void SampledShadowPass::bindForLighting(const FrameTargets& targets) {
     current_ ^= 1;
     glBindImageTexture(ML_IMG_SHADOW_LIGHT, light_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     glBindImageTexture(ML_IMG_SHADOW_GUIDE, guide_[current_].id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    glBindImageTexture(ML_IMG_SHADOW_RAYS, rays_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
 }
 
-void SampledShadowPass::run(const FrameTargets& targets, const glm::mat4& viewProj, PassTimer& timer) {
+void SampledShadowPass::trace(const FrameTargets& targets, const shaders::Defines& shading, PassTimer& timer) {
+    if (!traceProgram_ || traceDefines_ != shading) {
+        traceProgram_ = gl::Program::compute("shadow_trace.comp", shading);
+        traceDefines_ = shading;
+    }
+    auto pass = timer.pass("shadows.trace");
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    glBindImageTexture(ML_IMG_SHADOW_RAYS, rays_.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
+    glBindImageTexture(ML_IMG_SHADOW_LIGHT, light_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
+    traceProgram_.use();
+    glDispatchCompute(gl::groupsFor(targets.width(), ML_SCREEN_TILE), gl::groupsFor(targets.height(), ML_SCREEN_TILE), 1);
+}
+
+void SampledShadowPass::run(const FrameTargets& targets, const glm::mat4& viewProj, const shaders::Defines& shading, PassTimer& timer) {
     const GLuint groupsX = gl::groupsFor(targets.width(), ML_SCREEN_TILE), groupsY = gl::groupsFor(targets.height(), ML_SCREEN_TILE);
+    trace(targets, shading, timer);
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     glBindTextureUnit(ML_TEX_SHADOW_LIGHT, light_.id());
     glBindTextureUnit(ML_TEX_SHADOW_GUIDE, guide_[current_].id());
@@ -61,7 +78,7 @@ void SampledShadowPass::run(const FrameTargets& targets, const glm::mat4& viewPr
 std::size_t SampledShadowPass::bytes() const {
     if (!light_) return 0;
     const std::size_t pixels = static_cast<std::size_t>(light_.width()) * light_.height();
-    return pixels * (16 + 2 * 16 + 2 * 8);
+    return pixels * (16 + 16 * (1 + settings_.raysPerPixel) + 2 * 16 + 2 * 8);
 }
 
 }  // namespace ml

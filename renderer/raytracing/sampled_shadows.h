@@ -1,10 +1,12 @@
 // --shadows sampled (issue 63): exact unshadowed lighting times a sampled, reused and filtered
 // visibility ratio (Heitz, Hill and McGuire 2018). The compute lighting (deferred_lighting.comp
 // compiled with ML_SHADOW_SAMPLES) sums every light of a pixel's list unshadowed, draws
-// raysPerPixel of them in proportion to their unshadowed luminance and traces those rays
+// raysPerPixel of them in proportion to their unshadowed luminance
 // (glsl/include/shadow_sampling.glsl); it writes the unshadowed frame and, here, the lights' part
-// of each pixel with its measured ratio, and where its surface is. Then, per frame:
+// of each pixel, where its surface is and the rays it drew. Then, per frame:
 //
+//   shadows.trace     the drawn rays traced, the share that reach their light the pixel's ratio
+//                     (glsl/shadow_trace.comp)
 //   shadows.temporal  (--shadow-reuse temporal) the ratio averaged with the pixel's reprojected
 //                     history where the same surface was there, the history clamped to the
 //                     neighbourhood (glsl/shadow_temporal.comp)
@@ -37,9 +39,11 @@ public:
     const SampledShadowSettings& settings() const { return settings_; }
     // Binds the images the compute lighting writes beside the HDR target, sized as `targets`.
     void bindForLighting(const FrameTargets& targets);
-    // Reuses and filters the ratio the lighting measured and scales the lights' part of
-    // targets.hdr() by it; `viewProj` the frame's, kept for the next frame's reprojection.
-    void run(const FrameTargets& targets, const glm::mat4& viewProj, PassTimer& timer);
+    // Traces the rays the lighting drew, reuses and filters the ratio they measure and scales the
+    // lights' part of targets.hdr() by it; `viewProj` the frame's, kept for the next frame's
+    // reprojection; `shading` the lighting program's defines (lightShadingDefines), which the
+    // tracing shares (the BVH's width, the draws a pixel, the ray count).
+    void run(const FrameTargets& targets, const glm::mat4& viewProj, const shaders::Defines& shading, PassTimer& timer);
     // Forgets the history (the next frame reuses nothing): a cut, or a new light set.
     void resetHistory() { hasHistory_ = false; }
     std::size_t bytes() const;
@@ -51,10 +55,12 @@ public:
 
 private:
     void prepare(int width, int height);
+    void trace(const FrameTargets& targets, const shaders::Defines& shading, PassTimer& timer);
 
     SampledShadowSettings settings_;
-    gl::Program temporalProgram_, denoiseProgram_;
-    gl::Texture2D light_;
+    gl::Program traceProgram_, temporalProgram_, denoiseProgram_;
+    shaders::Defines traceDefines_;  // traceProgram_'s
+    gl::Texture2D light_, rays_;
     std::array<gl::Texture2D, 2> guide_, history_;  // this frame's and the previous frame's, by parity
     int current_ = 0;
     bool hasHistory_ = false;
