@@ -186,7 +186,9 @@
 #define ML_TEX_SHADOW_GUIDE_PREVIOUS 14   // the previous frame's guide
 #define ML_TEX_SHADOW_HISTORY 15          // r: a reused ratio, g: the frames it holds
 
-// Image units
+// Image units: 0 to 7 only. GL 4.5 guarantees 8 (GL_MAX_IMAGE_UNITS) and NVIDIA's drivers expose
+// exactly 8, so a unit past 7 compiles on Mesa and fails on the H100; passes that never run
+// together share a unit (tests/unit/binding_limits_test.cpp holds every ML_IMG_* to it).
 #define ML_IMG_HDR 0
 #define ML_IMG_LDR 1
 #define ML_IMG_GBUFFER0 2
@@ -196,8 +198,9 @@
 #define ML_IMG_SHADOW_GUIDE 6     // ...and ML_TEX_SHADOW_GUIDE
 #define ML_IMG_SHADOW_HISTORY 7   // the reused ratio this frame (shadow_temporal.comp)
 // --shadows sampled: the rays the compute lighting drew, traced by glsl/shadow_trace.comp; rows of
-// the frame's height a layer: the rays' origin, then each draw's target (sampled_shadow_lighting.glsl)
-#define ML_IMG_SHADOW_RAYS 8
+// the frame's height a layer: the rays' origin, then each draw's target (sampled_shadow_lighting.glsl).
+// Shares its unit with the history: the reuse pass, which writes that, reads no rays.
+#define ML_IMG_SHADOW_RAYS 7
 
 // A material's texture slots (Material::info bits, GpuMaterial::transforms).
 #define ML_SLOT_BASE_COLOR 0
