@@ -2,8 +2,9 @@
 // --shadows sampled: traces the rays the compute lighting drew (include/sampled_shadow_lighting.glsl)
 // and stores the share that reach their light as the pixel's ratio, for the reuse and the filter
 // (renderer/raytracing/sampled_shadows.h). A program of its own, one invocation a pixel: the
-// traversal needs few registers, so it runs here at an occupancy that hides its memory latency,
-// which the lighting program's registers did not allow.
+// traversal needs few registers and the lighting many, and traced inside the lighting the rays
+// ran at a fifth of the exact rays' rate on the H100 (docs/bench/nvidia-h100/sampled-shadows);
+// this pass's own time there is not yet measured.
 //
 // A workgroup's rays start below the root: the box around all of them is walked down the tree
 // once, breadth first, to at most kCutEntries nodes that overlap it (the cut), and each ray tests
