@@ -58,7 +58,7 @@ void buildCut(vec3 lo, vec3 hi) {
         bool grew = false;
         for (uint e = 0u; e < levelCount; ++e) {
             uint ref = s_cutRef[e];
-            if ((ref & ML_SHADOW_LEAF_BIT) != 0u || (ref == 0u && level > 0u)) continue;  // a leaf, or dropped
+            if ((ref & ML_SHADOW_LEAF_BIT) != 0u) continue;  // a leaf (a dropped entry is compacted out below)
             uint children[ML_SHADOW_BVH_WIDTH];
             vec3 childLo[ML_SHADOW_BVH_WIDTH], childHi[ML_SHADOW_BVH_WIDTH];
             uint meets = 0u;
@@ -134,12 +134,18 @@ void main() {
     // Every invocation takes part in the barriers; those without rays add nothing to the box.
     vec4 origin = all(lessThan(p, size)) ? imageLoad(u_shadowRays, p) : vec4(0.0);
     bool drew = origin.w != 0.0;  // else no surface, or no light drawn: the ratio stays as the lighting wrote it
-    vec4 targets[ML_SHADOW_SAMPLES];
+    // Per slot, the ray's direction, or the earlier slot of the same light (w >= 2: its index + 2).
+    vec4 rays[ML_SHADOW_SAMPLES];
     for (int k = 0; k < ML_SHADOW_SAMPLES; ++k) {
-        targets[k] = drew ? imageLoad(u_shadowRays, p + ivec2(0, (k + 1) * size.y)) : vec4(0.0, 0.0, 0.0, 2.0);
+        vec4 target = drew ? imageLoad(u_shadowRays, p + ivec2(0, (k + 1) * size.y)) : vec4(0.0, 0.0, 0.0, 2.0);
+        if (target.w >= 2.0) {
+            rays[k] = target;
+            continue;
+        }
         // As pointLightShadowed and directionalLightShadowed trace from the same origin.
-        vec3 direction = targets[k].w > 0.5 ? targets[k].xyz - origin.xyz : targets[k].xyz * u_lightModel.y;
-        if (targets[k].w < 2.0 && !shadowNotFinite(origin.xyz) && !shadowNotFinite(direction)) {
+        vec3 direction = target.w > 0.5 ? target.xyz - origin.xyz : target.xyz * u_lightModel.y;
+        rays[k] = vec4(direction, 0.0);
+        if (!shadowNotFinite(origin.xyz) && !shadowNotFinite(direction)) {
             growBlockBox(origin.xyz);
             growBlockBox(origin.xyz + direction);
         }
@@ -158,14 +164,8 @@ void main() {
     if (!drew) return;
     uint blocked = 0u;
     for (int k = 0; k < ML_SHADOW_SAMPLES; ++k) {
-        vec4 target = targets[k];
-        bool hidden;
-        if (target.w >= 2.0) {
-            hidden = ((blocked >> uint(target.w - 2.0)) & 1u) != 0u;  // the same light as an earlier slot
-        } else {
-            vec3 direction = target.w > 0.5 ? target.xyz - origin.xyz : target.xyz * u_lightModel.y;
-            hidden = cutRayBlocked(origin.xyz, direction);
-        }
+        bool hidden = rays[k].w >= 2.0 ? ((blocked >> uint(rays[k].w - 2.0)) & 1u) != 0u  // the same light as an earlier slot
+                                       : cutRayBlocked(origin.xyz, rays[k].xyz);
         if (hidden) blocked |= 1u << uint(k);
     }
     vec4 light = imageLoad(u_shadowLight, p);

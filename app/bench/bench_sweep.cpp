@@ -109,7 +109,7 @@ const std::vector<AxisDef>& axisDefs() {
              if (!(d > 0.0 && d <= 16.0)) throw std::invalid_argument("must be in (0, 16]");
              p.frame.detail = static_cast<float>(d);
          }},
-        {{"camera", "--camera", "px,py,pz,tx,ty,tz,fovy_deg, gltf:N (the file's Nth camera), \"default\" (the scene's view), orbit:... (the timed frames follow the turntable, app/camera_spec.h), or a named set of cameras (atrium-set: app/bench/camera_sets.h); the flag separates cameras by ';'"}, ValueKind::Text,
+        {{"camera", "--camera", "px,py,pz,tx,ty,tz,fovy_deg, gltf:N (the file's Nth camera), \"default\" (the scene's view), orbit:... (the timed frames follow the turntable, app/camera_spec.h), or a named set of cameras (atrium-set, atrium-above: app/bench/camera_sets.h); the flag separates cameras by ';'"}, ValueKind::Text,
          Applies::Always,
          [](BenchPoint& p, const json& v) {
              const std::string s = asText(v);

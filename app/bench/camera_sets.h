@@ -7,6 +7,10 @@
 // (z = -6.3); straight down from 28 m above the roof; across the courtyard from a corner. These
 // are issue 17's cameras: the raster, assignment and lighting costs differ most between them
 // (the roof view sees every floor's lights in few clusters).
+//
+//   --camera atrium-above   two views straight down into the courtyard, from just above and
+//                           from just under the roof line, that see nearly every light of the
+//                           volume: the light assignment's largest lists (issue 64)
 #pragma once
 
 #include <optional>

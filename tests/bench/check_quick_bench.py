@@ -142,7 +142,7 @@ def check_bad_flag(manylights):
 
 
 def check_camera_set(manylights):
-    """--camera atrium-set expands to the four cameras of the set, in order."""
+    """--camera atrium-set expands to the four cameras of the set, in order; atrium-above to its two."""
     run = subprocess.run([manylights, "bench", "--method", "deferred", "--camera", "atrium-set", "--print-sweep"],
                          capture_output=True, text=True)
     check(run.returncode == 0, "bench --camera atrium-set --print-sweep exited %d: %s" % (run.returncode, run.stderr))
@@ -151,6 +151,12 @@ def check_camera_set(manylights):
     text = run.stdout + run.stderr
     for camera in ("-15,1.7,-6.3,15,1.7,-6.3,60", "0,28,0.5,0,0,0,60", "-16,3,-4.5,16,1.5,4.5,60"):
         check(camera in text, "bench --camera atrium-set --dry-run does not list camera %s: %r" % (camera, text[-2000:]))
+    run = subprocess.run([manylights, "bench", "--method", "deferred", "--camera", "atrium-above", "--dry-run"],
+                         capture_output=True, text=True)
+    text = run.stdout + run.stderr
+    check(run.returncode == 0, "bench --camera atrium-above --dry-run exited %d: %s" % (run.returncode, run.stderr))
+    for camera in ("0,14,0.5,0,0,0,90", "0,11,0.5,0,0,0,100"):
+        check(camera in text, "bench --camera atrium-above --dry-run does not list camera %s: %r" % (camera, text[-2000:]))
 
 
 def check_interrupt(manylights, out):
