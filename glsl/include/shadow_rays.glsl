@@ -102,44 +102,23 @@ bool shadowTriangleHit(uint triangle, vec3 origin, vec3 direction) {
 // Whether a coordinate is infinite or NaN, by its bits (a compiler may take x != x as false).
 bool shadowNotFinite(vec3 v) { return any(equal(floatBitsToUint(v) & 0x7F800000u, uvec3(0x7F800000u))); }
 
-// Whether a ray is traced at all: a ray that is not finite is not. A NaN meets every box in min
-// and max that drop NaN operands, so it would walk the whole tree (helper invocations beside a
-// silhouette make such rays from extrapolated surfaces; on llvmpipe the walk then ran past the
-// shader's loop limit and ended the pixels' light loops with it). Counts the ray where asked.
-bool shadowRayTraced(vec3 origin, vec3 direction) {
-    if (u_shadows.y == 0u || shadowNotFinite(origin) || shadowNotFinite(direction)) return false;
+// Whether anything blocks the segment from `origin` to origin + direction. A ray that is not
+// finite is not traced: a NaN meets every box in min and max that drop NaN operands, so it
+// would walk the whole tree (helper invocations beside a silhouette make such rays from
+// extrapolated surfaces; on llvmpipe the walk then ran past the shader's loop limit and ended
+// the pixels' light loops with it).
+bool shadowRayBlocked(vec3 origin, vec3 direction) {
+    uint nodes = u_shadows.y;
+    if (nodes == 0u || shadowNotFinite(origin) || shadowNotFinite(direction)) return false;
 #if ML_COUNT_SHADOW_RAYS
     if (atomicAdd(shadowRaysTraced, 1u) == 0xFFFFFFFFu) atomicAdd(shadowRayWraps, 1u);
 #endif
-    return true;
-}
-
-// Child `slot` of inner node `ref`: its reference (0 where the slot is empty: the root is no
-// one's child) and its box.
-uint shadowNodeChild(uint ref, uint slot, out vec3 lo, out vec3 hi) {
-#if ML_SHADOW_BVH_WIDTH == 2
-    uint at = 4u * ref + 2u * slot;
-    vec4 a = shadowBvh[at], b = shadowBvh[at + 1u];
-    lo = a.xyz;
-    hi = b.xyz;
-    return floatBitsToUint(slot == 0u ? a.w : shadowBvh[4u * ref + 1u].w);
-#else
-    uint at = uint(ML_SHADOW_BVH_WIDTH / 4 * ML_SHADOW_WIDE_GROUP_VEC4S) * ref + uint(ML_SHADOW_WIDE_GROUP_VEC4S) * (slot / 4u);
-    uint k = slot % 4u;
-    lo = vec3(shadowBvh[at][k], shadowBvh[at + 2u][k], shadowBvh[at + 4u][k]);
-    hi = vec3(shadowBvh[at + 1u][k], shadowBvh[at + 3u][k], shadowBvh[at + 5u][k]);
-    return floatBitsToUint(shadowBvh[at + 6u][k]);
-#endif
-}
-
-// Whether anything below reference `start` (the root: 0; a leaf: its triangles) blocks the
-// segment from `origin` to origin + direction (`inverse`: shadowRayInverse(direction)).
-bool shadowSubtreeBlocks(uint start, vec3 origin, vec3 direction, vec3 inverse) {
+    vec3 inverse = shadowRayInverse(direction);
     uint stack[ML_SHADOW_STACK];
     uint top = 0u;
-    stack[top++] = start;
+    stack[top++] = 0u;
     // A tree visits each reference at most once: the bound only guards against a broken buffer.
-    for (uint step = 0u; top > 0u && step <= uint(ML_SHADOW_BVH_WIDTH) * u_shadows.y; ++step) {
+    for (uint step = 0u; top > 0u && step <= uint(ML_SHADOW_BVH_WIDTH) * nodes; ++step) {
         uint ref = stack[--top];
         if ((ref & ML_SHADOW_LEAF_BIT) != 0u) {
             uint first = ref & 0x0FFFFFFFu, count = ((ref >> 28) & 7u) + 1u;
@@ -169,11 +148,6 @@ bool shadowSubtreeBlocks(uint start, vec3 origin, vec3 direction, vec3 inverse) 
 #endif
     }
     return false;
-}
-
-// Whether anything blocks the segment from `origin` to origin + direction, walking from the root.
-bool shadowRayBlocked(vec3 origin, vec3 direction) {
-    return shadowRayTraced(origin, direction) && shadowSubtreeBlocks(0u, origin, direction, shadowRayInverse(direction));
 }
 
 // Whether a point light at `lightPosition` is hidden from surface point s (normal n facing it).
