@@ -23,8 +23,7 @@ ClusteringSettings clusteringFor(ClusteringSettings settings, bool prepass) {
 ForwardPlus::ForwardPlus(const ClusteringSettings& settings, bool prepass, std::uint32_t materialFeatures,
                          const TransparencySettings& transparency)
     : prepass_(prepass),
-      depthProgram_("forward-plus.depth", {{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "depth_only.frag"}},
-                    materialFeatures, RasterProgram::Reads::CoverageOnly),
+      depthPrePass_("forward-plus.depth", materialFeatures),
       shadeProgram_("forward-plus.shade", {{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "forward_plus.frag"}},
                     materialFeatures, RasterProgram::Reads::Material, lightListDefines(settings)),
       clustering_(clusteringFor(settings, prepass), materialFeatures),
@@ -37,26 +36,22 @@ void ForwardPlus::render(const FrameContext& ctx) {
 
 void ForwardPlus::shadeOpaque(const FrameContext& ctx) {
     const gl::Framebuffer& fbo = ctx.targets.hdrFramebuffer();
-    auto clearTargets = [&] {
+    auto clearColour = [&] {
         fbo.bind();
         glViewport(0, 0, ctx.targets.width(), ctx.targets.height());
         const float clearColor[4] = {0.0f, 0.0f, 0.0f, 1.0f};
         glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 0, clearColor);
-        glClearNamedFramebufferfv(fbo.id(), GL_DEPTH, 0, &depth::kClear);
-        if (prepass_) {
-            const GLint clearStencil = 0;
-            glClearNamedFramebufferiv(fbo.id(), GL_STENCIL, 0, &clearStencil);
-        }
-        glEnable(GL_DEPTH_TEST);
-        glDepthFunc(depth::kNearer);
-        glDepthMask(GL_TRUE);
     };
     if (!prepass_) {
         // One raster pass, as naive's: LESS, first drawn wins a coplanar tie, and every fragment
         // that passes is shaded (the overdraw the pre-pass exists to avoid).
         clustering_.build(ctx);
         auto pass = ctx.timer.pass("forward+.shade");
-        clearTargets();
+        clearColour();
+        glClearNamedFramebufferfv(fbo.id(), GL_DEPTH, 0, &depth::kClear);
+        glEnable(GL_DEPTH_TEST);
+        glDepthFunc(depth::kNearer);
+        glDepthMask(GL_TRUE);
         ctx.bindLightsForShading();
         clustering_.bindForShading();
         ctx.scene.draw(shadeProgram_);
@@ -64,30 +59,16 @@ void ForwardPlus::shadeOpaque(const FrameContext& ctx) {
     }
     {
         auto pass = ctx.timer.pass("forward+.depth-prepass");
-        clearTargets();
-        glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-        ctx.scene.draw(depthProgram_);
-        glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+        clearColour();
+        depthPrePass_.drawDepth(ctx.scene, fbo);
     }
     clustering_.build(ctx);
     {
         auto pass = ctx.timer.pass("forward+.shade");
         fbo.bind();
-        // gl_Position is invariant in scene.vert, so only the nearest surface passes EQUAL; the
-        // stencil then lets only the first such fragment through, so coplanar ties resolve as
-        // in naive's single pass (first drawn wins) and every pixel is shaded exactly once.
-        glDepthFunc(GL_EQUAL);
-        glDepthMask(GL_FALSE);
-        glEnable(GL_STENCIL_TEST);
-        glStencilFunc(GL_EQUAL, 0, 0xFF);
-        glStencilOp(GL_KEEP, GL_KEEP, GL_INCR);
         ctx.bindLightsForShading();
         clustering_.bindForShading();
-        ctx.scene.draw(shadeProgram_);
-        glDisable(GL_STENCIL_TEST);
-        glDepthFunc(depth::kNearer);
-        glDepthMask(GL_TRUE);
+        DepthPrePass::drawNearestOnce(ctx.scene, shadeProgram_);
     }
 }
 

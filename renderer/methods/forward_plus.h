@@ -7,6 +7,7 @@
 #include "renderer/clustering/clustered_lighting.h"
 #include "renderer/scene/raster_program.h"
 #include "renderer/methods/shading_method.h"
+#include "renderer/passes/depth_prepass.h"
 #include "renderer/passes/transparent_pass.h"
 
 namespace ml {
@@ -26,7 +27,7 @@ private:
     void shadeOpaque(const FrameContext& ctx);
 
     bool prepass_;
-    RasterProgram depthProgram_;
+    DepthPrePass depthPrePass_;
     RasterProgram shadeProgram_;
     ClusteredLighting clustering_;
     TransparentPass transparent_;
