@@ -105,8 +105,9 @@ void addFrameOptions(CLI::App& cmd, FrameOptions& o) {
     grid->add_option("--gbuffer", o.gbuffer, "G-buffer of deferred and visibility: exact (3 x RGBA32F with the position, 48 B/px: "
                      "holds the accuracy contract), standard (3 x RGBA16F, 24 B/px), packed (1 x RGBA32UI, 16 B/px), two-component (normal z rebuilt, loses its sign: the documented failure case); "
                      "naive and forward-plus have none and ignore it")->capture_default_str();
-    grid->add_option("--prepass", o.prepass, "forward-plus depth pre-pass: on, or off (one LESS pass shading overdraw; "
-                     "fitted slicing falls back to log, --active-only is refused)")->capture_default_str();
+    grid->add_option("--prepass", o.prepass, "depth pre-pass of forward-plus and deferred, so each pixel is shaded (forward-plus) "
+                     "or written to the G-buffer (deferred) once: on, or off (one LESS pass over every fragment, overdraw "
+                     "included; forward-plus: fitted slicing falls back to log, --active-only is refused)")->capture_default_str();
     cmd.add_option("--msaa", o.msaa, "samples per pixel: 1, 2, 4 or 8 (naive and forward-plus; resolved in linear HDR "
                    "before the tonemap; deferred and visibility store one sample per pixel and refuse it)")->capture_default_str();
     cmd.add_option("--view", o.view, "shaded, light-count, slices, clusters, overflow, albedo, normal, depth, overdraw (fragments shaded per pixel, any method)")->capture_default_str();

@@ -82,6 +82,9 @@ void printShadingOptions(const FrameSettings& s, std::uint32_t materialFeatures)
     if (kind == MethodKind::ForwardPlus)
         std::printf("depth pre-pass: %s\n", s.method.prepass ? "on (shade with EQUAL, each pixel once)"
                                                                 : "off (one LESS pass; hidden fragments are shaded too)");
+    if (kind == MethodKind::Deferred)
+        std::printf("depth pre-pass: %s\n", s.method.prepass ? "on (G-buffer written with EQUAL, each pixel once)"
+                                                                : "off (one LESS pass; hidden fragments write the G-buffer too)");
     // Two half-resolution RGBA32F images (renderer/passes/bloom_pass.h).
     const double bloomBytes = 2.0 * ((s.width + 1) / 2) * ((s.height + 1) / 2) * 16;
     if (s.bloom.enabled)

@@ -136,7 +136,7 @@ BenchRow configColumns(const BenchPoint& p, int index, std::uint32_t frame, cons
     row["cull"] = clustered(o.cull);
     row["normal_cones"] = p.gbuffered && !p.capped ? nlohmann::ordered_json(o.normalCones) : nlohmann::ordered_json();
     row["gbuffer"] = p.gbuffered ? nlohmann::ordered_json(o.gbuffer) : nlohmann::ordered_json();
-    row["prepass"] = p.forwardPlus ? nlohmann::ordered_json(o.prepass) : nlohmann::ordered_json();
+    row["prepass"] = p.prepassed ? nlohmann::ordered_json(o.prepass) : nlohmann::ordered_json();
     row["msaa"] = p.gbuffered ? nlohmann::ordered_json() : nlohmann::ordered_json(o.msaa);
     row["resolve"] = p.deferred ? nlohmann::ordered_json(o.resolve) : nlohmann::ordered_json();
     // As asked; the point's run replaces it with what ran (auto resolved for this GPU).

@@ -77,7 +77,7 @@ RadiusSpec asRadius(const json& v) {
 // ---- scene, a light set and a naive reference; method-level axes innermost.
 
 enum class ValueKind { Text, Integer, Number, Boolean, Radius, NumberOrAuto };
-enum class Applies { Always, Clustered, Deferred, GBuffered, ForwardPlus, Capped, ExactGBuffered, Forward, Visibility };
+enum class Applies { Always, Clustered, Deferred, GBuffered, PrePassed, Capped, ExactGBuffered, Forward, Visibility };
 
 struct AxisDef {
     SweepAxis info;
@@ -211,7 +211,7 @@ const std::vector<AxisDef>& axisDefs() {
              p.clustered = kind != MethodKind::Naive;
              p.deferred = kind == MethodKind::Deferred;
              p.gbuffered = kind == MethodKind::Deferred || kind == MethodKind::Visibility;
-             p.forwardPlus = kind == MethodKind::ForwardPlus;
+             p.prepassed = kind == MethodKind::ForwardPlus || kind == MethodKind::Deferred;
              p.visibility = kind == MethodKind::Visibility;
          }},
         {{"gbuffer", "--gbuffer", "G-buffer of deferred and visibility: exact, standard, packed, two-component"}, ValueKind::Text,
@@ -220,7 +220,7 @@ const std::vector<AxisDef>& axisDefs() {
              (void)parseGBufferFormat(asText(v));
              p.frame.gbuffer = v.get<std::string>();
          }},
-        {{"prepass", "--prepass", "forward-plus depth pre-pass: on, off"}, ValueKind::Boolean, Applies::ForwardPlus,
+        {{"prepass", "--prepass", "depth pre-pass of forward-plus and deferred: on, off"}, ValueKind::Boolean, Applies::PrePassed,
          [](BenchPoint& p, const json& v) { p.frame.prepass = asBoolean(v) ? "on" : "off"; }},
         {{"msaa", "--msaa", "samples per pixel of naive and forward-plus: 1, 2, 4, 8 (deferred and visibility store one)"},
          ValueKind::Integer, Applies::Forward,
@@ -306,7 +306,7 @@ bool applies(const AxisDef& axis, const BenchPoint& p) {
     case Applies::Clustered: return p.clustered;
     case Applies::Deferred: return p.deferred;
     case Applies::GBuffered: return p.gbuffered;
-    case Applies::ForwardPlus: return p.forwardPlus;
+    case Applies::PrePassed: return p.prepassed;
     case Applies::Capped: return p.capped;
     case Applies::ExactGBuffered: return p.gbuffered && !p.capped;  // normal_cones: exact lists of a G-buffer
     case Applies::Forward: return !p.gbuffered;                       // msaa: naive and forward-plus
@@ -433,7 +433,7 @@ std::string describePoint(const BenchPoint& p) {
     if (p.deferred) s += ", " + o.resolve + " resolve";
     if (p.gbuffered) s += ", " + o.gbuffer + " G-buffer";
     if (p.visibility && o.visRaster != FrameOptions{}.visRaster) s += ", " + o.visRaster + " raster";
-    if (p.forwardPlus && o.prepass == "off") s += ", no pre-pass";
+    if (p.prepassed && o.prepass == "off") s += ", no pre-pass";
     if (o.msaa > 1) s += ", MSAA " + std::to_string(o.msaa);
     if (o.specular == "off") s += ", specular off";
     if (o.brdf != FrameOptions{}.brdf) s += ", " + o.brdf;
@@ -572,7 +572,7 @@ Sweep expandSweep(const json& doc, const json& overrides, const std::vector<std:
             BenchPoint p;
             p.experiment = name;
             p.frame.method = "deferred";
-            p.clustered = p.deferred = p.gbuffered = true;
+            p.clustered = p.deferred = p.gbuffered = p.prepassed = true;
             json key = json::object();
             for (std::size_t i = 0; i < axes.size(); ++i) {
                 const json& v = axes[i].second[digit[i]];
@@ -600,7 +600,7 @@ Sweep expandSweep(const json& doc, const json& overrides, const std::vector<std:
             if (!p.deferred) p.frame.resolve = FrameOptions{}.resolve;
             if (!p.visibility) p.frame.visRaster = FrameOptions{}.visRaster;
             if (!p.gbuffered) p.frame.gbuffer = FrameOptions{}.gbuffer;
-            if (!p.forwardPlus) p.frame.prepass = FrameOptions{}.prepass;
+            if (!p.prepassed) p.frame.prepass = FrameOptions{}.prepass;
             if (p.frame.msaa > 1 && p.gbuffered)
                 msaaRefused = "--msaa " + std::to_string(p.frame.msaa) + ": " + msaaRefusal(parseMethod(p.frame.method));
             if (p.frame.msaa > 1 && !p.gbuffered) msaaTaken = true;

@@ -64,7 +64,7 @@ struct BenchPoint {
     bool clustered = false;   // forward-plus or deferred: the grid axes apply
     bool deferred = false;    // resolve applies
     bool gbuffered = false;   // deferred or visibility: gbuffer and normal_cones apply
-    bool forwardPlus = false; // prepass applies (and msaa with naive: !gbuffered)
+    bool prepassed = false;   // forward-plus or deferred: prepass applies
     bool visibility = false;  // vis_raster applies
     bool capped = false;      // max_per_cluster applies
     int accumulate = 1;       // the physical_* columns on the mean of this many stochastic draws

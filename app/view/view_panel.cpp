@@ -189,8 +189,8 @@ void shadingSection(ViewSettings& s, const ViewStatistics& stats, PanelEdits& ed
         edits.method = true;
     }
     ImGui::EndDisabled();
-    ImGui::BeginDisabled(s.method.kind != MethodKind::ForwardPlus);
-    if (ImGui::Checkbox("depth pre-pass (Forward+)", &s.method.prepass)) edits.method = true;
+    ImGui::BeginDisabled(s.method.kind != MethodKind::ForwardPlus && s.method.kind != MethodKind::Deferred);
+    if (ImGui::Checkbox("depth pre-pass (Forward+, deferred)", &s.method.prepass)) edits.method = true;
     ImGui::EndDisabled();
     msaaControl(s, edits);
     int brdf = s.brdf == Brdf::Ggx ? 0 : 1;

@@ -14,10 +14,12 @@ gl::Program lightingProgram(Resolve resolve, const shaders::Defines& defines) {
 }
 }  // namespace
 
-ClusteredDeferred::ClusteredDeferred(const ClusteringSettings& settings, Resolve resolve, GBufferFormat gbuffer,
+ClusteredDeferred::ClusteredDeferred(const ClusteringSettings& settings, Resolve resolve, GBufferFormat gbuffer, bool prepass,
                                      std::uint32_t materialFeatures, const TransparencySettings& transparency)
     : resolve_(resolve),
+      prepass_(prepass),
       gbuffer_(gbuffer, materialFeatures),
+      depthPrePass_("deferred.depth", materialFeatures),
       gbufferProgram_("deferred.gbuffer", {{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "gbuffer.frag"}},
                       materialFeatures, RasterProgram::Reads::Material, gbuffer_.defines()),
       lightingProgram_(lightingProgram(resolve, deferredLightingDefines(settings, gbuffer_))),
@@ -30,19 +32,28 @@ ClusteredDeferred::ClusteredDeferred(const ClusteringSettings& settings, Resolve
 }
 
 void ClusteredDeferred::render(const FrameContext& ctx) {
+    const gl::Framebuffer& fbo = gbuffer_.prepare(ctx.targets);
+    glViewport(0, 0, ctx.targets.width(), ctx.targets.height());
+    if (prepass_) {
+        auto pass = ctx.timer.pass("deferred.depth-prepass");
+        depthPrePass_.drawDepth(ctx.scene, fbo);
+    }
     {
         auto pass = ctx.timer.pass("deferred.gbuffer");
-        const gl::Framebuffer& fbo = gbuffer_.prepare(ctx.targets);
         fbo.bind();
-        glViewport(0, 0, ctx.targets.width(), ctx.targets.height());
-        // Depth alone is cleared: every reader of the G-buffer takes depth 1.0 as background
+        // No colour clear: every reader of the G-buffer takes the cleared depth as background
         // (deferred_resolve.glsl, the normal bins), and a colour clear costs as much as a
         // full-screen layer of writes on an H100.
-        glClearNamedFramebufferfv(fbo.id(), GL_DEPTH, 0, &depth::kClear);
-        glEnable(GL_DEPTH_TEST);
-        glDepthFunc(depth::kNearer);
-        glDepthMask(GL_TRUE);
-        ctx.scene.draw(gbufferProgram_);
+        if (prepass_) {
+            // Each pixel's surface is rebuilt and written once, not once per fragment of overdraw.
+            DepthPrePass::drawNearestOnce(ctx.scene, gbufferProgram_);
+        } else {
+            glClearNamedFramebufferfv(fbo.id(), GL_DEPTH, 0, &depth::kClear);
+            glEnable(GL_DEPTH_TEST);
+            glDepthFunc(depth::kNearer);
+            glDepthMask(GL_TRUE);
+            ctx.scene.draw(gbufferProgram_);
+        }
         glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
     }
     // The depth is final: the glass is counted now, its total long known when the fill needs it.

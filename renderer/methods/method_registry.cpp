@@ -76,7 +76,8 @@ std::unique_ptr<ShadingMethod> createMethod(const MethodSettings& settings, std:
         return std::make_unique<ForwardPlus>(clustering, settings.prepass, materialFeatures, transparency);
     }
     case MethodKind::Deferred:
-        return std::make_unique<ClusteredDeferred>(settings.clustering, settings.resolve, settings.gbuffer, materialFeatures, transparency);
+        return std::make_unique<ClusteredDeferred>(settings.clustering, settings.resolve, settings.gbuffer, settings.prepass,
+                                                   materialFeatures, transparency);
     case MethodKind::Visibility:
         return std::make_unique<VisibilityBuffer>(settings.clustering, settings.gbuffer, materialFeatures, transparency,
                                                   ComputeRaster::resolve(settings.visibilityRaster));

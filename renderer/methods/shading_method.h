@@ -46,7 +46,9 @@ struct MethodSettings {
     // Deferred and visibility. Exact by default: the only layout that holds the accuracy contract
     // on real content (docs/accuracy-and-stability.md#g-buffer-precision-on-glossy-normal-mapped-surfaces).
     GBufferFormat gbuffer = GBufferFormat::Exact;
-    bool prepass = true;  // forward-plus: depth pre-pass, then shading with EQUAL (off: one LESS pass)
+    // Forward+ and deferred: a depth pre-pass, then the shading (Forward+) or the G-buffer
+    // (deferred) with EQUAL, each pixel once; off: one depth-tested pass over every fragment.
+    bool prepass = true;
     // --msaa: samples per pixel of the colour and depth the method draws into (1, 2, 4, 8).
     int msaa = 1;
     // Bytes the transparent pass's capture may take (renderer/passes/glass_fragments.h); 0: this
