@@ -13,8 +13,11 @@ layout(location = 0) out uvec4 o_packed;
 #else
 layout(location = 0) out vec4 o_target0;
 layout(location = 1) out vec4 o_target1;
-#if ML_GBUFFER_FLOAT_TARGETS == 3
+#if ML_GBUFFER_FLOAT_TARGETS >= 3
 layout(location = 2) out vec4 o_target2;
+#endif
+#if ML_GBUFFER_FLOAT_TARGETS == 4
+layout(location = 3) out vec4 o_target3;
 #endif
 #endif
 
@@ -25,8 +28,11 @@ void main() {
 #else
     o_target0 = t.target[0];
     o_target1 = t.target[1];
-#if ML_GBUFFER_FLOAT_TARGETS == 3
+#if ML_GBUFFER_FLOAT_TARGETS >= 3
     o_target2 = t.target[2];
+#endif
+#if ML_GBUFFER_FLOAT_TARGETS == 4
+    o_target3 = t.target[3];
 #endif
 #endif
 }

@@ -22,8 +22,11 @@ layout(binding = ML_IMG_GBUFFER0, rgba32ui) uniform writeonly uimage2D u_gPacked
 #else
 layout(binding = ML_IMG_GBUFFER0, ML_GBUFFER_FLOAT_IMAGE) uniform writeonly image2D u_gTarget0Out;
 layout(binding = ML_IMG_GBUFFER1, ML_GBUFFER_FLOAT_IMAGE) uniform writeonly image2D u_gTarget1Out;
-#if ML_GBUFFER_FLOAT_TARGETS == 3
+#if ML_GBUFFER_FLOAT_TARGETS >= 3
 layout(binding = ML_IMG_GBUFFER2, ML_GBUFFER_FLOAT_IMAGE) uniform writeonly image2D u_gTarget2Out;
+#endif
+#if ML_GBUFFER_FLOAT_TARGETS == 4
+layout(binding = ML_IMG_GBUFFER3, ML_GBUFFER_FLOAT_IMAGE) uniform writeonly image2D u_gTarget3Out;
 #endif
 #endif
 uniform int u_textureSet;
@@ -44,8 +47,11 @@ void storeGBuffer(ivec2 p, GBufferTexel t) {
 #else
     imageStore(u_gTarget0Out, p, t.target[0]);
     imageStore(u_gTarget1Out, p, t.target[1]);
-#if ML_GBUFFER_FLOAT_TARGETS == 3
+#if ML_GBUFFER_FLOAT_TARGETS >= 3
     if (gbufferUsesTarget2(t)) imageStore(u_gTarget2Out, p, t.target[2]);
+#endif
+#if ML_GBUFFER_FLOAT_TARGETS == 4
+    if (gbufferUsesTarget3(t)) imageStore(u_gTarget3Out, p, t.target[3]);
 #endif
 #endif
 }

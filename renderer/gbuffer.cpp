@@ -42,7 +42,12 @@ const gl::Framebuffer& GBuffer::prepare(const FrameTargets& frame) {
             // Emissive and occlusion in a third target only where the scene has them (gbuffer_layout.glsl).
             targets_.emplace_back("gbuffer.distance-normal-roughness", GL_RGBA32F, width_, height_);
             targets_.emplace_back("gbuffer.albedo", GL_RGBA32F, width_, height_);
-            if (gbufferExactHasExtras(materialFeatures_)) {
+            if (gbufferExactHasMaterialExtensions(materialFeatures_)) {
+                // And the specular and unlit terms in a fourth, target 2 with it (gbuffer_layout.glsl).
+                targets_.emplace_back("gbuffer.emissive-occlusion", GL_RGBA32F, width_, height_);
+                targets_.emplace_back("gbuffer.specular-unlit", GL_RGBA32F, width_, height_);
+                fbo_ = gl::Framebuffer("gbuffer", {&targets_[0], &targets_[1], &targets_[2], &targets_[3]}, &frame.depth());
+            } else if (gbufferExactHasExtras(materialFeatures_)) {
                 targets_.emplace_back("gbuffer.emissive-occlusion", GL_RGBA32F, width_, height_);
                 fbo_ = gl::Framebuffer("gbuffer", {&targets_[0], &targets_[1], &targets_[2]}, &frame.depth());
             } else {
@@ -63,14 +68,19 @@ const gl::Framebuffer& GBuffer::prepare(const FrameTargets& frame) {
     return fbo_;
 }
 
+namespace {
+// Targets 0 to 2 have consecutive units; the exact layout's fourth shares a unit (bindings.h).
+constexpr GLuint kTextureUnits[] = {ML_TEX_GBUFFER0, ML_TEX_GBUFFER1, ML_TEX_GBUFFER2, ML_TEX_GBUFFER3};
+constexpr GLuint kImageUnits[] = {ML_IMG_GBUFFER0, ML_IMG_GBUFFER1, ML_IMG_GBUFFER2, ML_IMG_GBUFFER3};
+}  // namespace
+
 void GBuffer::bindForReading() const {
-    for (std::size_t i = 0; i < targets_.size(); ++i) glBindTextureUnit(ML_TEX_GBUFFER0 + static_cast<GLuint>(i), targets_[i].id());
+    for (std::size_t i = 0; i < targets_.size(); ++i) glBindTextureUnit(kTextureUnits[i], targets_[i].id());
 }
 
 void GBuffer::bindForWriting() const {
     for (std::size_t i = 0; i < targets_.size(); ++i)
-        glBindImageTexture(ML_IMG_GBUFFER0 + static_cast<GLuint>(i), targets_[i].id(), 0, GL_FALSE, 0, GL_WRITE_ONLY,
-                           targets_[i].format());
+        glBindImageTexture(kImageUnits[i], targets_[i].id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, targets_[i].format());
 }
 
 }  // namespace ml

@@ -25,5 +25,7 @@ const char* gbufferFormatName(GBufferFormat format);
 std::size_t gbufferBytesPerPixel(GBufferFormat format, std::uint32_t materialFeatures);
 // Does the exact layout hold its third target (emissive, occlusion) for these materials?
 bool gbufferExactHasExtras(std::uint32_t materialFeatures);
+// ...and its fourth (KHR_materials_specular / ior, KHR_materials_unlit), the third with it?
+bool gbufferExactHasMaterialExtensions(std::uint32_t materialFeatures);
 
 }  // namespace ml

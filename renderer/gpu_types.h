@@ -2,6 +2,7 @@
 // change on one side cannot silently drift from the other (glsl/include/*.glsl).
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 
 #include <glm/glm.hpp>
@@ -34,15 +35,21 @@ struct alignas(16) GpuSunLights {
 };
 static_assert(sizeof(GpuSunLights) == 16 + 32 * ML_MAX_SUN_LIGHTS);
 
-// glsl/include/material.glsl: struct Material (std430).
+// glsl/include/material.glsl: struct Material (std430). A scene without ML_FEATURE_SPECULAR
+// uploads the record up to the core slots' transforms (ML_GPU_MATERIAL_VEC4S(false) vec4s); with
+// it, the whole record (ML_GPU_MATERIAL_VEC4S(true)).
 struct alignas(16) GpuMaterial {
     glm::vec4 baseColorFactor;
     glm::vec4 emissiveCutoff;  // rgb emissive, a alpha cutoff
     glm::vec4 factors;         // metallic, roughness, normal scale, occlusion strength
     glm::uvec4 info;           // texture slot bits, TEXCOORD_1 slot bits, texture set + 1, ML_MATERIAL_* bits
     glm::vec4 uvTransforms[2 * ML_TEXTURE_SLOTS];  // per slot: mat2 columns, offset
+    // KHR_materials_ior and KHR_materials_specular: rgb ((ior - 1) / (ior + 1))^2 x specularColorFactor
+    // (the colour texture multiplies it, then it is clamped to 1), a specularFactor.
+    glm::vec4 specular;
 };
-static_assert(sizeof(GpuMaterial) == 64 + 32 * ML_TEXTURE_SLOTS);
+static_assert(sizeof(GpuMaterial) == 16 * ML_GPU_MATERIAL_VEC4S(true));
+static_assert(offsetof(GpuMaterial, uvTransforms) + 32 * ML_CORE_TEXTURE_SLOTS == 16 * ML_GPU_MATERIAL_VEC4S(false));
 
 // glsl/include/frame_uniforms.glsl: FrameUniformsBlock (std140).
 struct alignas(16) FrameUniforms {

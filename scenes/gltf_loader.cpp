@@ -182,7 +182,8 @@ bool isModelledGltfExtension(const std::string& name) {
     // are read by the accessors; compressed geometry is decoded (gltf_draco, gltf_meshopt) and
     // GPU instances flattened (gltf_instancing).
     return name == "KHR_lights_punctual" || name == "KHR_mesh_quantization" || name == "KHR_texture_transform" ||
-           name == "KHR_materials_emissive_strength" || name == "KHR_draco_mesh_compression" ||
+           name == "KHR_materials_emissive_strength" || name == "KHR_materials_unlit" || name == "KHR_materials_ior" ||
+           name == "KHR_materials_specular" || name == "KHR_draco_mesh_compression" ||
            name == "EXT_meshopt_compression" || name == "EXT_mesh_gpu_instancing";
 }
 

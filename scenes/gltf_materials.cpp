@@ -96,6 +96,14 @@ bool readNumbers(const tinygltf::Value& v, std::size_t n, double* out) {
     return true;
 }
 
+// The "extensions" object of a JSON textureInfo, as tinygltf gives a parsed one's.
+tinygltf::ExtensionMap extensionsOf(const tinygltf::Value& info) {
+    tinygltf::ExtensionMap extensions;
+    if (info.Has("extensions") && info.Get("extensions").IsObject())
+        for (const std::string& key : info.Get("extensions").Keys()) extensions[key] = info.Get("extensions").Get(key);
+    return extensions;
+}
+
 }  // namespace
 
 Material MaterialConverter::convertMaterial(std::size_t index) {
@@ -156,7 +164,73 @@ Material MaterialConverter::convertMaterial(std::size_t index) {
     }
     m.emissiveTexture = textureRef(what + " emissiveTexture", source.emissiveTexture.index, source.emissiveTexture.texCoord,
                                    source.emissiveTexture.extensions, true);
+    convertMaterialExtensions(source, what, m);
     return m;
+}
+
+namespace {
+
+// A number field of an extension object, or `fallback` where it is absent; not a finite number: fail.
+double extensionNumber(const std::string& path, const std::string& what, const tinygltf::Value& object, const char* extension,
+                       const char* field, double fallback) {
+    if (!object.Has(field)) return fallback;
+    const tinygltf::Value& v = object.Get(field);
+    const double x = v.IsNumber() || v.IsInt() ? v.GetNumberAsDouble() : std::nan("");
+    if (!finite(x)) fail(path, what + ": " + extension + " " + field + " is not a finite number");
+    return x;
+}
+
+}  // namespace
+
+void MaterialConverter::convertMaterialExtensions(const tinygltf::Material& source, const std::string& what, Material& m) {
+    const auto extension = [&](const char* name) -> const tinygltf::Value* {
+        const auto it = source.extensions.find(name);
+        if (it == source.extensions.end()) return nullptr;
+        if (!it->second.IsObject()) fail(path_, what + ": " + name + " is not a JSON object");
+        return &it->second;
+    };
+    // KHR_materials_unlit: an empty object; the material's base colour is what it shows. The
+    // extension asks viewers to ignore the other extensions of such a material (ior, specular).
+    if (extension("KHR_materials_unlit") != nullptr) {
+        m.unlit = true;
+        return;
+    }
+    if (const tinygltf::Value* ior = extension("KHR_materials_ior")) {
+        const double v = extensionNumber(path_, what, *ior, "KHR_materials_ior", "ior", 1.5);
+        // The schema allows 0 (F0 = 1, the specular-glossiness conversion) and [1, inf).
+        if (v != 0.0 && (v < 1.0 || v > 1e6))
+            fail(path_, what + ": KHR_materials_ior ior " + number(v) + " is neither 0 nor in [1, 1e6]");
+        m.ior = static_cast<float>(v);
+    }
+    if (const tinygltf::Value* spec = extension("KHR_materials_specular")) {
+        const double factor = extensionNumber(path_, what, *spec, "KHR_materials_specular", "specularFactor", 1.0);
+        if (factor < 0.0 || factor > 1.0)
+            fail(path_, what + ": KHR_materials_specular specularFactor " + number(factor) + " is outside [0, 1]");
+        m.specularFactor = static_cast<float>(factor);
+        if (spec->Has("specularColorFactor")) {
+            double c[3];
+            if (!readNumbers(spec->Get("specularColorFactor"), 3, c) || c[0] < 0.0 || c[1] < 0.0 || c[2] < 0.0 ||
+                c[0] > 1e6 || c[1] > 1e6 || c[2] > 1e6)
+                fail(path_, what + ": KHR_materials_specular specularColorFactor is not 3 numbers in [0, 1e6]");
+            m.specularColorFactor = glm::vec3(static_cast<float>(c[0]), static_cast<float>(c[1]), static_cast<float>(c[2]));
+        }
+        if (spec->Has("specularTexture"))
+            m.specularTexture = extensionTextureRef(what + " KHR_materials_specular specularTexture", spec->Get("specularTexture"), false);
+        if (spec->Has("specularColorTexture"))
+            m.specularColorTexture =
+                extensionTextureRef(what + " KHR_materials_specular specularColorTexture", spec->Get("specularColorTexture"), true);
+    }
+}
+
+TextureRef MaterialConverter::extensionTextureRef(const std::string& what, const tinygltf::Value& info, bool srgb) {
+    if (!info.IsObject() || !info.Has("index") || !info.Get("index").IsInt())
+        fail(path_, what + ": not a textureInfo (an object with an integer index)");
+    int texCoord = 0;
+    if (info.Has("texCoord")) {
+        if (!info.Get("texCoord").IsInt()) fail(path_, what + ": texCoord is not an integer");
+        texCoord = info.Get("texCoord").GetNumberAsInt();
+    }
+    return textureRef(what, info.Get("index").GetNumberAsInt(), texCoord, extensionsOf(info), srgb);
 }
 
 TextureRef MaterialConverter::textureRef(const std::string& what, int textureIndex, int texCoord,
@@ -305,6 +379,18 @@ void addIfPresent(std::vector<MaterialTexture>& out, const char* slot, const Inf
     if (info.index >= 0) out.push_back({slot, effectiveTexCoord(info.texCoord, info.extensions)});
 }
 
+// A textureInfo inside a material extension (KHR_materials_specular's), where it is well formed
+// (convertMaterial fails on the rest, naming it).
+void addExtensionTexture(std::vector<MaterialTexture>& out, const tinygltf::Material& material, const char* extension,
+                         const char* slot) {
+    const auto it = material.extensions.find(extension);
+    if (it == material.extensions.end() || !it->second.IsObject() || !it->second.Has(slot)) return;
+    const tinygltf::Value& info = it->second.Get(slot);
+    if (!info.IsObject() || !info.Has("index") || !info.Get("index").IsInt()) return;
+    const int texCoord = info.Has("texCoord") && info.Get("texCoord").IsInt() ? info.Get("texCoord").GetNumberAsInt() : 0;
+    out.push_back({slot, effectiveTexCoord(texCoord, extensionsOf(info))});
+}
+
 }  // namespace
 
 std::vector<MaterialTexture> texturesOf(const tinygltf::Material& material) {
@@ -314,6 +400,10 @@ std::vector<MaterialTexture> texturesOf(const tinygltf::Material& material) {
     addIfPresent(out, "normalTexture", material.normalTexture);
     addIfPresent(out, "occlusionTexture", material.occlusionTexture);
     addIfPresent(out, "emissiveTexture", material.emissiveTexture);
+    if (material.extensions.count("KHR_materials_unlit") == 0) {  // unlit: the extension's maps are never read
+        addExtensionTexture(out, material, "KHR_materials_specular", "specularTexture");
+        addExtensionTexture(out, material, "KHR_materials_specular", "specularColorTexture");
+    }
     return out;
 }
 

@@ -39,6 +39,10 @@ private:
     // ("materials[2] 'Leaves' normalTexture"). `srgb`: a colour texture (base colour, emissive).
     TextureRef textureRef(const std::string& what, int textureIndex, int texCoord, const tinygltf::ExtensionMap& extensions,
                           bool srgb);
+    // A textureInfo given inside a material extension (a JSON object: index, texCoord, extensions).
+    TextureRef extensionTextureRef(const std::string& what, const tinygltf::Value& info, bool srgb);
+    // KHR_materials_unlit, KHR_materials_ior and KHR_materials_specular into m.
+    void convertMaterialExtensions(const tinygltf::Material& source, const std::string& what, Material& m);
     int imageFor(std::size_t index, bool srgb);
     int samplerFor(std::size_t index);
 

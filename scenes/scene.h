@@ -92,8 +92,23 @@ struct Material {
     // both sides, lit with the normal as given (glTF asks for it reversed on the back face; not
     // modelled yet, alike in every method).
     bool doubleSided = false;
+    // KHR_materials_unlit: shown as its base colour (factor x texture x COLOR_0), lit by nothing.
+    bool unlit = false;
+    // KHR_materials_ior and KHR_materials_specular (docs/lights-and-shading.md): the dielectric's
+    // F0 is min(((ior - 1) / (ior + 1))^2 x specular colour, 1), its Fresnel weighted by the
+    // specular factor. The defaults are glTF's plain dielectric (F0 0.04, weight 1).
+    float ior = 1.5f;                          // 0 (F0 = 1) or at least 1
+    float specularFactor = 1.0f;               // [0, 1]
+    TextureRef specularTexture;                // linear; A is the factor
+    glm::vec3 specularColorFactor{1.0f};       // linear, >= 0 (may exceed 1)
+    TextureRef specularColorTexture;           // sRGB; RGB is the colour
 
     bool alphaTested() const { return alphaMode == AlphaMode::Mask; }
+    // Does the material ask for anything but glTF's default dielectric Fresnel?
+    bool specularModelled() const {
+        return !unlit && (ior != 1.5f || specularFactor != 1.0f || specularColorFactor != glm::vec3(1.0f) ||
+                          specularTexture.present() || specularColorTexture.present());
+    }
     bool blended() const { return alphaMode == AlphaMode::Blend; }
 };
 

@@ -121,8 +121,12 @@
 #define ML_RASTER_SMALL_PIXELS 64    // ...and at most this many pixel centres of its bounds
 // Material::info.w bits.
 #define ML_MATERIAL_DOUBLE_SIDED 1u
-// vec4s in a material (glsl/include/material.glsl, GpuMaterial); info is the fourth.
-#define ML_GPU_MATERIAL_VEC4S (4 + 2 * ML_TEXTURE_SLOTS)
+#define ML_MATERIAL_UNLIT 2u  // KHR_materials_unlit: the base colour, no lighting
+// vec4s in a material (glsl/include/material.glsl, GpuMaterial); info is the fourth. A scene whose
+// materials use KHR_materials_specular or KHR_materials_ior (ML_FEATURE_SPECULAR) has the
+// specular slots' transforms and one vec4 more (GpuMaterialSpecular); every other scene's records
+// keep the five core slots, so its shaders read what they read without the extension.
+#define ML_GPU_MATERIAL_VEC4S(specular) (4 + 2 * ((specular) ? ML_TEXTURE_SLOTS : ML_CORE_TEXTURE_SLOTS) + ((specular) ? 1 : 0))
 // Radix sort (glsl/radix_sort.comp) and z-binning (--assign zbin, glsl/zbin_assign.comp). Kept
 // below 32: llvmpipe offers 32 storage-buffer bindings.
 #define ML_SSBO_RADIX_KEYS_IN 20       // keys to sort (one pass reads these...)
@@ -171,12 +175,19 @@
 #define ML_TEX_NORMAL 7
 #define ML_TEX_OCCLUSION 8
 #define ML_TEX_EMISSIVE 9
+// KHR_materials_specular's maps share units with --shadows sampled's reuse and filter inputs: those
+// passes sample no material, and every pass binds what it samples before it runs.
+#define ML_TEX_SPECULAR 12
+#define ML_TEX_SPECULAR_COLOR 13
 
 #define ML_TEX_DEPTH 1
 #define ML_TEX_GBUFFER0 2
 #define ML_TEX_GBUFFER1 3
 #define ML_TEX_GBUFFER2 4
 #define ML_TEX_VISIBILITY 5
+// The exact G-buffer's fourth target (specular, unlit), read by the lighting, which samples no
+// material and no shadow history (shares the previous guide's unit, read only by the reuse pass).
+#define ML_TEX_GBUFFER3 14
 #define ML_TEX_RESOLVE_SOURCE 10  // the methods' colour (multisampled or supersampled), read by the resolve
 #define ML_TEX_SHADOW_ALPHA 11    // --shadows rays: the MASK images' alpha, a layer each (renderer/raytracing/shadow_alpha.h)
 // --shadows sampled (renderer/raytracing/sampled_shadows.h): what the lighting pass left, read by
@@ -197,6 +208,9 @@
 #define ML_IMG_SHADOW_LIGHT 5     // --shadows sampled: written by the compute lighting (ML_TEX_SHADOW_LIGHT)...
 #define ML_IMG_SHADOW_GUIDE 6     // ...and ML_TEX_SHADOW_GUIDE
 #define ML_IMG_SHADOW_HISTORY 7   // the reused ratio this frame (shadow_temporal.comp)
+// The exact G-buffer's fourth target, written by the visibility resolve, which runs after the
+// compute raster's depth (unit 5) and before the lighting writes the shadow images.
+#define ML_IMG_GBUFFER3 5
 // --shadows sampled: the rays the compute lighting drew, traced by glsl/shadow_trace.comp; rows of
 // the frame's height a layer: the rays' origin, then each draw's target (sampled_shadow_lighting.glsl).
 // Shares its unit with the history: the reuse pass, which writes that, reads no rays.
@@ -208,7 +222,10 @@
 #define ML_SLOT_NORMAL 2
 #define ML_SLOT_OCCLUSION 3
 #define ML_SLOT_EMISSIVE 4
-#define ML_TEXTURE_SLOTS 5
+#define ML_SLOT_SPECULAR 5        // KHR_materials_specular specularTexture (A)
+#define ML_SLOT_SPECULAR_COLOR 6  // KHR_materials_specular specularColorTexture (RGB, sRGB)
+#define ML_TEXTURE_SLOTS 7
+#define ML_CORE_TEXTURE_SLOTS 5   // the slots every material record holds (the specular ones: ML_FEATURE_SPECULAR)
 
 // What a scene's materials use (ML_MATERIAL_FEATURES, a bit mask): every shader that samples a
 // material is compiled with only these paths, so a scene that uses none of them pays nothing.
@@ -222,6 +239,9 @@
 #define ML_FEATURE_VERTEX_COLOR 128        // COLOR_0
 #define ML_FEATURE_ALPHA_TEST 256          // some material is MASK
 #define ML_FEATURE_BLEND 512               // some material is BLEND: the transparent pass exists
+#define ML_FEATURE_UNLIT 1024              // some material is KHR_materials_unlit
+#define ML_FEATURE_SPECULAR 2048           // some material sets KHR_materials_specular or KHR_materials_ior
+#define ML_FEATURE_SPECULAR_MAP 4096       // ...with a specularTexture or specularColorTexture
 
 // Light types (docs/lights-and-shading.md). A point light stores this as its cone cosines: below
 // any cosine, so the spot test passes everywhere and the cone tests never reject it.

@@ -20,6 +20,11 @@
 //                  (roughness's sign bit says which; roughness is never negative). Every value as
 //                  the shading computed it, and the position with it (no depth-buffer rounding):
 //                  the lighting sees what naive's fragment sees.                               32-48 B
+//                  Where the scene has KHR_materials_specular / ior or unlit materials, a target 3
+//                  RGBA32F: the specular F0 colour rgb, the specular weight (negative: unlit),
+//                  written and read only at pixels whose values are not glTF's default (metallic's
+//                  sign bit says which), and target 2 with it.                                    64 B
+// The lossy layouts hold neither specular nor unlit (the renderer warns where a scene has them).
 // The lossy layouts lose what a bright many-light sum makes visible on glossy, normal-mapped
 // content (docs/accuracy-and-stability.md#g-buffer-precision-on-glossy-normal-mapped-surfaces).
 #include "include/material_features.glsl"
@@ -30,9 +35,13 @@
 #endif
 
 // The exact layout's target 2 (emissive, occlusion) exists where the scene has either.
-#define ML_GBUFFER_EXACT_EXTRAS (ML_HAS(ML_FEATURE_EMISSIVE) || ML_HAS(ML_FEATURE_OCCLUSION_MAP))
+// Its target 3 (specular, unlit) where the scene has either; target 2 then exists too.
+#define ML_GBUFFER_EXACT_MATERIAL_EXTENSIONS (ML_HAS(ML_FEATURE_SPECULAR) || ML_HAS(ML_FEATURE_UNLIT))
+#define ML_GBUFFER_EXACT_EXTRAS (ML_HAS(ML_FEATURE_EMISSIVE) || ML_HAS(ML_FEATURE_OCCLUSION_MAP) || ML_GBUFFER_EXACT_MATERIAL_EXTENSIONS)
 
-#if ML_GBUFFER_FORMAT == ML_GBUFFER_STANDARD || (ML_GBUFFER_FORMAT == ML_GBUFFER_EXACT && ML_GBUFFER_EXACT_EXTRAS)
+#if ML_GBUFFER_FORMAT == ML_GBUFFER_EXACT && ML_GBUFFER_EXACT_MATERIAL_EXTENSIONS
+#define ML_GBUFFER_FLOAT_TARGETS 4
+#elif ML_GBUFFER_FORMAT == ML_GBUFFER_STANDARD || (ML_GBUFFER_FORMAT == ML_GBUFFER_EXACT && ML_GBUFFER_EXACT_EXTRAS)
 #define ML_GBUFFER_FLOAT_TARGETS 3
 #elif ML_GBUFFER_FORMAT == ML_GBUFFER_EXACT
 #define ML_GBUFFER_FLOAT_TARGETS 2
@@ -50,7 +59,7 @@
 
 // One pixel of the G-buffer as its targets hold it: float targets, or the one packed target.
 struct GBufferTexel {
-    vec4 target[3];
+    vec4 target[4];
     uvec4 bits;  // the packed layout's one RGBA32UI texel
 };
 
@@ -105,9 +114,19 @@ bool gbufferUsesTarget2(GBufferTexel t) {
 #endif
 }
 
+// The exact layout flags a pixel whose target 3 holds a material extension's values in the sign
+// bit of its metallic (never negative either).
+bool gbufferUsesTarget3(GBufferTexel t) {
+#if ML_GBUFFER_FORMAT == ML_GBUFFER_EXACT && ML_GBUFFER_EXACT_MATERIAL_EXTENSIONS
+    return (floatBitsToUint(t.target[1].w) & kGBufferTarget2Flag) != 0u;
+#else
+    return false;
+#endif
+}
+
 GBufferTexel encodeGBuffer(SurfacePoint s) {
     GBufferTexel t;
-    t.target[0] = t.target[1] = t.target[2] = vec4(0.0);
+    t.target[0] = t.target[1] = t.target[2] = t.target[3] = vec4(0.0);
     t.bits = uvec4(0u);
 #if ML_GBUFFER_FORMAT == ML_GBUFFER_EXACT
     uint roughnessBits = floatBitsToUint(s.roughness);
@@ -115,8 +134,25 @@ GBufferTexel encodeGBuffer(SurfacePoint s) {
     t.target[2] = vec4(s.emissive, s.occlusion);
     if (s.emissive != vec3(0.0) || s.occlusion != 1.0) roughnessBits |= kGBufferTarget2Flag;
 #endif
+    uint metallicBits = floatBitsToUint(s.metallic);
+#if ML_GBUFFER_EXACT_MATERIAL_EXTENSIONS
+    bool extended = false;
+#if ML_HAS(ML_FEATURE_SPECULAR)
+    t.target[3] = vec4(s.specularF0, s.specularWeight);
+    extended = s.specularF0 != vec3(0.04) || s.specularWeight != 1.0;
+#else
+    t.target[3] = vec4(0.04, 0.04, 0.04, 1.0);
+#endif
+#if ML_HAS(ML_FEATURE_UNLIT)
+    if (s.unlitMaterial) {
+        t.target[3].w = -1.0;
+        extended = true;
+    }
+#endif
+    if (extended) metallicBits |= kGBufferTarget2Flag;
+#endif
     t.target[0] = vec4(s.rayDistance, octEncode(s.normal), uintBitsToFloat(roughnessBits));
-    t.target[1] = vec4(s.baseColor, s.metallic);
+    t.target[1] = vec4(s.baseColor, uintBitsToFloat(metallicBits));
 #elif ML_GBUFFER_FORMAT == ML_GBUFFER_STANDARD
     t.target[0] = vec4(s.normal, s.occlusion);
     t.target[1] = vec4(s.baseColor, s.metallic);
@@ -141,12 +177,23 @@ void decodeGBuffer(GBufferTexel t, inout SurfacePoint s) {
     s.normal = octDecode(t.target[0].yz);
     s.roughness = uintBitsToFloat(floatBitsToUint(t.target[0].w) & ~kGBufferTarget2Flag);
     s.baseColor = t.target[1].rgb;
-    s.metallic = t.target[1].w;
+    s.metallic = uintBitsToFloat(floatBitsToUint(t.target[1].w) & ~kGBufferTarget2Flag);
     s.occlusion = 1.0;
     if (gbufferUsesTarget2(t)) {
         s.emissive = t.target[2].rgb;
         s.occlusion = t.target[2].w;
     }
+#if ML_GBUFFER_EXACT_MATERIAL_EXTENSIONS
+    // Unflagged pixels hold glTF's defaults (material.glsl gives 0.04 and 1 to the bit there).
+    vec4 extension = gbufferUsesTarget3(t) ? t.target[3] : vec4(0.04, 0.04, 0.04, 1.0);
+#if ML_HAS(ML_FEATURE_SPECULAR)
+    s.specularF0 = extension.rgb;
+    s.specularWeight = max(extension.w, 0.0);
+#endif
+#if ML_HAS(ML_FEATURE_UNLIT)
+    s.unlitMaterial = extension.w < 0.0;
+#endif
+#endif
 #elif ML_GBUFFER_FORMAT == ML_GBUFFER_STANDARD
     s.normal = normalize(t.target[0].xyz);  // 16-bit storage: restore unit length
     s.occlusion = t.target[0].w;
@@ -172,6 +219,16 @@ void decodeGBuffer(GBufferTexel t, inout SurfacePoint s) {
     s.metallic = t.target[0].w;
     s.baseColor = t.target[1].rgb;
     s.occlusion = t.target[1].w;
+#endif
+#if ML_GBUFFER_FORMAT != ML_GBUFFER_EXACT
+    // The lossy layouts hold no material extension: glTF's default dielectric, lit.
+#if ML_HAS(ML_FEATURE_SPECULAR)
+    s.specularF0 = vec3(0.04);
+    s.specularWeight = 1.0;
+#endif
+#if ML_HAS(ML_FEATURE_UNLIT)
+    s.unlitMaterial = false;
+#endif
 #endif
     deriveShadingTerms(s);
 }

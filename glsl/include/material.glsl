@@ -3,6 +3,14 @@
 // ML_MATERIAL_FEATURES (bindings.h, ML_FEATURE_*), so their cost is paid only where used.
 #include "include/material_features.glsl"
 
+// The slots a material record holds (bindings.h, ML_GPU_MATERIAL_VEC4S): the specular pair only
+// in scenes that model it.
+#if ML_HAS(ML_FEATURE_SPECULAR)
+#define ML_MATERIAL_SLOTS ML_TEXTURE_SLOTS
+#else
+#define ML_MATERIAL_SLOTS ML_CORE_TEXTURE_SLOTS
+#endif
+
 struct Material {
     vec4 baseColorFactor;  // linear
     vec4 emissiveCutoff;   // rgb: emissive factor times strength, a: alpha cutoff
@@ -11,7 +19,12 @@ struct Material {
                            // z: texture set + 1 (0: none), w: ML_MATERIAL_* bits
     // Per slot, KHR_texture_transform as uv' = mat2(xy, zw) * uv + offset: [2 slot] the matrix's
     // columns, [2 slot + 1].xy the offset.
-    vec4 uvTransforms[2 * ML_TEXTURE_SLOTS];
+    vec4 uvTransforms[2 * ML_MATERIAL_SLOTS];
+#if ML_HAS(ML_FEATURE_SPECULAR)
+    // KHR_materials_ior and KHR_materials_specular: rgb ((ior - 1) / (ior + 1))^2 x specularColorFactor,
+    // a specularFactor.
+    vec4 specular;
+#endif
 };
 layout(std430, binding = ML_SSBO_MATERIALS) readonly buffer MaterialBuffer { Material materials[]; };
 // sRGB textures (base colour, emissive) are stored as such and sampled as linear.
@@ -20,6 +33,10 @@ layout(binding = ML_TEX_METALLIC_ROUGHNESS) uniform sampler2D u_metallicRoughnes
 layout(binding = ML_TEX_NORMAL) uniform sampler2D u_normalTexture;
 layout(binding = ML_TEX_OCCLUSION) uniform sampler2D u_occlusionTexture;
 layout(binding = ML_TEX_EMISSIVE) uniform sampler2D u_emissiveTexture;
+#if ML_HAS(ML_FEATURE_SPECULAR_MAP)
+layout(binding = ML_TEX_SPECULAR) uniform sampler2D u_specularTexture;             // linear; A
+layout(binding = ML_TEX_SPECULAR_COLOR) uniform sampler2D u_specularColorTexture;  // sRGB; RGB
+#endif
 
 // Where a point samples its material: its UV sets and their screen-space gradients, which every
 // texture read takes explicitly (textureGrad). Every pass, raster or compute, builds them from the
@@ -112,6 +129,20 @@ SurfacePoint surfaceFromMaterial(Material m, vec3 worldPos, vec3 worldNormal, ve
 #if ML_HAS(ML_FEATURE_EMISSIVE_MAP)
     if (hasTexture(m, ML_SLOT_EMISSIVE)) s.emissive *= sampleMaterialTexture(u_emissiveTexture, m, ML_SLOT_EMISSIVE, c).rgb;
 #endif
+#endif
+#if ML_HAS(ML_FEATURE_SPECULAR)
+    // The dielectric's F0 colour, clamped after the texture (KHR_materials_specular), and its weight.
+    vec3 specularColor = m.specular.rgb;
+    s.specularWeight = m.specular.a;
+#if ML_HAS(ML_FEATURE_SPECULAR_MAP)
+    if (hasTexture(m, ML_SLOT_SPECULAR)) s.specularWeight *= sampleMaterialTexture(u_specularTexture, m, ML_SLOT_SPECULAR, c).a;
+    if (hasTexture(m, ML_SLOT_SPECULAR_COLOR))
+        specularColor *= sampleMaterialTexture(u_specularColorTexture, m, ML_SLOT_SPECULAR_COLOR, c).rgb;
+#endif
+    s.specularF0 = min(specularColor, vec3(1.0));
+#endif
+#if ML_HAS(ML_FEATURE_UNLIT)
+    s.unlitMaterial = (m.info.w & ML_MATERIAL_UNLIT) != 0u;
 #endif
     deriveShadingTerms(s);
     return s;

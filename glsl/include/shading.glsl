@@ -21,6 +21,18 @@
 // continuous at the terminator and a tiny error in a rebuilt position or normal cannot switch a
 // highlight on or off. --specular off leaves it out: the diffuse term only. Emissive surfaces
 // glow but light nothing else: only the scene's lights do.
+//
+// Where the scene has them (ML_FEATURE_*, material_features.glsl), two glTF extensions change this:
+//   KHR_materials_ior, KHR_materials_specular: the dielectric's F0 is w * c, c = min(((ior - 1) /
+//     (ior + 1))^2 * specularColor, 1), w the specular weight, and its F90 is w, so
+//       f0 = mix(w c, base, metallic),  F = f0 + (mix(w, 1, metallic) - f0) (1 - |V.H|)^5,
+//     and the diffuse is weighted by 1 - Fd, Fd the same Fresnel from f0 = mix(w max(c), base, metallic):
+//     the extension's max_value(dielectric Fresnel), so a coloured F0 takes its largest channel's
+//     energy from the diffuse. With c = 0.04 (ior 1.5, white) and w = 1 both are the F above, to the bit.
+//   KHR_materials_unlit: the surface shows its base colour and nothing else (no ambient, no
+//     emissive, no light: every light adds an exact zero).
+
+#include "include/material_features.glsl"
 
 #ifndef ML_SPOT_LIGHTS
 #define ML_SPOT_LIGHTS 1  // as in lights.glsl: spot paths compiled in unless the renderer says none
@@ -91,6 +103,13 @@ struct SurfacePoint {
     float roughness;
     float occlusion;  // ambient only
     vec3 emissive;    // linear radiance, added as is
+#if ML_HAS(ML_FEATURE_SPECULAR)
+    vec3 specularF0;       // KHR_materials_ior x KHR_materials_specular colour, clamped: c above
+    float specularWeight;  // KHR_materials_specular: w above
+#endif
+#if ML_HAS(ML_FEATURE_UNLIT)
+    bool unlitMaterial;    // KHR_materials_unlit
+#endif
     // Derived by deriveShadingTerms: what the light loop reads, and the unlit term, worked out
     // before the loop so that the material's inputs need not stay in registers through it.
     vec3 diffuse;
@@ -100,6 +119,10 @@ struct SurfacePoint {
     vec3 specular;    // Blinn-Phong: f0 * (s + 8) / 8
     float shininess;  // Blinn-Phong
     vec3 unlit;       // ambient * occlusion * (diffuse + f0) + emissive
+#if ML_HAS(ML_FEATURE_SPECULAR)
+    float f90;        // GGX: mix(w, 1, metallic)
+    vec3 f0Diffuse;   // GGX: mix(w max(c), base, metallic), the diffuse's Fresnel
+#endif
 };
 
 void deriveShadingTerms(inout SurfacePoint s) {
@@ -110,9 +133,19 @@ void deriveShadingTerms(inout SurfacePoint s) {
     s.alpha = max(alpha, ML_GGX_MIN_ALPHA);
     s.diffuse = s.baseColor * (1.0 - m);
     s.diffuseOverPi = s.diffuse * (1.0 / kPi);
+#if ML_HAS(ML_FEATURE_SPECULAR)
+    vec3 dielectricF0 = s.specularF0 * s.specularWeight;
+    s.f0 = mix(dielectricF0, s.baseColor, m);
+    s.f90 = s.specularWeight + m * (1.0 - s.specularWeight);  // 1 to the bit where w is 1
+    s.f0Diffuse = mix(vec3(max(dielectricF0.r, max(dielectricF0.g, dielectricF0.b))), s.baseColor, m);
+#else
     s.f0 = mix(vec3(0.04), s.baseColor, m);
+#endif
     s.specular = s.f0 * ((s.shininess + 8.0) / 8.0);
     s.unlit = ambientStrength() * s.occlusion * (s.diffuse + s.f0) + s.emissive;
+#if ML_HAS(ML_FEATURE_UNLIT)
+    if (s.unlitMaterial) s.unlit = s.baseColor;
+#endif
 }
 
 // glTF's angular attenuation: linear in the cosine between the outer and inner cones, squared.
@@ -138,13 +171,24 @@ vec3 ggxBrdf(SurfacePoint s, vec3 viewDir, vec3 l, float nDotL) {
     float a2 = s.alpha * s.alpha;
     float q = 1.0 - vDotH;
     float q2 = q * q;
-    vec3 fresnel = s.f0 + (1.0 - s.f0) * (q2 * q2 * q);
+    float q5 = q2 * q2 * q;
+#if ML_HAS(ML_FEATURE_SPECULAR)
+    vec3 fresnel = s.f0 + (s.f90 - s.f0) * q5;
+    vec3 diffuseFresnel = s.f0Diffuse + (s.f90 - s.f0Diffuse) * q5;
+#else
+    vec3 fresnel = s.f0 + (1.0 - s.f0) * q5;
+#endif
     float dDenominator = dot(nCrossH, nCrossH) + nDotH * nDotH * a2;  // (N.H)^2 (alpha^2 - 1) + 1
     float visibilityDenominator = nDotL * sqrt(nDotV * nDotV * (1.0 - a2) + a2) + nDotV * sqrt(nDotL * nDotL * (1.0 - a2) + a2);
     // D * Vis = (a2 / pi) / dDenominator^2 * 0.5 / visibilityDenominator, in one division.
     float distributionVisibility = (0.5 / kPi) * a2 / (dDenominator * dDenominator * visibilityDenominator);
     // (1 - F) diffuse / pi + F D Vis, as one multiply-add a channel.
+#if ML_HAS(ML_FEATURE_SPECULAR)
+    // (1 - Fd) diffuse / pi + F D Vis: the last term is an exact zero where Fd is F.
+    return s.diffuseOverPi + fresnel * (distributionVisibility - s.diffuseOverPi) + (fresnel - diffuseFresnel) * s.diffuseOverPi;
+#else
     return s.diffuseOverPi + fresnel * (distributionVisibility - s.diffuseOverPi);
+#endif
 }
 
 // A light of colour `color` arriving from unit direction l, weighted by its falloff (and cone),
@@ -152,6 +196,9 @@ vec3 ggxBrdf(SurfacePoint s, vec3 viewDir, vec3 l, float nDotL) {
 vec3 shadeIncoming(SurfacePoint s, vec3 viewDir, vec3 l, vec3 color, float weight) {
     float nDotL = dot(s.normal, l);
     if (nDotL <= 0.0) return vec3(0.0);
+#if ML_HAS(ML_FEATURE_UNLIT)
+    if (s.unlitMaterial) return vec3(0.0);  // lit by nothing (and so no shadow ray either)
+#endif
     if (ggxEnabled()) {
         if (!specularEnabled()) return color * (weight * nDotL) * s.diffuseOverPi;
         return color * (weight * nDotL) * ggxBrdf(s, viewDir, l, nDotL);

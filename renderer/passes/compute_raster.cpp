@@ -120,10 +120,13 @@ ComputeRaster::ComputeRaster(std::uint32_t materialFeatures, bool packedAtomics,
     for (int pass = 0; pass < passes_; ++pass) {
         const shaders::Defines defines = rasterDefines(packed_, pass);
         const std::string suffix = passes_ == 1 ? "" : (pass == 0 ? ".depth" : ".ids");
-        setup_[pass] = gl::Program::compute("compute_raster_triangles.comp", defines);
+        const shaders::Defines features = materialFeatureDefines(materialFeatures);
+        // The setup reads each triangle's material bits, at the scene's record stride.
+        shaders::Defines setup = defines;
+        setup.insert(setup.end(), features.begin(), features.end());
+        setup_[pass] = gl::Program::compute("compute_raster_triangles.comp", setup);
         tiles_[pass] = gl::Program::compute("compute_raster_tiles.comp", defines);
         shaders::Defines list = shaders::withDefine(defines, "ML_COMPUTE_RASTER", "1");
-        const shaders::Defines features = materialFeatureDefines(materialFeatures);
         list.insert(list.end(), features.begin(), features.end());
         hardwareList_[pass] = gl::Program("visibility.compute-raster.hardware" + suffix,
                                           {{GL_VERTEX_SHADER, "compute_raster_hardware.vert"}, {GL_FRAGMENT_SHADER, "visibility.frag"}},

@@ -47,6 +47,18 @@ ShadingTerms shadingTerms(const glm::vec3& baseColor, float metallic, float roug
     t.diffuse = baseColor * (1.0f - m);
     t.f0 = glm::mix(glm::vec3(0.04f), baseColor, m);
     t.specular = t.f0 * ((t.shininess + 8.0f) / 8.0f);
+    t.f0Diffuse = t.f0;
+    return t;
+}
+
+ShadingTerms shadingTerms(const SurfaceSample& s) {
+    ShadingTerms t = shadingTerms(s.baseColor, s.metallic, s.roughness);
+    const float m = std::clamp(s.metallic, 0.0f, 1.0f);
+    const glm::vec3 dielectricF0 = s.specularF0 * s.specularWeight;
+    t.f0 = glm::mix(dielectricF0, s.baseColor, m);
+    t.f90 = s.specularWeight + m * (1.0f - s.specularWeight);
+    t.f0Diffuse = glm::mix(glm::vec3(std::max({dielectricF0.r, dielectricF0.g, dielectricF0.b})), s.baseColor, m);
+    t.specular = t.f0 * ((t.shininess + 8.0f) / 8.0f);
     return t;
 }
 
@@ -58,18 +70,21 @@ glm::vec3 ggxBrdf(const ShadingTerms& t, const glm::vec3& n, const glm::vec3& v,
     const float vDotH = std::abs(glm::dot(v, h));
     const glm::vec3 nCrossH = glm::cross(n, h);
     const float a2 = t.alpha * t.alpha;
-    const glm::vec3 fresnel = t.f0 + (1.0f - t.f0) * std::pow(1.0f - vDotH, 5.0f);
+    const float q5 = std::pow(1.0f - vDotH, 5.0f);
+    const glm::vec3 fresnel = t.f0 + (t.f90 - t.f0) * q5;
+    const glm::vec3 diffuseFresnel = t.f0Diffuse + (t.f90 - t.f0Diffuse) * q5;
     const float dDenominator = glm::dot(nCrossH, nCrossH) + nDotH * nDotH * a2;
     const float visibilityDenominator =
         nDotL * std::sqrt(nDotV * nDotV * (1.0f - a2) + a2) + nDotV * std::sqrt(nDotL * nDotL * (1.0f - a2) + a2);
     const float distributionVisibility = (0.5f / kPi) * a2 / (dDenominator * dDenominator * visibilityDenominator);
     const glm::vec3 diffuseOverPi = t.diffuse * (1.0f / kPi);
-    return diffuseOverPi + fresnel * (distributionVisibility - diffuseOverPi);
+    return diffuseOverPi + fresnel * (distributionVisibility - diffuseOverPi) + (fresnel - diffuseFresnel) * diffuseOverPi;
 }
 
 glm::vec3 shadeReference(const SurfaceSample& s, const glm::vec3& eye, const std::vector<Light>& lights, float ambient,
                          bool specular, const LightModel& model) {
-    const ShadingTerms t = shadingTerms(s.baseColor, s.metallic, s.roughness);
+    if (s.unlit) return s.baseColor;
+    const ShadingTerms t = shadingTerms(s);
     glm::vec3 color = ambient * s.occlusion * (t.diffuse + t.f0) + s.emissive;
     const glm::vec3 v = glm::normalize(eye - s.position);
     // A light of colour c from unit direction `dir`, weighted by its falloff and cone.

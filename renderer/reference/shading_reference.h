@@ -32,6 +32,11 @@ struct SurfaceSample {
     float roughness = 0.5f;
     float occlusion = 1.0f;       // ambient only
     glm::vec3 emissive{0.0f};     // added as is; lights nothing else
+    // KHR_materials_ior x KHR_materials_specular: the dielectric's F0 colour, min(((ior - 1) /
+    // (ior + 1))^2 x specular colour, 1), and the specular weight (glTF's defaults: 0.04 and 1).
+    glm::vec3 specularF0{0.04f};
+    float specularWeight = 1.0f;
+    bool unlit = false;           // KHR_materials_unlit: the base colour, lit by nothing
 };
 
 // The metallic-roughness material's terms, shared by every method.
@@ -41,12 +46,16 @@ struct ShadingTerms {
     float alpha;         // GGX: roughness^2, at least ML_GGX_MIN_ALPHA
     glm::vec3 specular;  // Blinn-Phong: f0 * (shininess + 8) / 8
     float shininess;     // Blinn-Phong: 2 / alpha^2 - 2, alpha = roughness^2, clamped to [1, 8192]
+    float f90 = 1.0f;              // mix(specularWeight, 1, metallic)
+    glm::vec3 f0Diffuse{0.04f};    // mix(specularWeight max(specularF0), baseColor, metallic): the diffuse's Fresnel
 };
 ShadingTerms shadingTerms(const glm::vec3& baseColor, float metallic, float roughness);
+// The same with KHR_materials_ior / KHR_materials_specular (glsl/include/shading.glsl has the formulas).
+ShadingTerms shadingTerms(const SurfaceSample& s);
 
 // glTF's BRDF (specification, appendix B) for unit normal n, view v and light l with N.L > 0:
-// (1 - F) diffuse / pi + F D Vis, Vis the height-correlated Smith term (glsl/include/shading.glsl
-// has the formulas).
+// (1 - Fd) diffuse / pi + F D Vis, Vis the height-correlated Smith term, Fd = F but where
+// KHR_materials_specular colours F0 (glsl/include/shading.glsl has the formulas).
 glm::vec3 ggxBrdf(const ShadingTerms& t, const glm::vec3& n, const glm::vec3& v, const glm::vec3& l);
 
 // The linear radiance the shaders compute for a surface point seen from `eye`, from lights of

@@ -31,6 +31,12 @@ std::uint32_t materialFeatures(const Scene& scene) {
             f |= ML_FEATURE_EMISSIVE;
             if (uses(m.emissiveTexture)) f |= ML_FEATURE_EMISSIVE_MAP;
         }
+        if (m.unlit) f |= ML_FEATURE_UNLIT;
+        if (m.specularModelled()) {
+            f |= ML_FEATURE_SPECULAR;
+            // Either map needs both slots' records (the specular slots come as a pair).
+            if (uses(m.specularTexture) | uses(m.specularColorTexture)) f |= ML_FEATURE_SPECULAR_MAP;
+        }
         if (m.alphaTested()) f |= ML_FEATURE_ALPHA_TEST;
         if (m.blended()) f |= ML_FEATURE_BLEND;
     }
@@ -54,11 +60,19 @@ std::string describeMaterialFeatures(std::uint32_t features) {
         {ML_FEATURE_VERTEX_COLOR, "vertex colours"},
         {ML_FEATURE_ALPHA_TEST, "alpha test"},
         {ML_FEATURE_BLEND, "transparency"},
+        {ML_FEATURE_UNLIT, "unlit"},
+        {ML_FEATURE_SPECULAR, "specular and IOR"},
+        {ML_FEATURE_SPECULAR_MAP, "specular maps"},
     };
     std::string text;
     for (const auto& [bit, name] : kNames)
         if (features & bit) text += std::string(text.empty() ? "" : ", ") + name;
     return text.empty() ? "none" : text;
+}
+
+float dielectricF0(float ior) {
+    const double r = (double(ior) - 1.0) / (double(ior) + 1.0);
+    return static_cast<float>(r * r);
 }
 
 UvAffine uvAffine(const TextureTransform& t) {

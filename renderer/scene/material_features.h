@@ -19,6 +19,11 @@ shaders::Defines materialFeatureDefines(std::uint32_t features);
 // "normal maps, emissive, alpha test", or "none": for --verbose and the panel.
 std::string describeMaterialFeatures(std::uint32_t features);
 
+// KHR_materials_ior's reflectance at normal incidence, ((ior - 1) / (ior + 1))^2 (outside the
+// material: air), worked in double so that glTF's default 1.5 gives 0.04f to the bit, as the
+// shaders' constant for materials without the extension. ior 0 gives 1.
+float dielectricF0(float ior);
+
 // The 2x3 affine UV transform of KHR_texture_transform (T * R * S): columns of the linear part,
 // then the offset.
 struct UvAffine {

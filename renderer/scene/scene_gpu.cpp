@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <cstring>
 #include <limits>
 #include <map>
 #include <stdexcept>
@@ -19,8 +20,12 @@ struct DrawElementsIndirectCommand {
 };
 static_assert(sizeof(DrawElementsIndirectCommand) == 20, "GL's indirect command layout");
 
-constexpr GLuint kSlotUnits[ML_TEXTURE_SLOTS] = {ML_TEX_BASE_COLOR, ML_TEX_METALLIC_ROUGHNESS, ML_TEX_NORMAL,
-                                                 ML_TEX_OCCLUSION, ML_TEX_EMISSIVE};
+constexpr GLuint kSlotUnits[ML_TEXTURE_SLOTS] = {ML_TEX_BASE_COLOR, ML_TEX_METALLIC_ROUGHNESS, ML_TEX_NORMAL, ML_TEX_OCCLUSION,
+                                                 ML_TEX_EMISSIVE,    ML_TEX_SPECULAR,           ML_TEX_SPECULAR_COLOR};
+
+// The slots a scene's material records and texture bindings hold: the specular pair only where
+// some material models KHR_materials_specular or KHR_materials_ior.
+int materialSlots(std::uint32_t features) { return features & ML_FEATURE_SPECULAR ? ML_TEXTURE_SLOTS : ML_CORE_TEXTURE_SLOTS; }
 
 // The texture slots whose shader path this scene compiles in (a slot whose feature is off is never sampled).
 std::array<const TextureRef*, ML_TEXTURE_SLOTS> sampledSlots(const Material& m, std::uint32_t features) {
@@ -30,6 +35,10 @@ std::array<const TextureRef*, ML_TEXTURE_SLOTS> sampledSlots(const Material& m, 
     if (features & ML_FEATURE_NORMAL_MAP) slots[ML_SLOT_NORMAL] = &m.normalTexture;
     if (features & ML_FEATURE_OCCLUSION_MAP) slots[ML_SLOT_OCCLUSION] = &m.occlusionTexture;
     if ((features & ML_FEATURE_EMISSIVE_MAP) && m.emissive != glm::vec3(0.0f)) slots[ML_SLOT_EMISSIVE] = &m.emissiveTexture;
+    if ((features & ML_FEATURE_SPECULAR_MAP) && m.specularModelled()) {
+        slots[ML_SLOT_SPECULAR] = &m.specularTexture;
+        slots[ML_SLOT_SPECULAR_COLOR] = &m.specularColorTexture;
+    }
     return slots;
 }
 
@@ -101,10 +110,12 @@ SceneGpu::SceneGpu(const Scene& scene, TriangleOrder order) : features_(ml::mate
         g.baseColorFactor = m.baseColorFactor;
         g.emissiveCutoff = glm::vec4(m.emissive, m.alphaCutoff);
         g.factors = glm::vec4(m.metallic, m.roughness, m.normalScale, m.occlusionStrength);
+        g.specular = glm::vec4(dielectricF0(m.ior) * m.specularColorFactor, m.specularFactor);
+        if (m.unlit) g.info.w |= ML_MATERIAL_UNLIT;
         TextureSet set{};
         bool textured = false;
         const auto slots = sampledSlots(m, features_);
-        for (int slot = 0; slot < ML_TEXTURE_SLOTS; ++slot) {
+        for (int slot = 0; slot < materialSlots(features_); ++slot) {
             const UvAffine identity;
             g.uvTransforms[2 * slot] = glm::vec4(identity.column0, identity.column1);
             const TextureRef* ref = slots[slot];
@@ -136,7 +147,13 @@ SceneGpu::SceneGpu(const Scene& scene, TriangleOrder order) : features_(ml::mate
         materials.push_back(g);
         materialSet.push_back(-1);
     }
-    materials_ = gl::Buffer::fromSpan<GpuMaterial>("scene.materials", materials, 0);
+    // Each record as the scene's shaders declare it (material.glsl): the core slots' part alone
+    // where no material models specular, so that such a scene reads what it read before.
+    const std::size_t recordVec4s = ML_GPU_MATERIAL_VEC4S((features_ & ML_FEATURE_SPECULAR) != 0);
+    std::vector<glm::vec4> records;
+    records.resize(materials.size() * recordVec4s);
+    for (std::size_t i = 0; i < materials.size(); ++i) std::memcpy(&records[i * recordVec4s], &materials[i], recordVec4s * sizeof(glm::vec4));
+    materials_ = gl::Buffer::fromSpan<glm::vec4>("scene.materials", records, 0);
 
     const auto materialOf = [&](const DrawRange& d) { return d.material < scene.materials.size() ? d.material : 0u; };
 
@@ -232,7 +249,7 @@ const char* drawSubmissionName(DrawSubmission submission) {
 }
 
 void SceneGpu::bindTextureSet(int set) const {
-    for (int slot = 0; slot < ML_TEXTURE_SLOTS; ++slot) {
+    for (int slot = 0; slot < materialSlots(features_); ++slot) {
         const SlotBinding b = set >= 0 && set < static_cast<int>(textureSets_.size()) ? textureSets_[static_cast<std::size_t>(set)][slot]
                                                                                      : SlotBinding{};
         glBindTextureUnit(kSlotUnits[slot], b.texture >= 0 ? textures_[static_cast<std::size_t>(b.texture)].id() : white_.id());
