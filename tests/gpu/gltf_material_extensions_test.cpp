@@ -1,0 +1,150 @@
+// glTF's material extensions on files the tests write: KHR_materials_unlit, KHR_materials_ior and
+// KHR_materials_specular (factors and both maps). Every clustered method (both deferred resolves,
+// the visibility buffer, all in the exact G-buffer) is held to naive on each; the frame's pixel is
+// held to the CPU mirror (renderer/reference/shading_reference.h) and, for unlit, to the base
+// colour itself, whatever the lights.
+#include <array>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "glsl/include/bindings.h"
+#include "renderer/reference/shading_reference.h"
+#include "renderer/scene/material_features.h"
+#include "tests/gpu/gpu_test.h"
+#include "tests/scenes/gltf_test_files.h"
+
+namespace ml {
+namespace {
+
+using namespace gltf_test;
+using test::GpuTest;
+
+constexpr int kWidth = 160, kHeight = 90;
+
+// A 2x2 texture of one RGBA8 texel, nearest-filtered: the map's value is the texel to the bit.
+int addFlatTexture(Gltf& g, std::array<std::uint8_t, 4> texel) {
+    std::vector<std::uint8_t> rgba;
+    for (int i = 0; i < 4; ++i) rgba.insert(rgba.end(), texel.begin(), texel.end());
+    const int image = g.add("images", {{"uri", "data:image/png;base64," + base64(encodePng(2, 2, rgba))}});
+    const int sampler = g.add("samplers", {{"magFilter", 9728}, {"minFilter", 9728}});
+    return g.add("textures", {{"source", image}, {"sampler", sampler}});
+}
+
+float srgbToLinear(std::uint8_t v) {
+    const float c = v / 255.0f;
+    return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
+}
+
+// A point light for the clusters and a sun for the mirror's comparison (no falloff to place exactly).
+std::vector<Light> testLights() {
+    Light point{{0.4f, 0.3f, 2.0f}, 8.0f, {2.0f, 2.0f, 2.0f}};
+    Light sun;
+    sun.type = LightType::Directional;
+    sun.direction = glm::normalize(glm::vec3(-0.3f, -0.2f, -1.0f));
+    sun.color = glm::vec3(1.5f);
+    return {point, sun};
+}
+
+// The quad's point under the centre of the frame's middle pixel, as the pixel's ray meets z = 0
+// (the camera at (0, 0, 4) looking down -z, 60 degrees vertically; row 0 at the top).
+glm::vec3 middlePixelPoint() {
+    const float t = std::tan(glm::radians(30.0f)) * 4.0f;
+    const float x = ((kWidth / 2 + 0.5f) / kWidth * 2.0f - 1.0f) * t * float(kWidth) / float(kHeight);
+    const float y = (1.0f - (kHeight / 2 + 0.5f) / kHeight * 2.0f) * t;
+    return {x, y, 0.0f};
+}
+
+class GltfMaterialExtensions : public GpuTest {};
+
+// A lit wall behind an unlit quad: the quad shows its base colour to the float, in every method, with the lights on or off; its features compile in only here.
+TEST_F(GltfMaterialExtensions, UnlitShowsItsBaseColourWhateverTheLights) {
+    Gltf g;
+    const int lit = g.add("materials", {{"pbrMetallicRoughness", {{"baseColorFactor", {0.8, 0.8, 0.8, 1.0}}, {"metallicFactor", 0.0}}}});
+    const int unlit = g.add("materials", {{"pbrMetallicRoughness", {{"baseColorFactor", {0.9, 0.5, 0.25, 1.0}}}},
+                                          {"extensions", {{"KHR_materials_unlit", json::object()}}}});
+    g.doc["extensionsUsed"] = {"KHR_materials_unlit"};
+    const Scene scene = writeAndLoad(g, {square(g, -0.5f, 3.0f, lit), square(g, 0.0f, 1.0f, unlit)}, "unlit");
+    ASSERT_TRUE(scene.materials[1].unlit);
+    EXPECT_EQ(materialFeatures(scene) & (ML_FEATURE_UNLIT | ML_FEATURE_SPECULAR), std::uint32_t(ML_FEATURE_UNLIT));
+
+    const glm::vec3 expected(0.9f, 0.5f, 0.25f);
+    std::vector<float> unlitPixel[2];
+    for (const std::vector<Light>& lights : {testLights(), std::vector<Light>{}}) {
+        FrameRenderer renderer(scene, lights, test::smallFrame(scene, kFrontView, kWidth, kHeight));
+        const std::string label = lights.empty() ? "unlit, no lights" : "unlit, lights";
+        const test::ReferenceFrame naive = test::expectClusteredVariantsMatchNaive(renderer, label);
+        const float* p = naive.hdr.at(kWidth / 2, kHeight / 2);
+        unlitPixel[lights.empty()].assign(p, p + 3);
+        for (int c = 0; c < 3; ++c) EXPECT_EQ(p[c], expected[c]) << label << " channel " << c;
+        // The lit wall beside it does see the lights.
+        if (!lights.empty()) {
+            EXPECT_GT(naive.hdr.at(kWidth / 2 - 40, kHeight / 2)[0], 0.1f);
+        }
+    }
+    EXPECT_EQ(unlitPixel[0], unlitPixel[1]) << "the lights changed an unlit pixel";
+}
+
+struct SpecularCase {
+    const char* name;
+    json extensions;
+    float metallic;
+    glm::vec3 specularF0;  // what the mirror takes: min(((ior - 1) / (ior + 1))^2 x colour, 1)
+    float specularWeight;
+};
+
+// Quads of KHR_materials_ior and KHR_materials_specular (factors, maps, ior 0, a metal) under a
+// sun and a point light: every method holds to naive, and the middle pixel to the CPU mirror.
+TEST_F(GltfMaterialExtensions, SpecularAndIorMatchNaiveAndTheCpuMirror) {
+    const auto f0 = [](double ior) { return float(std::pow((ior - 1.0) / (ior + 1.0), 2.0)); };
+    // The maps' texels: specular weight in A (linear), colour in RGB (sRGB).
+    const std::array<std::uint8_t, 4> weightTexel{0, 0, 0, 153}, colourTexel{255, 64, 128, 255};
+    const glm::vec3 colourMap(srgbToLinear(255), srgbToLinear(64), srgbToLinear(128));
+    std::vector<SpecularCase> cases = {
+        {"ior 2.42", {{"KHR_materials_ior", {{"ior", 2.42}}}}, 0.0f, glm::vec3(f0(2.42)), 1.0f},
+        {"ior 1.0", {{"KHR_materials_ior", {{"ior", 1.0}}}}, 0.0f, glm::vec3(0.0f), 1.0f},
+        {"specular colour and weight",
+         {{"KHR_materials_specular", {{"specularFactor", 0.6}, {"specularColorFactor", {1.0, 0.3, 0.2}}}}},
+         0.0f, glm::vec3(0.04f) * glm::vec3(1.0f, 0.3f, 0.2f), 0.6f},
+        {"ior 0 and a colour past 1",
+         {{"KHR_materials_ior", {{"ior", 0.0}}}, {"KHR_materials_specular", {{"specularColorFactor", {2.0, 0.5, 0.1}}}}},
+         0.0f, glm::vec3(1.0f, 0.5f, 0.1f), 1.0f},
+        {"maps", {{"KHR_materials_specular", {{"specularFactor", 0.8}, {"specularColorFactor", {0.9, 1.0, 1.0}}}}}, 0.0f,
+         glm::min(glm::vec3(0.04f) * glm::vec3(0.9f, 1.0f, 1.0f) * colourMap, glm::vec3(1.0f)), 0.8f * 153.0f / 255.0f},
+        {"half metal", {{"KHR_materials_ior", {{"ior", 1.8}}}, {"KHR_materials_specular", {{"specularColorFactor", {0.2, 1.0, 0.5}}}}},
+         0.5f, glm::vec3(f0(1.8)) * glm::vec3(0.2f, 1.0f, 0.5f), 1.0f},
+    };
+    const glm::vec3 base(0.6f, 0.45f, 0.3f);
+    for (SpecularCase& c : cases) {
+        Gltf g;
+        if (std::string(c.name) == "maps") {
+            c.extensions["KHR_materials_specular"]["specularTexture"] = {{"index", addFlatTexture(g, weightTexel)}};
+            c.extensions["KHR_materials_specular"]["specularColorTexture"] = {{"index", addFlatTexture(g, colourTexel)}};
+        }
+        const int material = g.add("materials", {{"pbrMetallicRoughness", {{"baseColorFactor", {base.r, base.g, base.b, 1.0}},
+                                                                           {"metallicFactor", c.metallic}, {"roughnessFactor", 0.35}}},
+                                                 {"extensions", c.extensions}});
+        g.doc["extensionsUsed"] = {"KHR_materials_ior", "KHR_materials_specular"};
+        const Scene scene = writeAndLoad(g, {square(g, 0.0f, 2.5f, material)}, "specular");
+        ASSERT_TRUE(materialFeatures(scene) & ML_FEATURE_SPECULAR) << c.name;
+        const std::vector<Light> lights = testLights();
+        const FrameSettings settings = test::smallFrame(scene, kFrontView, kWidth, kHeight);
+        FrameRenderer renderer(scene, lights, settings);
+        const test::ReferenceFrame naive = test::expectClusteredVariantsMatchNaive(renderer, c.name);
+
+        SurfaceSample s;
+        s.position = middlePixelPoint();
+        s.normal = {0.0f, 0.0f, 1.0f};
+        s.baseColor = base;
+        s.metallic = c.metallic;
+        s.roughness = 0.35f;
+        s.specularF0 = c.specularF0;
+        s.specularWeight = c.specularWeight;
+        const glm::vec3 mirror = shadeReference(s, kFrontView.eye, lights, settings.ambient, true, settings.lightModel);
+        const float* p = naive.hdr.at(kWidth / 2, kHeight / 2);
+        for (int k = 0; k < 3; ++k) EXPECT_NEAR(p[k], mirror[k], 1e-4f + 1e-4f * mirror[k]) << c.name << " channel " << k;
+    }
+}
+
+}  // namespace
+}  // namespace ml
