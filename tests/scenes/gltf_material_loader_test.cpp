@@ -99,6 +99,33 @@ TEST(GltfMaterials, BlendIsLoadedAsBlendedWithoutWarning) {
     EXPECT_TRUE(warnings.empty()) << warnings.at(0);
 }
 
+// KHR_materials_ior, KHR_materials_specular and KHR_materials_unlit load into the material and
+// warn about nothing; unlit ignores the other two, as the extension asks.
+TEST(GltfMaterials, IorSpecularAndUnlitAreRead) {
+    const fs::path dir = testDir();
+    Gltf g = withMaterial({{"extensions", {{"KHR_materials_ior", {{"ior", 1.33}}},
+                                           {"KHR_materials_specular", {{"specularFactor", 0.5}, {"specularColorFactor", {2.0, 1.0, 0.5}},
+                                                                       {"specularColorTexture", {{"index", 0}}}}}}}});
+    g.doc["extensionsUsed"] = {"KHR_materials_ior", "KHR_materials_specular"};
+    std::vector<std::string> warnings;
+    Scene s = load(g.writeGltf(dir, "specular"), warnings);
+    EXPECT_FLOAT_EQ(s.materials.at(0).ior, 1.33f);
+    EXPECT_FLOAT_EQ(s.materials.at(0).specularFactor, 0.5f);
+    EXPECT_EQ(s.materials.at(0).specularColorFactor, glm::vec3(2.0f, 1.0f, 0.5f));
+    EXPECT_TRUE(s.materials.at(0).specularColorTexture.present());
+    EXPECT_FALSE(s.materials.at(0).specularTexture.present());
+    EXPECT_TRUE(s.materials.at(0).specularModelled());
+    EXPECT_TRUE(warnings.empty()) << warnings.at(0);
+
+    Gltf u = withMaterial({{"extensions", {{"KHR_materials_unlit", json::object()}, {"KHR_materials_ior", {{"ior", 2.0}}}}}});
+    u.doc["extensionsUsed"] = {"KHR_materials_unlit", "KHR_materials_ior"};
+    warnings.clear();
+    s = load(u.writeGltf(dir, "unlit"), warnings);
+    EXPECT_TRUE(s.materials.at(0).unlit);
+    EXPECT_FALSE(s.materials.at(0).specularModelled());
+    EXPECT_TRUE(warnings.empty()) << warnings.at(0);
+}
+
 TEST(GltfMaterials, BadValuesAreNamedInOneLine) {
     const fs::path dir = testDir();
     const auto refused = [&](const char* name, const json& material, std::initializer_list<const char*> keywords,
@@ -116,6 +143,14 @@ TEST(GltfMaterials, BadValuesAreNamedInOneLine) {
             {"baseColorTexture", "KHR_texture_transform scale"});
     refused("emissive_strength", {{"extensions", {{"KHR_materials_emissive_strength", {{"emissiveStrength", -1.0}}}}}},
             {"materials[0]", "emissiveStrength"});
+    refused("ior_below_one", {{"extensions", {{"KHR_materials_ior", {{"ior", 0.5}}}}}}, {"materials[0]", "KHR_materials_ior", "ior 0.5"});
+    refused("ior_negative", {{"extensions", {{"KHR_materials_ior", {{"ior", -2.0}}}}}}, {"materials[0]", "ior -2"});
+    refused("specular_factor", {{"extensions", {{"KHR_materials_specular", {{"specularFactor", -0.1}}}}}},
+            {"materials[0]", "specularFactor -0.1"});
+    refused("specular_colour", {{"extensions", {{"KHR_materials_specular", {{"specularColorFactor", {1.0, -1.0, 1.0}}}}}}},
+            {"materials[0]", "specularColorFactor"});
+    refused("specular_texture", {{"extensions", {{"KHR_materials_specular", {{"specularColorTexture", {{"index", 9}}}}}}}},
+            {"materials[0]", "specularColorTexture", "index 9"});
     refused("min_filter", {{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}, {"samplers[0]", "minFilter 1234"},
             {{"minFilter", 1234}});
     refused("wrap", {{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}, {"samplers[0]", "wrapT 5"}, {{"wrapT", 5}});
