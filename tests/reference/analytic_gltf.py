@@ -1,7 +1,7 @@
 """Writes a cpu_reference.Scene as the glTF 2.0 file the renderer reads: each rectangle as two
 triangles, each sphere as a finely tessellated UV sphere (vertex normals the sphere's own), the
 camera as a perspective camera node, the lights through KHR_lights_punctual, the materials as
-pbrMetallicRoughness factors. One mesh and one node per surface; geometry in a .bin beside the
+pbrMetallicRoughness factors (and any extensions a material carries). One mesh and one node per surface; geometry in a .bin beside the
 .gltf.
 
 A surface may carry vertices no index uses before its own in its accessors (`unused_before`), as
@@ -80,14 +80,18 @@ def write_gltf(scene, path, unused_before=None):
     unused_before = unused_before or {}
     buf = _Buffer()
     materials, material_index, meshes, nodes = [], {}, [], []
+    extensions_used = {"KHR_lights_punctual"}
     for k, surface in enumerate(scene.surfaces()):
         m = surface.material
-        key = (tuple(m.base), m.metallic, m.roughness)
+        key = (tuple(m.base), m.metallic, m.roughness, json.dumps(m.extensions, sort_keys=True))
         if key not in material_index:
             material_index[key] = len(materials)
             materials.append({"pbrMetallicRoughness": {"baseColorFactor": [float(c) for c in m.base] + [1.0],
                                                        "metallicFactor": float(m.metallic),
                                                        "roughnessFactor": float(m.roughness)}})
+            if m.extensions:
+                materials[-1]["extensions"] = m.extensions
+                extensions_used.update(m.extensions)
         positions, normals, indices = (rect_triangles(surface) if isinstance(surface, ref.Rect)
                                        else sphere_triangles(surface))
         extra = np.asarray(unused_before.get(k, np.zeros((0, 3))), float)
@@ -122,7 +126,7 @@ def write_gltf(scene, path, unused_before=None):
         f.write(bytes(buf.data))
     doc = {
         "asset": {"version": "2.0", "generator": "manylights tests/reference/analytic_gltf.py"},
-        "extensionsUsed": ["KHR_lights_punctual"],
+        "extensionsUsed": sorted(extensions_used),
         "extensions": {"KHR_lights_punctual": {"lights": lights}},
         "scene": 0,
         "scenes": [{"nodes": list(range(len(nodes)))}],

@@ -44,10 +44,12 @@ def normalize(v):
 
 @dataclass
 class Material:
-    """glTF pbrMetallicRoughness factors, no textures."""
+    """glTF pbrMetallicRoughness factors, no textures; `extensions` the material's glTF extensions
+    as the file writes them (shade() models none: check_material_extensions.py shades those)."""
     base: tuple = (0.8, 0.8, 0.8)
     metallic: float = 0.0
     roughness: float = 0.5
+    extensions: dict = field(default_factory=dict)
 
 
 @dataclass
@@ -257,21 +259,30 @@ def ggx_brdf_times_cos(n, v, l, base, metallic, roughness):
           V = 0.5 / (N.L sqrt((N.V)^2 (1 - alpha^2) + alpha^2) + N.V sqrt((N.L)^2 (1 - alpha^2) + alpha^2))
       f = (1 - F) c_diff / pi + F D V          (the metal-roughness material's fresnel_mix / conductor mix)
     """
-    nl = dot(n, l)
-    nv = np.abs(dot(n, v))
-    h = normalize(l + v)
-    nh = dot(n, h)
-    vh = np.abs(dot(v, h))
-    alpha = np.maximum(roughness * roughness, MIN_ALPHA)
-    a2 = alpha * alpha
+    nl_pos = np.maximum(dot(n, l), 0.0)
     c_diff = base * (1.0 - metallic)[:, None]
     f0 = 0.04 * (1.0 - metallic)[:, None] + base * metallic[:, None]
-    fresnel = f0 + (1.0 - f0) * ((1.0 - vh) ** 5)[:, None]
-    d = a2 * (nh > 0.0) / (math.pi * (nh * nh * (a2 - 1.0) + 1.0) ** 2)
-    nl_pos = np.maximum(nl, 0.0)
-    vis = 0.5 / (nl_pos * np.sqrt(nv * nv * (1.0 - a2) + a2) + nv * np.sqrt(nl_pos * nl_pos * (1.0 - a2) + a2))
-    f = (1.0 - fresnel) * c_diff / math.pi + fresnel * (d * vis)[:, None]
+    fresnel = f0 + (1.0 - f0) * schlick_weight(v, l)[:, None]
+    f = (1.0 - fresnel) * c_diff / math.pi + fresnel * ggx_distribution_visibility(n, v, l, roughness)[:, None]
     return f * nl_pos[:, None]
+
+
+def schlick_weight(v, l):
+    """Schlick's (1 - |V.H|)^5, H the half vector: F = f0 + (f90 - f0) times this."""
+    return (1.0 - np.abs(dot(v, normalize(l + v)))) ** 5
+
+
+def ggx_distribution_visibility(n, v, l, roughness):
+    """D x Vis of ggx_brdf_times_cos's docstring (N,), N.L clamped at 0 as there: what the
+    specular lobe's Fresnel multiplies."""
+    nl_pos = np.maximum(dot(n, l), 0.0)
+    nv = np.abs(dot(n, v))
+    nh = dot(n, normalize(l + v))
+    alpha = np.maximum(roughness * roughness, MIN_ALPHA)
+    a2 = alpha * alpha
+    d = a2 * (nh > 0.0) / (math.pi * (nh * nh * (a2 - 1.0) + 1.0) ** 2)
+    vis = 0.5 / (nl_pos * np.sqrt(nv * nv * (1.0 - a2) + a2) + nv * np.sqrt(nl_pos * nl_pos * (1.0 - a2) + a2))
+    return d * vis
 
 
 def range_window(d2, radius):

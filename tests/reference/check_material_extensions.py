@@ -1,0 +1,216 @@
+#!/usr/bin/python3
+"""Issue 65's independent check of KHR_materials_ior, KHR_materials_specular and
+KHR_materials_unlit: their formulas in numpy from the specifications (material_extensions.py),
+held to
+
+- the shader's CPU mirror (renderer/reference/shading_reference.cpp, run through
+  ml_shading_mirror) on every material below, each under a sun at random directions and at
+  grazing ones (light and view a few degrees above the surface, where Schlick's term is mostly
+  F90, so an F90 that is not the specular weight shows), at most MIRROR_TOLERANCE relative apart;
+- the frame `manylights render` draws in every method (as check_cpu_reference.py does GGX's):
+  strips of those materials on a floor seen at grazing angles, lit by a low sun from behind them,
+  the float output (before the tonemap) at most PIXEL_TOLERANCE relative apart on every pixel
+  away from a strip's edge; the unlit strip shows its base colour.
+
+It also verifies that where metallic is 0 or 1 the specification's diffuse weight and the
+renderer's convention (appendix B's, material_extensions.brdf_times_cos) give the same numbers
+exactly, and reports how far apart they are on the half metal.
+
+  check_material_extensions.py --manylights build-test/manylights --mirror build-test/tests/ml_shading_mirror --work /tmp/mx
+"""
+import argparse
+import math
+import os
+import subprocess
+import sys
+from typing import NamedTuple
+
+import numpy as np
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import analytic_gltf  # noqa: E402
+import check_cpu_reference as cpu_check  # noqa: E402
+import cpu_reference as ref  # noqa: E402
+import material_extensions as mx  # noqa: E402
+
+MIRROR_TOLERANCE = 1e-4   # relative, float32 (the mirror) against float64
+PIXEL_TOLERANCE = 1e-3    # relative: the rasterizer's interpolated positions at grazing view
+AMBIENT = 0.03            # Renderer convention: a glTF file's ambient fill (cpu_reference.AMBIENT)
+GRAZING_Q5 = 0.5          # a grazing case's (1 - |V.H|)^5 is at least this: F is mostly F90
+
+
+class Mat(NamedTuple):
+    """A material's glTF factors: pbrMetallicRoughness and the three extensions."""
+    name: str
+    base: tuple
+    metallic: float
+    roughness: float
+    ior: float = 1.5
+    specular: float = 1.0
+    specular_color: tuple = (1.0, 1.0, 1.0)
+    unlit: bool = False
+
+    def gltf(self):
+        if self.unlit:
+            ext = {"KHR_materials_unlit": {}}
+        else:
+            ext = {"KHR_materials_ior": {"ior": self.ior},
+                   "KHR_materials_specular": {"specularFactor": self.specular,
+                                              "specularColorFactor": list(self.specular_color)}}
+        return ref.Material(base=self.base, metallic=self.metallic, roughness=self.roughness, extensions=ext)
+
+
+MATERIALS = [
+    Mat("defaults", (0.8, 0.3, 0.2), 0.0, 0.4),
+    Mat("weight_half", (0.5, 0.6, 0.7), 0.0, 0.3, specular=0.5),
+    Mat("coloured_f0", (0.3, 0.6, 0.2), 0.0, 0.5, ior=2.4, specular=0.8, specular_color=(1.0, 0.4, 0.1)),
+    Mat("ior0_clamped", (0.7, 0.7, 0.7), 0.0, 0.25, ior=0.0, specular=0.6, specular_color=(0.5, 1.0, 2.0)),
+    Mat("ior1_no_specular", (0.2, 0.4, 0.9), 0.0, 0.6, ior=1.0),
+    Mat("metal", (0.9, 0.6, 0.3), 1.0, 0.35, ior=1.33, specular=0.3, specular_color=(0.2, 0.5, 1.0)),
+    Mat("half_metal", (0.6, 0.4, 0.8), 0.5, 0.45, ior=1.7, specular=0.7, specular_color=(0.9, 1.0, 0.6)),
+    Mat("unlit", (0.9, 0.5, 0.25), 0.0, 0.5, ior=2.0, specular=0.2, unlit=True),
+]
+SUN_COLOR = (1.5, 1.4, 1.3)
+
+
+def factor_arrays(mats):
+    """Per-point factor arrays, as material_extensions' functions take them."""
+    def col(f, dtype=float):
+        return np.array([f(m) for m in mats], dtype=dtype)
+    return dict(base=col(lambda m: m.base), metallic=col(lambda m: m.metallic), roughness=col(lambda m: m.roughness),
+                ior=col(lambda m: m.ior), specular=col(lambda m: m.specular),
+                specular_color=col(lambda m: m.specular_color), unlit=col(lambda m: m.unlit, bool))
+
+
+def directions(rng):
+    """(normal, view, light) triples: random ones (the light anywhere, so some are below the
+    horizon) and grazing ones, light and view a few degrees above the surface on opposite sides."""
+    cases = []
+    for _ in range(48):
+        n = ref.normalize(rng.normal(size=3))
+        v = ref.normalize(rng.normal(size=3))
+        cases.append((n, v if np.dot(v, n) > 0.05 else -v, ref.normalize(rng.normal(size=3))))
+    n = ref.normalize([0.2, 1.0, -0.1])
+    t = ref.normalize(np.cross(n, [0.0, 0.0, 1.0]))
+    b = np.cross(n, t)
+    for view_deg, light_deg, side in [(2, 3, 0.0), (5, 1, 0.1), (1, 8, -0.2), (8, 6, 0.05), (3, 3, 0.3)]:
+        ev, el = math.radians(view_deg), math.radians(light_deg)
+        v = math.sin(ev) * n + math.cos(ev) * t
+        l = ref.normalize(math.sin(el) * n - math.cos(el) * t + side * math.sin(el) * b)
+        cases.append((n, v, l))
+    return cases
+
+
+def run_mirror(mirror, rows):
+    text = "\n".join(" ".join(f"{x:.9g}" for x in row) for row in rows) + "\n"
+    out = subprocess.run([mirror], input=text, capture_output=True, text=True, check=True).stdout
+    return np.array([[float(x) for x in line.split()] for line in out.splitlines()])
+
+
+def relative(got, expected):
+    return np.abs(got - expected) / np.maximum(np.abs(expected), 1e-3)
+
+
+def check_mirror(mirror, failures):
+    """numpy against the CPU mirror on every material and direction triple."""
+    rng = np.random.default_rng(65)
+    trip = directions(rng)
+    mats = [m for m in MATERIALS for _ in trip]
+    n, v, l = (np.array([t[k] for _ in MATERIALS for t in trip], np.float32).astype(float) for k in range(3))
+    q5 = ref.schlick_weight(v, l)
+    grazing = np.array([k >= 48 for _ in MATERIALS for k in range(len(trip))])
+    if not (q5[grazing] >= GRAZING_Q5).all():
+        failures.append(f"mirror: a grazing case has (1 - |V.H|)^5 {q5[grazing].min():.3f} < {GRAZING_Q5}")
+    f = factor_arrays(mats)
+    f32 = {k: a.astype(np.float32).astype(float) if a.dtype != bool else a for k, a in f.items()}
+    eye = 3.0 * v                                     # the point at the origin, seen from 3 units along v
+    rows = [list(eye[i]) + [0.0, 0.0, 0.0] + list(n[i]) + list(f32["base"][i]) +
+            [f32["metallic"][i], f32["roughness"][i], f32["ior"][i], f32["specular"][i]] +
+            list(f32["specular_color"][i]) + [int(f["unlit"][i]), AMBIENT] + list(-l[i]) + list(SUN_COLOR)
+            for i in range(len(mats))]
+    got = run_mirror(mirror, rows)
+    eye32 = eye.astype(np.float32).astype(float)      # what the mirror reads, and so sees
+    expected = mx.radiance(n, ref.normalize(eye32), l, SUN_COLOR, AMBIENT, **f32)
+    rel = relative(got, expected).max(axis=-1)
+    for name in dict.fromkeys(m.name for m in mats):
+        sel = np.array([m.name == name for m in mats])
+        worst = int(np.flatnonzero(sel)[np.argmax(rel[sel])])
+        print(f"mirror {name:18s} max rel {rel[sel].max():.2e} (grazing {rel[sel & grazing].max():.2e})"
+              + ("  FAIL" if rel[sel].max() > MIRROR_TOLERANCE else ""), flush=True)
+        if rel[sel].max() > MIRROR_TOLERANCE:
+            failures.append(f"mirror {name}: relative {rel[worst]:.2e} at n {n[worst]}, v {v[worst]}, l {l[worst]}: "
+                            f"numpy {expected[worst]}, mirror {got[worst]}")
+    print(f"mirror: numpy against the CPU mirror, max relative difference {rel.max():.2e} over {len(rel)} cases")
+
+    # The specification's diffuse weight against the renderer's convention: the same at metallic 0 and 1.
+    args = (n, v, l, f["base"], f["metallic"], f["roughness"], f["ior"], f["specular"], f["specular_color"])
+    spec, conv = mx.brdf_times_cos(*args, convention=False), mx.brdf_times_cos(*args, convention=True)
+    ends = np.isin(f["metallic"], (0.0, 1.0))
+    if not np.array_equal(spec[ends], conv[ends]):
+        failures.append("the specification's diffuse weight and the renderer's convention differ at metallic 0 or 1")
+    mid = ~ends
+    print(f"convention: the BRDF identical to the specification's at metallic 0 and 1 ({int(ends.sum())} cases); at "
+          f"metallic 0.5 up to {relative(conv[mid], spec[mid]).max():.1%} off it (the diffuse's Fresnel weight)")
+
+
+def strips_scene():
+    """One floor strip per material along x, seen from a low camera, a low sun shining from behind them."""
+    rects = [ref.Rect((1.4 * (k - (len(MATERIALS) - 1) / 2.0), 0.0, -2.0), (0.6, 0.0, 0.0), (0.0, 0.0, -5.0), m.gltf())
+             for k, m in enumerate(MATERIALS)]
+    sun = ref.Light("directional", color=(1.0, 1.0, 1.0), intensity=0.6, direction=(0.15, -0.12, 1.0))
+    return ref.Scene("material_extensions", cpu_check.look_at((0.0, 0.7, 9.0), (0.0, 0.0, -3.0), 0.55),
+                     rects=rects, lights=[sun])
+
+
+def expected_frame(scene, width, height):
+    origin, dirs = ref.primary_rays(scene.camera, width, height)
+    _, ids, points, normals = ref.cast(scene, origin, dirs)
+    hit = ids >= 0
+    sun = scene.lights[0]
+    l = np.broadcast_to(-ref.normalize(sun.direction), (int(hit.sum()), 3))
+    frame = np.zeros((height, width, 3))
+    frame[hit] = mx.radiance(normals[hit], -dirs[hit], l, np.asarray(sun.color) * sun.intensity, AMBIENT,
+                             **factor_arrays([MATERIALS[i] for i in ids[hit]]))
+    return frame, ids
+
+
+def check_pixels(manylights, work, failures):
+    scene = strips_scene()
+    gltf = os.path.join(work, scene.name + ".gltf")
+    analytic_gltf.write_gltf(scene, gltf)
+    expected, ids = expected_frame(scene, cpu_check.WIDTH, cpu_check.HEIGHT)
+    compared = (ids >= 0) & ~cpu_check.coverage_edges(ids)
+    for k, m in enumerate(MATERIALS):
+        if (compared & (ids == k)).sum() < 2000:
+            failures.append(f"pixels: the {m.name} strip covers only {(compared & (ids == k)).sum()} compared pixels")
+    for method in cpu_check.METHODS:
+        got = cpu_check.render(manylights, gltf, method, "off", work)
+        rel = relative(got, expected).max(axis=-1)
+        per = {m.name: rel[compared & (ids == k)].max() for k, m in enumerate(MATERIALS)}
+        worst = max(per, key=per.get)
+        d8 = np.abs(ref.tonemap_8bit(got).astype(int) - ref.tonemap_8bit(expected)).max(axis=-1)[compared].max()
+        bad = per[worst] > PIXEL_TOLERANCE
+        print(f"pixels {method:13s} max rel {per[worst]:.2e} ({worst}), unlit {per['unlit']:.1e}, 8-bit max {d8}/255, "
+              f"{int(compared.sum())} px" + ("  FAIL" if bad else ""), flush=True)
+        if bad:
+            failures.append(f"pixels {method}: relative {per[worst]:.2e} on {worst} " +
+                            ", ".join(f"{k} {v:.1e}" for k, v in per.items()))
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--manylights", required=True)
+    parser.add_argument("--mirror", required=True, help="ml_shading_mirror")
+    parser.add_argument("--work", default="material_extensions_reference")
+    args = parser.parse_args()
+    os.makedirs(args.work, exist_ok=True)
+    failures = []
+    check_mirror(args.mirror, failures)
+    check_pixels(args.manylights, args.work, failures)
+    if failures:
+        print("FAILED:\n" + "\n".join(failures))
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,36 @@
+// The CPU mirror (renderer/reference/shading_reference.h) as a filter, so that a numpy check
+// (tests/reference/check_material_extensions.py) can hold it to the specification. One case a
+// line on stdin, as glTF states the material (the ior to F0 conversion is the renderer's):
+//   eye(3) position(3) normal(3) base(3) metallic roughness ior specularFactor specularColor(3)
+//   unlit ambient sunDirection(3) sunColor(3)
+// and one line "r g b" of shadeReference's linear radiance on stdout, in float's shortest exact form.
+#include <algorithm>
+#include <cstdio>
+#include <iostream>
+
+#include "renderer/reference/shading_reference.h"
+#include "renderer/scene/material_features.h"
+
+int main() {
+    using namespace ml;
+    glm::vec3 eye, base, specularColor, sunDirection, sunColor;
+    SurfaceSample s;
+    float ior, specularFactor, ambient;
+    int unlit;
+    while (std::cin >> eye.x >> eye.y >> eye.z >> s.position.x >> s.position.y >> s.position.z >> s.normal.x >>
+           s.normal.y >> s.normal.z >> base.r >> base.g >> base.b >> s.metallic >> s.roughness >> ior >>
+           specularFactor >> specularColor.r >> specularColor.g >> specularColor.b >> unlit >> ambient >>
+           sunDirection.x >> sunDirection.y >> sunDirection.z >> sunColor.r >> sunColor.g >> sunColor.b) {
+        s.baseColor = base;
+        s.specularF0 = glm::min(dielectricF0(ior) * specularColor, glm::vec3(1.0f));  // as glsl/include/material.glsl
+        s.specularWeight = specularFactor;
+        s.unlit = unlit != 0;
+        Light sun;
+        sun.type = LightType::Directional;
+        sun.direction = sunDirection;
+        sun.color = sunColor;
+        const glm::vec3 c = shadeReference(s, eye, {sun}, ambient);
+        std::printf("%.9g %.9g %.9g\n", c.r, c.g, c.b);
+    }
+    return 0;
+}
