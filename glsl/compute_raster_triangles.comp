@@ -32,7 +32,7 @@ layout(std430, binding = ML_SSBO_INDICES) readonly buffer Indices { uint indexDa
 layout(std430, binding = ML_SSBO_TRIANGLE_MATERIALS) readonly buffer TriangleMaterials { uint triangleMaterial[]; };
 layout(std430, binding = ML_SSBO_MATERIALS) readonly buffer Materials { uvec4 materialWords[]; };  // GpuMaterial, info at +3
 vec3 vertexPosition(uint v) { return vec3(vertexData[8u * v], vertexData[8u * v + 1u], vertexData[8u * v + 2u]); }
-uint materialBits(uint triangle) { return materialWords[triangleMaterial[triangle] * ML_GPU_MATERIAL_VEC4S(ML_HAS(ML_FEATURE_SPECULAR)) + 3u].w; }
+uint materialBits(uint triangle) { return materialWords[triangleMaterial[triangle] * ML_GPU_MATERIAL_VEC4S(ML_EXTENDED_MATERIAL_RECORD) + 3u].w; }
 #endif
 layout(std430, binding = ML_SSBO_RASTER_WORK) coherent buffer RasterWork { uint rasterWork[]; };
 layout(std430, binding = ML_SSBO_RASTER_LARGE) writeonly buffer RasterLarge { uvec4 largeTriangles[]; };

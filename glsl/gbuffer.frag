@@ -16,8 +16,11 @@ layout(location = 1) out vec4 o_target1;
 #if ML_GBUFFER_FLOAT_TARGETS >= 3
 layout(location = 2) out vec4 o_target2;
 #endif
-#if ML_GBUFFER_FLOAT_TARGETS == 4
+#if ML_GBUFFER_FLOAT_TARGETS >= 4
 layout(location = 3) out vec4 o_target3;
+#endif
+#if ML_GBUFFER_FLOAT_TARGETS == 5
+layout(location = 4) out vec4 o_target4;
 #endif
 #endif
 
@@ -31,8 +34,11 @@ void main() {
 #if ML_GBUFFER_FLOAT_TARGETS >= 3
     o_target2 = t.target[2];
 #endif
-#if ML_GBUFFER_FLOAT_TARGETS == 4
+#if ML_GBUFFER_FLOAT_TARGETS >= 4
     o_target3 = t.target[3];
+#endif
+#if ML_GBUFFER_FLOAT_TARGETS == 5
+    o_target4 = t.target[4];
 #endif
 #endif
 }

@@ -38,22 +38,18 @@ const gl::Framebuffer& GBuffer::prepare(const FrameTargets& frame) {
             targets_.emplace_back("gbuffer.specular", GL_RGBA16F, width_, height_);
             fbo_ = gl::Framebuffer("gbuffer", {&targets_[0], &targets_[1], &targets_[2]}, &frame.depth());
             break;
-        case GBufferFormat::Exact:
-            // Emissive and occlusion in a third target only where the scene has them (gbuffer_layout.glsl).
-            targets_.emplace_back("gbuffer.distance-normal-roughness", GL_RGBA32F, width_, height_);
-            targets_.emplace_back("gbuffer.albedo", GL_RGBA32F, width_, height_);
-            if (gbufferExactHasMaterialExtensions(materialFeatures_)) {
-                // And the specular and unlit terms in a fourth, target 2 with it (gbuffer_layout.glsl).
-                targets_.emplace_back("gbuffer.emissive-occlusion", GL_RGBA32F, width_, height_);
-                targets_.emplace_back("gbuffer.specular-unlit", GL_RGBA32F, width_, height_);
-                fbo_ = gl::Framebuffer("gbuffer", {&targets_[0], &targets_[1], &targets_[2], &targets_[3]}, &frame.depth());
-            } else if (gbufferExactHasExtras(materialFeatures_)) {
-                targets_.emplace_back("gbuffer.emissive-occlusion", GL_RGBA32F, width_, height_);
-                fbo_ = gl::Framebuffer("gbuffer", {&targets_[0], &targets_[1], &targets_[2]}, &frame.depth());
-            } else {
-                fbo_ = gl::Framebuffer("gbuffer", {&targets_[0], &targets_[1]}, &frame.depth());
-            }
+        case GBufferFormat::Exact: {
+            // The optional targets only where the scene's materials need them (gbuffer_layout.glsl).
+            static const char* const kNames[] = {"gbuffer.distance-normal-roughness", "gbuffer.albedo",
+                                                 "gbuffer.emissive-occlusion", "gbuffer.specular-unlit", "gbuffer.clearcoat"};
+            const int count = gbufferExactTargets(materialFeatures_);
+            targets_.reserve(count);
+            for (int i = 0; i < count; ++i) targets_.emplace_back(kNames[i], GL_RGBA32F, width_, height_);
+            std::vector<const gl::Texture2D*> attachments;
+            for (const gl::Texture2D& target : targets_) attachments.push_back(&target);
+            fbo_ = gl::Framebuffer("gbuffer", attachments, &frame.depth());
             break;
+        }
         case GBufferFormat::Packed:
             targets_.emplace_back("gbuffer.packed", GL_RGBA32UI, width_, height_);
             fbo_ = gl::Framebuffer("gbuffer", {&targets_[0]}, &frame.depth());
@@ -69,9 +65,9 @@ const gl::Framebuffer& GBuffer::prepare(const FrameTargets& frame) {
 }
 
 namespace {
-// Targets 0 to 2 have consecutive units; the exact layout's fourth shares a unit (bindings.h).
-constexpr GLuint kTextureUnits[] = {ML_TEX_GBUFFER0, ML_TEX_GBUFFER1, ML_TEX_GBUFFER2, ML_TEX_GBUFFER3};
-constexpr GLuint kImageUnits[] = {ML_IMG_GBUFFER0, ML_IMG_GBUFFER1, ML_IMG_GBUFFER2, ML_IMG_GBUFFER3};
+// Targets 0 to 2 have consecutive units; the exact layout's fourth and fifth share units (bindings.h).
+constexpr GLuint kTextureUnits[] = {ML_TEX_GBUFFER0, ML_TEX_GBUFFER1, ML_TEX_GBUFFER2, ML_TEX_GBUFFER3, ML_TEX_GBUFFER4};
+constexpr GLuint kImageUnits[] = {ML_IMG_GBUFFER0, ML_IMG_GBUFFER1, ML_IMG_GBUFFER2, ML_IMG_GBUFFER3, ML_IMG_GBUFFER4};
 }  // namespace
 
 void GBuffer::bindForReading() const {

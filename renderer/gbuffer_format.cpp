@@ -43,18 +43,16 @@ GBufferFormat parseGBufferFormat(const std::string& text) {
 
 const char* gbufferFormatName(GBufferFormat format) { return entry(format).name; }
 
-bool gbufferExactHasMaterialExtensions(std::uint32_t materialFeatures) {
-    return (materialFeatures & (ML_FEATURE_SPECULAR | ML_FEATURE_UNLIT)) != 0;
-}
-
-bool gbufferExactHasExtras(std::uint32_t materialFeatures) {
-    return (materialFeatures & (ML_FEATURE_EMISSIVE | ML_FEATURE_OCCLUSION_MAP)) != 0 || gbufferExactHasMaterialExtensions(materialFeatures);
+int gbufferExactTargets(std::uint32_t materialFeatures) {
+    if (materialFeatures & ML_FEATURE_CLEARCOAT) return 5;
+    if (materialFeatures & (ML_FEATURE_SPECULAR | ML_FEATURE_UNLIT)) return 4;
+    if (materialFeatures & (ML_FEATURE_EMISSIVE | ML_FEATURE_OCCLUSION_MAP)) return 3;
+    return 2;
 }
 
 std::size_t gbufferBytesPerPixel(GBufferFormat format, std::uint32_t materialFeatures) {
     const std::size_t bytes = entry(format).bytesPerPixel;
-    if (format == GBufferFormat::Exact && gbufferExactHasMaterialExtensions(materialFeatures)) return bytes / 3 * 4;
-    if (format == GBufferFormat::Exact && !gbufferExactHasExtras(materialFeatures)) return bytes / 3 * 2;
+    if (format == GBufferFormat::Exact) return bytes / 3 * static_cast<std::size_t>(gbufferExactTargets(materialFeatures));
     return bytes;
 }
 

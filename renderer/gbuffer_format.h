@@ -23,9 +23,9 @@ const char* gbufferFormatName(GBufferFormat format);
 // the exact layout keeps emissive and occlusion in a third target only where the scene has them.
 // Depth is the frame's own depth buffer, counted with the frame targets.
 std::size_t gbufferBytesPerPixel(GBufferFormat format, std::uint32_t materialFeatures);
-// Does the exact layout hold its third target (emissive, occlusion) for these materials?
-bool gbufferExactHasExtras(std::uint32_t materialFeatures);
-// ...and its fourth (KHR_materials_specular / ior, KHR_materials_unlit), the third with it?
-bool gbufferExactHasMaterialExtensions(std::uint32_t materialFeatures);
+// The exact layout's targets for these materials (gbuffer_layout.glsl): 2, a third where the scene
+// has emissive or occlusion maps, a fourth (and the third) where it has KHR_materials_specular, ior
+// or unlit, a fifth (and the others) where it has KHR_materials_clearcoat.
+int gbufferExactTargets(std::uint32_t materialFeatures);
 
 }  // namespace ml

@@ -35,9 +35,9 @@ struct alignas(16) GpuSunLights {
 };
 static_assert(sizeof(GpuSunLights) == 16 + 32 * ML_MAX_SUN_LIGHTS);
 
-// glsl/include/material.glsl: struct Material (std430). A scene without ML_FEATURE_SPECULAR
+// glsl/include/material.glsl: struct Material (std430). A scene without ML_FEATURES_EXTENDED_RECORD
 // uploads the record up to the core slots' transforms (ML_GPU_MATERIAL_VEC4S(false) vec4s); with
-// it, the whole record (ML_GPU_MATERIAL_VEC4S(true)).
+// any, the whole record (ML_GPU_MATERIAL_VEC4S(true)).
 struct alignas(16) GpuMaterial {
     glm::vec4 baseColorFactor;
     glm::vec4 emissiveCutoff;  // rgb emissive, a alpha cutoff
@@ -47,6 +47,9 @@ struct alignas(16) GpuMaterial {
     // KHR_materials_ior and KHR_materials_specular: rgb ((ior - 1) / (ior + 1))^2 x specularColorFactor
     // (the colour texture multiplies it, then it is clamped to 1), a specularFactor.
     glm::vec4 specular;
+    // KHR_materials_clearcoat: clearcoatFactor, clearcoatRoughnessFactor, the clearcoat normal
+    // texture's scale, 0.
+    glm::vec4 clearcoat;
 };
 static_assert(sizeof(GpuMaterial) == 16 * ML_GPU_MATERIAL_VEC4S(true));
 static_assert(offsetof(GpuMaterial, uvTransforms) + 32 * ML_CORE_TEXTURE_SLOTS == 16 * ML_GPU_MATERIAL_VEC4S(false));

@@ -96,12 +96,32 @@ bool readNumbers(const tinygltf::Value& v, std::size_t n, double* out) {
     return true;
 }
 
-// The "extensions" object of a JSON textureInfo, as tinygltf gives a parsed one's.
-tinygltf::ExtensionMap extensionsOf(const tinygltf::Value& info) {
+// A textureInfo given as JSON inside a material extension, as tinygltf parses the core ones.
+struct JsonTextureInfo {
+    int index = -1;
+    int texCoord = 0;
     tinygltf::ExtensionMap extensions;
+};
+
+// The textureInfo `info`, or nothing where it is malformed (not an object with an integer index,
+// or a texCoord that is not an integer); `why` says which.
+std::optional<JsonTextureInfo> parseTextureInfo(const tinygltf::Value& info, std::string* why = nullptr) {
+    if (!info.IsObject() || !info.Has("index") || !info.Get("index").IsInt()) {
+        if (why != nullptr) *why = "not a textureInfo (an object with an integer index)";
+        return std::nullopt;
+    }
+    JsonTextureInfo parsed;
+    parsed.index = info.Get("index").GetNumberAsInt();
+    if (info.Has("texCoord")) {
+        if (!info.Get("texCoord").IsInt()) {
+            if (why != nullptr) *why = "texCoord is not an integer";
+            return std::nullopt;
+        }
+        parsed.texCoord = info.Get("texCoord").GetNumberAsInt();
+    }
     if (info.Has("extensions") && info.Get("extensions").IsObject())
-        for (const std::string& key : info.Get("extensions").Keys()) extensions[key] = info.Get("extensions").Get(key);
-    return extensions;
+        for (const std::string& key : info.Get("extensions").Keys()) parsed.extensions[key] = info.Get("extensions").Get(key);
+    return parsed;
 }
 
 }  // namespace
@@ -220,17 +240,33 @@ void MaterialConverter::convertMaterialExtensions(const tinygltf::Material& sour
             m.specularColorTexture =
                 extensionTextureRef(what + " KHR_materials_specular specularColorTexture", spec->Get("specularColorTexture"), true);
     }
+    if (const tinygltf::Value* coat = extension("KHR_materials_clearcoat")) {
+        const auto unitFactor = [&](const char* field) {
+            const double v = extensionNumber(path_, what, *coat, "KHR_materials_clearcoat", field, 0.0);
+            if (v < 0.0 || v > 1.0) fail(path_, what + ": KHR_materials_clearcoat " + field + " " + number(v) + " is outside [0, 1]");
+            return static_cast<float>(v);
+        };
+        m.clearcoatFactor = unitFactor("clearcoatFactor");
+        m.clearcoatRoughnessFactor = unitFactor("clearcoatRoughnessFactor");
+        const auto texture = [&](const char* field) {
+            return coat->Has(field) ? extensionTextureRef(what + " KHR_materials_clearcoat " + field, coat->Get(field), false)
+                                    : TextureRef{};
+        };
+        m.clearcoatTexture = texture("clearcoatTexture");
+        m.clearcoatRoughnessTexture = texture("clearcoatRoughnessTexture");
+        m.clearcoatNormalTexture = texture("clearcoatNormalTexture");
+        // The normal textureInfo's scale (glTF's normalTextureInfo), 1 where absent.
+        if (coat->Has("clearcoatNormalTexture"))
+            m.clearcoatNormalScale = static_cast<float>(
+                extensionNumber(path_, what, coat->Get("clearcoatNormalTexture"), "KHR_materials_clearcoat clearcoatNormalTexture", "scale", 1.0));
+    }
 }
 
 TextureRef MaterialConverter::extensionTextureRef(const std::string& what, const tinygltf::Value& info, bool srgb) {
-    if (!info.IsObject() || !info.Has("index") || !info.Get("index").IsInt())
-        fail(path_, what + ": not a textureInfo (an object with an integer index)");
-    int texCoord = 0;
-    if (info.Has("texCoord")) {
-        if (!info.Get("texCoord").IsInt()) fail(path_, what + ": texCoord is not an integer");
-        texCoord = info.Get("texCoord").GetNumberAsInt();
-    }
-    return textureRef(what, info.Get("index").GetNumberAsInt(), texCoord, extensionsOf(info), srgb);
+    std::string why;
+    const std::optional<JsonTextureInfo> parsed = parseTextureInfo(info, &why);
+    if (!parsed) fail(path_, what + ": " + why);
+    return textureRef(what, parsed->index, parsed->texCoord, parsed->extensions, srgb);
 }
 
 TextureRef MaterialConverter::textureRef(const std::string& what, int textureIndex, int texCoord,
@@ -381,14 +417,26 @@ void addIfPresent(std::vector<MaterialTexture>& out, const char* slot, const Inf
 
 // A textureInfo inside a material extension (KHR_materials_specular's), where it is well formed
 // (convertMaterial fails on the rest, naming it).
+std::optional<JsonTextureInfo> extensionTexture(const tinygltf::Material& material, const char* extension, const char* slot) {
+    const auto it = material.extensions.find(extension);
+    if (it == material.extensions.end() || !it->second.IsObject() || !it->second.Has(slot)) return std::nullopt;
+    return parseTextureInfo(it->second.Get(slot));
+}
+
 void addExtensionTexture(std::vector<MaterialTexture>& out, const tinygltf::Material& material, const char* extension,
                          const char* slot) {
-    const auto it = material.extensions.find(extension);
-    if (it == material.extensions.end() || !it->second.IsObject() || !it->second.Has(slot)) return;
-    const tinygltf::Value& info = it->second.Get(slot);
-    if (!info.IsObject() || !info.Has("index") || !info.Get("index").IsInt()) return;
-    const int texCoord = info.Has("texCoord") && info.Get("texCoord").IsInt() ? info.Get("texCoord").GetNumberAsInt() : 0;
-    out.push_back({slot, effectiveTexCoord(texCoord, extensionsOf(info))});
+    if (const std::optional<JsonTextureInfo> info = extensionTexture(material, extension, slot))
+        out.push_back({slot, effectiveTexCoord(info->texCoord, info->extensions)});
+}
+
+// A coat's normal map needs tangents as the material's own does (KHR_materials_clearcoat), where
+// the coat is there at all (a clearcoatFactor of 0 disables the layer).
+std::optional<JsonTextureInfo> clearcoatNormalTexture(const tinygltf::Material& material) {
+    const auto it = material.extensions.find("KHR_materials_clearcoat");
+    if (it == material.extensions.end() || !it->second.IsObject() || !it->second.Has("clearcoatFactor")) return std::nullopt;
+    const tinygltf::Value& factor = it->second.Get("clearcoatFactor");
+    if (!(factor.IsNumber() || factor.IsInt()) || !(factor.GetNumberAsDouble() > 0.0)) return std::nullopt;
+    return extensionTexture(material, "KHR_materials_clearcoat", "clearcoatNormalTexture");
 }
 
 }  // namespace
@@ -403,15 +451,25 @@ std::vector<MaterialTexture> texturesOf(const tinygltf::Material& material) {
     if (material.extensions.count("KHR_materials_unlit") == 0) {  // unlit: the extension's maps are never read
         addExtensionTexture(out, material, "KHR_materials_specular", "specularTexture");
         addExtensionTexture(out, material, "KHR_materials_specular", "specularColorTexture");
+        addExtensionTexture(out, material, "KHR_materials_clearcoat", "clearcoatTexture");
+        addExtensionTexture(out, material, "KHR_materials_clearcoat", "clearcoatRoughnessTexture");
+        addExtensionTexture(out, material, "KHR_materials_clearcoat", "clearcoatNormalTexture");
     }
     return out;
 }
 
-bool hasNormalTexture(const tinygltf::Material& material) { return material.normalTexture.index >= 0; }
+bool hasNormalTexture(const tinygltf::Material& material) {
+    return material.normalTexture.index >= 0 ||
+           (material.extensions.count("KHR_materials_unlit") == 0 && clearcoatNormalTexture(material).has_value());
+}
 
 int normalTextureTexCoord(const tinygltf::Material& material) {
+    if (material.normalTexture.index >= 0)
+        return effectiveTexCoord(material.normalTexture.texCoord, material.normalTexture.extensions) == 1.0 ? 1 : 0;
+    // The coat's map alone: the tangents follow its UV set (glTF asks both maps to share one).
     if (!hasNormalTexture(material)) return 0;
-    return effectiveTexCoord(material.normalTexture.texCoord, material.normalTexture.extensions) == 1.0 ? 1 : 0;
+    const JsonTextureInfo info = *clearcoatNormalTexture(material);
+    return effectiveTexCoord(info.texCoord, info.extensions) == 1.0 ? 1 : 0;
 }
 
 bool usesTexCoord1(const tinygltf::Material& material) {

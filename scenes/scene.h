@@ -102,6 +102,15 @@ struct Material {
     TextureRef specularTexture;                // linear; A is the factor
     glm::vec3 specularColorFactor{1.0f};       // linear, >= 0 (may exceed 1)
     TextureRef specularColorTexture;           // sRGB; RGB is the colour
+    // KHR_materials_clearcoat: a GGX lobe of its own roughness and normal over the material,
+    // weighted by clearcoat x its Fresnel (docs/lights-and-shading.md). Factor 0 (glTF's default)
+    // is no coat.
+    float clearcoatFactor = 0.0f;              // [0, 1]
+    TextureRef clearcoatTexture;               // linear; R multiplies the factor
+    float clearcoatRoughnessFactor = 0.0f;     // [0, 1]
+    TextureRef clearcoatRoughnessTexture;      // linear; G multiplies the roughness
+    TextureRef clearcoatNormalTexture;         // linear, tangent space; none: the surface's own normal
+    float clearcoatNormalScale = 1.0f;
 
     bool alphaTested() const { return alphaMode == AlphaMode::Mask; }
     // Does the material ask for anything but glTF's default dielectric Fresnel?
@@ -109,6 +118,8 @@ struct Material {
         return !unlit && (ior != 1.5f || specularFactor != 1.0f || specularColorFactor != glm::vec3(1.0f) ||
                           specularTexture.present() || specularColorTexture.present());
     }
+    // Is there a coat? (glTF: a clearcoatFactor of 0 disables the layer, whatever its textures.)
+    bool clearcoatModelled() const { return !unlit && clearcoatFactor > 0.0f; }
     bool blended() const { return alphaMode == AlphaMode::Blend; }
 };
 

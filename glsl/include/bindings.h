@@ -123,10 +123,11 @@
 #define ML_MATERIAL_DOUBLE_SIDED 1u
 #define ML_MATERIAL_UNLIT 2u  // KHR_materials_unlit: the base colour, no lighting
 // vec4s in a material (glsl/include/material.glsl, GpuMaterial); info is the fourth. A scene whose
-// materials use KHR_materials_specular or KHR_materials_ior (ML_FEATURE_SPECULAR) has the
-// specular slots' transforms and one vec4 more (GpuMaterialSpecular); every other scene's records
-// keep the five core slots, so its shaders read what they read without the extension.
-#define ML_GPU_MATERIAL_VEC4S(specular) (4 + 2 * ((specular) ? ML_TEXTURE_SLOTS : ML_CORE_TEXTURE_SLOTS) + ((specular) ? 1 : 0))
+// materials use an extension with maps of its own (ML_FEATURES_EXTENDED_RECORD: KHR_materials_specular
+// or ior, KHR_materials_clearcoat) has every slot's transforms and the extensions' vec4s
+// (GpuMaterial::specular, clearcoat); every other scene's records keep the five core slots, so its
+// shaders read what they read without the extensions.
+#define ML_GPU_MATERIAL_VEC4S(extended) (4 + 2 * ((extended) ? ML_TEXTURE_SLOTS : ML_CORE_TEXTURE_SLOTS) + ((extended) ? 2 : 0))
 // Radix sort (glsl/radix_sort.comp) and z-binning (--assign zbin, glsl/zbin_assign.comp). Kept
 // below 32: llvmpipe offers 32 storage-buffer bindings.
 #define ML_SSBO_RADIX_KEYS_IN 20       // keys to sort (one pass reads these...)
@@ -179,6 +180,11 @@
 // passes sample no material, and every pass binds what it samples before it runs.
 #define ML_TEX_SPECULAR 12
 #define ML_TEX_SPECULAR_COLOR 13
+// KHR_materials_clearcoat's maps share the G-buffer's units: the passes that sample a material
+// write the G-buffer or read none, and the lighting, which reads it, samples no material.
+#define ML_TEX_CLEARCOAT 2
+#define ML_TEX_CLEARCOAT_ROUGHNESS 3
+#define ML_TEX_CLEARCOAT_NORMAL 4
 
 #define ML_TEX_DEPTH 1
 #define ML_TEX_GBUFFER0 2
@@ -188,6 +194,8 @@
 // The exact G-buffer's fourth target (specular, unlit), read by the lighting, which samples no
 // material and no shadow history (shares the previous guide's unit, read only by the reuse pass).
 #define ML_TEX_GBUFFER3 14
+// Its fifth (clearcoat), read by the same lighting: it samples no metallic-roughness map either.
+#define ML_TEX_GBUFFER4 6
 #define ML_TEX_RESOLVE_SOURCE 10  // the methods' colour (multisampled or supersampled), read by the resolve
 #define ML_TEX_SHADOW_ALPHA 11    // --shadows rays: the MASK images' alpha, a layer each (renderer/raytracing/shadow_alpha.h)
 // --shadows sampled (renderer/raytracing/sampled_shadows.h): what the lighting pass left, read by
@@ -211,6 +219,8 @@
 // The exact G-buffer's fourth target, written by the visibility resolve, which runs after the
 // compute raster's depth (unit 5) and before the lighting writes the shadow images.
 #define ML_IMG_GBUFFER3 5
+// And its fifth: the resolve writes no shadow image (the lighting, after it, does).
+#define ML_IMG_GBUFFER4 6
 // --shadows sampled: the rays the compute lighting drew, traced by glsl/shadow_trace.comp; rows of
 // the frame's height a layer: the rays' origin, then each draw's target (sampled_shadow_lighting.glsl).
 // Shares its unit with the history: the reuse pass, which writes that, reads no rays.
@@ -224,8 +234,11 @@
 #define ML_SLOT_EMISSIVE 4
 #define ML_SLOT_SPECULAR 5        // KHR_materials_specular specularTexture (A)
 #define ML_SLOT_SPECULAR_COLOR 6  // KHR_materials_specular specularColorTexture (RGB, sRGB)
-#define ML_TEXTURE_SLOTS 7
-#define ML_CORE_TEXTURE_SLOTS 5   // the slots every material record holds (the specular ones: ML_FEATURE_SPECULAR)
+#define ML_SLOT_CLEARCOAT 7            // KHR_materials_clearcoat clearcoatTexture (R)
+#define ML_SLOT_CLEARCOAT_ROUGHNESS 8  // KHR_materials_clearcoat clearcoatRoughnessTexture (G)
+#define ML_SLOT_CLEARCOAT_NORMAL 9     // KHR_materials_clearcoat clearcoatNormalTexture
+#define ML_TEXTURE_SLOTS 10
+#define ML_CORE_TEXTURE_SLOTS 5   // the slots every material record holds (the rest: ML_FEATURES_EXTENDED_RECORD)
 
 // What a scene's materials use (ML_MATERIAL_FEATURES, a bit mask): every shader that samples a
 // material is compiled with only these paths, so a scene that uses none of them pays nothing.
@@ -242,6 +255,10 @@
 #define ML_FEATURE_UNLIT 1024              // some material is KHR_materials_unlit
 #define ML_FEATURE_SPECULAR 2048           // some material sets KHR_materials_specular or KHR_materials_ior
 #define ML_FEATURE_SPECULAR_MAP 4096       // ...with a specularTexture or specularColorTexture
+#define ML_FEATURE_CLEARCOAT 8192          // some material has KHR_materials_clearcoat with a factor above 0
+#define ML_FEATURE_CLEARCOAT_MAP 16384     // ...with a clearcoat, clearcoat roughness or clearcoat normal texture
+// The features whose materials need the whole record (every slot, the extensions' vec4s).
+#define ML_FEATURES_EXTENDED_RECORD (ML_FEATURE_SPECULAR | ML_FEATURE_CLEARCOAT)
 
 // Light types (docs/lights-and-shading.md). A point light stores this as its cone cosines: below
 // any cosine, so the spot test passes everywhere and the cone tests never reject it.

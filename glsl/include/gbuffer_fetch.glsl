@@ -11,14 +11,17 @@ layout(binding = ML_TEX_GBUFFER1) uniform sampler2D u_gTarget1;
 #if ML_GBUFFER_FLOAT_TARGETS >= 3
 layout(binding = ML_TEX_GBUFFER2) uniform sampler2D u_gTarget2;
 #endif
-#if ML_GBUFFER_FLOAT_TARGETS == 4
+#if ML_GBUFFER_FLOAT_TARGETS >= 4
 layout(binding = ML_TEX_GBUFFER3) uniform sampler2D u_gTarget3;
+#endif
+#if ML_GBUFFER_FLOAT_TARGETS == 5
+layout(binding = ML_TEX_GBUFFER4) uniform sampler2D u_gTarget4;
 #endif
 #endif
 
 GBufferTexel fetchGBuffer(ivec2 p) {
     GBufferTexel t;
-    t.target[0] = t.target[1] = t.target[2] = t.target[3] = vec4(0.0);
+    t.target[0] = t.target[1] = t.target[2] = t.target[3] = t.target[4] = vec4(0.0);
     t.bits = uvec4(0u);
 #if ML_GBUFFER_FLOAT_TARGETS == 0
     t.bits = texelFetch(u_gPacked, p, 0);
@@ -28,8 +31,11 @@ GBufferTexel fetchGBuffer(ivec2 p) {
 #if ML_GBUFFER_FLOAT_TARGETS >= 3
     if (gbufferUsesTarget2(t)) t.target[2] = texelFetch(u_gTarget2, p, 0);
 #endif
-#if ML_GBUFFER_FLOAT_TARGETS == 4
+#if ML_GBUFFER_FLOAT_TARGETS >= 4
     if (gbufferUsesTarget3(t)) t.target[3] = texelFetch(u_gTarget3, p, 0);
+#endif
+#if ML_GBUFFER_FLOAT_TARGETS == 5
+    if (gbufferUsesTarget4(t)) t.target[4] = texelFetch(u_gTarget4, p, 0);
 #endif
 #endif
     return t;

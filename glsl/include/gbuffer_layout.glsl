@@ -24,7 +24,10 @@
 //                  RGBA32F: the specular F0 colour rgb, the specular weight (negative: unlit),
 //                  written and read only at pixels whose values are not glTF's default (metallic's
 //                  sign bit says which), and target 2 with it.                                    64 B
-// The lossy layouts hold neither specular nor unlit (the renderer warns where a scene has them).
+//                  Where the scene has KHR_materials_clearcoat, a target 4 RGBA32F: the coat's
+//                  weight, roughness and octahedral normal (2 x fp32), written and read only at
+//                  pixels with a coat (the distance's sign bit says which), targets 2 and 3 with it. 80 B
+// The lossy layouts hold neither specular, unlit nor clearcoat (the renderer warns where a scene has them).
 // The lossy layouts lose what a bright many-light sum makes visible on glossy, normal-mapped
 // content (docs/accuracy-and-stability.md#g-buffer-precision-on-glossy-normal-mapped-surfaces).
 #include "include/material_features.glsl"
@@ -36,10 +39,14 @@
 
 // The exact layout's target 2 (emissive, occlusion) exists where the scene has either.
 // Its target 3 (specular, unlit) where the scene has either; target 2 then exists too.
-#define ML_GBUFFER_EXACT_MATERIAL_EXTENSIONS (ML_HAS(ML_FEATURE_SPECULAR) || ML_HAS(ML_FEATURE_UNLIT))
+// Its target 4 (clearcoat) where the scene has a coat; targets 2 and 3 then exist too.
+#define ML_GBUFFER_EXACT_CLEARCOAT ML_HAS(ML_FEATURE_CLEARCOAT)
+#define ML_GBUFFER_EXACT_MATERIAL_EXTENSIONS (ML_HAS(ML_FEATURE_SPECULAR) || ML_HAS(ML_FEATURE_UNLIT) || ML_GBUFFER_EXACT_CLEARCOAT)
 #define ML_GBUFFER_EXACT_EXTRAS (ML_HAS(ML_FEATURE_EMISSIVE) || ML_HAS(ML_FEATURE_OCCLUSION_MAP) || ML_GBUFFER_EXACT_MATERIAL_EXTENSIONS)
 
-#if ML_GBUFFER_FORMAT == ML_GBUFFER_EXACT && ML_GBUFFER_EXACT_MATERIAL_EXTENSIONS
+#if ML_GBUFFER_FORMAT == ML_GBUFFER_EXACT && ML_GBUFFER_EXACT_CLEARCOAT
+#define ML_GBUFFER_FLOAT_TARGETS 5
+#elif ML_GBUFFER_FORMAT == ML_GBUFFER_EXACT && ML_GBUFFER_EXACT_MATERIAL_EXTENSIONS
 #define ML_GBUFFER_FLOAT_TARGETS 4
 #elif ML_GBUFFER_FORMAT == ML_GBUFFER_STANDARD || (ML_GBUFFER_FORMAT == ML_GBUFFER_EXACT && ML_GBUFFER_EXACT_EXTRAS)
 #define ML_GBUFFER_FLOAT_TARGETS 3
@@ -59,7 +66,7 @@
 
 // One pixel of the G-buffer as its targets hold it: float targets, or the one packed target.
 struct GBufferTexel {
-    vec4 target[4];
+    vec4 target[5];
     uvec4 bits;  // the packed layout's one RGBA32UI texel
 };
 
@@ -99,26 +106,38 @@ vec3 unpackRgb9e5(uint v) {
 
 // The stored point in world space, on the ray through window position windowPos: the surface's
 // position to the bit (pixel_ray.glsl).
-vec3 gbufferPosition(GBufferTexel t, vec2 windowPos) { return pixelRayPoint(windowPos, t.target[0].x); }
+// The exact layout flags a pixel whose optional targets hold something in the sign bit of a value
+// that is never negative, so that the pixels without (most of them) neither write nor read them:
+// target 2 (emissive, occlusion) in its roughness's, target 3 (specular, unlit) in its metallic's,
+// target 4 (clearcoat) in its distance's.
+const uint kGBufferSignFlag = 0x80000000u;
+float withoutSignFlag(float v) { return uintBitsToFloat(floatBitsToUint(v) & ~kGBufferSignFlag); }
+bool signFlagged(float v) { return (floatBitsToUint(v) & kGBufferSignFlag) != 0u; }
 
-// The exact layout flags a pixel whose target 2 holds something (emissive or occlusion) in the
-// sign bit of its roughness, so that the pixels without (most of them) neither write nor read it.
-const uint kGBufferTarget2Flag = 0x80000000u;
+vec3 gbufferPosition(GBufferTexel t, vec2 windowPos) { return pixelRayPoint(windowPos, withoutSignFlag(t.target[0].x)); }
 
 // Does this pixel's target 2 hold what decodeGBuffer needs? Known from target 0 alone.
 bool gbufferUsesTarget2(GBufferTexel t) {
 #if ML_GBUFFER_FORMAT == ML_GBUFFER_EXACT
-    return (floatBitsToUint(t.target[0].w) & kGBufferTarget2Flag) != 0u;
+    return signFlagged(t.target[0].w);
 #else
     return ML_GBUFFER_FLOAT_TARGETS == 3;
 #endif
 }
 
-// The exact layout flags a pixel whose target 3 holds a material extension's values in the sign
-// bit of its metallic (never negative either).
+// ...its target 3, known from target 1.
 bool gbufferUsesTarget3(GBufferTexel t) {
 #if ML_GBUFFER_FORMAT == ML_GBUFFER_EXACT && ML_GBUFFER_EXACT_MATERIAL_EXTENSIONS
-    return (floatBitsToUint(t.target[1].w) & kGBufferTarget2Flag) != 0u;
+    return signFlagged(t.target[1].w);
+#else
+    return false;
+#endif
+}
+
+// ...its target 4, known from target 0.
+bool gbufferUsesTarget4(GBufferTexel t) {
+#if ML_GBUFFER_FORMAT == ML_GBUFFER_EXACT && ML_GBUFFER_EXACT_CLEARCOAT
+    return signFlagged(t.target[0].x);
 #else
     return false;
 #endif
@@ -126,13 +145,18 @@ bool gbufferUsesTarget3(GBufferTexel t) {
 
 GBufferTexel encodeGBuffer(SurfacePoint s) {
     GBufferTexel t;
-    t.target[0] = t.target[1] = t.target[2] = t.target[3] = vec4(0.0);
+    t.target[0] = t.target[1] = t.target[2] = t.target[3] = t.target[4] = vec4(0.0);
     t.bits = uvec4(0u);
 #if ML_GBUFFER_FORMAT == ML_GBUFFER_EXACT
     uint roughnessBits = floatBitsToUint(s.roughness);
 #if ML_GBUFFER_EXACT_EXTRAS
     t.target[2] = vec4(s.emissive, s.occlusion);
-    if (s.emissive != vec3(0.0) || s.occlusion != 1.0) roughnessBits |= kGBufferTarget2Flag;
+    if (s.emissive != vec3(0.0) || s.occlusion != 1.0) roughnessBits |= kGBufferSignFlag;
+#endif
+    uint distanceBits = floatBitsToUint(s.rayDistance);
+#if ML_GBUFFER_EXACT_CLEARCOAT
+    t.target[4] = vec4(s.clearcoat, s.clearcoatRoughness, octEncode(s.clearcoatNormal));
+    if (s.clearcoat > 0.0) distanceBits |= kGBufferSignFlag;
 #endif
     uint metallicBits = floatBitsToUint(s.metallic);
 #if ML_GBUFFER_EXACT_MATERIAL_EXTENSIONS
@@ -149,9 +173,9 @@ GBufferTexel encodeGBuffer(SurfacePoint s) {
         extended = true;
     }
 #endif
-    if (extended) metallicBits |= kGBufferTarget2Flag;
+    if (extended) metallicBits |= kGBufferSignFlag;
 #endif
-    t.target[0] = vec4(s.rayDistance, octEncode(s.normal), uintBitsToFloat(roughnessBits));
+    t.target[0] = vec4(uintBitsToFloat(distanceBits), octEncode(s.normal), uintBitsToFloat(roughnessBits));
     t.target[1] = vec4(s.baseColor, uintBitsToFloat(metallicBits));
 #elif ML_GBUFFER_FORMAT == ML_GBUFFER_STANDARD
     t.target[0] = vec4(s.normal, s.occlusion);
@@ -175,9 +199,9 @@ void decodeGBuffer(GBufferTexel t, inout SurfacePoint s) {
     s.emissive = vec3(0.0);
 #if ML_GBUFFER_FORMAT == ML_GBUFFER_EXACT
     s.normal = octDecode(t.target[0].yz);
-    s.roughness = uintBitsToFloat(floatBitsToUint(t.target[0].w) & ~kGBufferTarget2Flag);
+    s.roughness = withoutSignFlag(t.target[0].w);
     s.baseColor = t.target[1].rgb;
-    s.metallic = uintBitsToFloat(floatBitsToUint(t.target[1].w) & ~kGBufferTarget2Flag);
+    s.metallic = withoutSignFlag(t.target[1].w);
     s.occlusion = 1.0;
     if (gbufferUsesTarget2(t)) {
         s.emissive = t.target[2].rgb;
@@ -193,6 +217,13 @@ void decodeGBuffer(GBufferTexel t, inout SurfacePoint s) {
 #if ML_HAS(ML_FEATURE_UNLIT)
     s.unlitMaterial = extension.w < 0.0;
 #endif
+#endif
+#if ML_GBUFFER_EXACT_CLEARCOAT
+    // Unflagged pixels have no coat (the normal is then never read).
+    vec4 coat = gbufferUsesTarget4(t) ? t.target[4] : vec4(0.0);
+    s.clearcoat = coat.x;
+    s.clearcoatRoughness = coat.y;
+    s.clearcoatNormal = gbufferUsesTarget4(t) ? octDecode(coat.zw) : s.normal;
 #endif
 #elif ML_GBUFFER_FORMAT == ML_GBUFFER_STANDARD
     s.normal = normalize(t.target[0].xyz);  // 16-bit storage: restore unit length
@@ -228,6 +259,11 @@ void decodeGBuffer(GBufferTexel t, inout SurfacePoint s) {
 #endif
 #if ML_HAS(ML_FEATURE_UNLIT)
     s.unlitMaterial = false;
+#endif
+#if ML_HAS(ML_FEATURE_CLEARCOAT)
+    s.clearcoat = 0.0;
+    s.clearcoatRoughness = 0.0;
+    s.clearcoatNormal = s.normal;
 #endif
 #endif
     deriveShadingTerms(s);

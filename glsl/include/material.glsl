@@ -3,9 +3,9 @@
 // ML_MATERIAL_FEATURES (bindings.h, ML_FEATURE_*), so their cost is paid only where used.
 #include "include/material_features.glsl"
 
-// The slots a material record holds (bindings.h, ML_GPU_MATERIAL_VEC4S): the specular pair only
-// in scenes that model it.
-#if ML_HAS(ML_FEATURE_SPECULAR)
+// The slots a material record holds (bindings.h, ML_GPU_MATERIAL_VEC4S): the extensions' only in
+// scenes that model one.
+#if ML_EXTENDED_MATERIAL_RECORD
 #define ML_MATERIAL_SLOTS ML_TEXTURE_SLOTS
 #else
 #define ML_MATERIAL_SLOTS ML_CORE_TEXTURE_SLOTS
@@ -20,10 +20,12 @@ struct Material {
     // Per slot, KHR_texture_transform as uv' = mat2(xy, zw) * uv + offset: [2 slot] the matrix's
     // columns, [2 slot + 1].xy the offset.
     vec4 uvTransforms[2 * ML_MATERIAL_SLOTS];
-#if ML_HAS(ML_FEATURE_SPECULAR)
+#if ML_EXTENDED_MATERIAL_RECORD
     // KHR_materials_ior and KHR_materials_specular: rgb ((ior - 1) / (ior + 1))^2 x specularColorFactor,
     // a specularFactor.
     vec4 specular;
+    // KHR_materials_clearcoat: factor, roughness, normal scale.
+    vec4 clearcoat;
 #endif
 };
 layout(std430, binding = ML_SSBO_MATERIALS) readonly buffer MaterialBuffer { Material materials[]; };
@@ -36,6 +38,11 @@ layout(binding = ML_TEX_EMISSIVE) uniform sampler2D u_emissiveTexture;
 #if ML_HAS(ML_FEATURE_SPECULAR_MAP)
 layout(binding = ML_TEX_SPECULAR) uniform sampler2D u_specularTexture;             // linear; A
 layout(binding = ML_TEX_SPECULAR_COLOR) uniform sampler2D u_specularColorTexture;  // sRGB; RGB
+#endif
+#if ML_HAS(ML_FEATURE_CLEARCOAT_MAP)
+layout(binding = ML_TEX_CLEARCOAT) uniform sampler2D u_clearcoatTexture;                    // linear; R
+layout(binding = ML_TEX_CLEARCOAT_ROUGHNESS) uniform sampler2D u_clearcoatRoughnessTexture;  // linear; G
+layout(binding = ML_TEX_CLEARCOAT_NORMAL) uniform sampler2D u_clearcoatNormalTexture;        // linear, tangent space
 #endif
 
 // Where a point samples its material: its UV sets and their screen-space gradients, which every
@@ -104,6 +111,21 @@ SurfacePoint surfaceFromMaterial(Material m, vec3 worldPos, vec3 worldNormal, ve
     SurfacePoint s;
     s.position = worldPos;
     s.normal = normalize(worldNormal);
+#if ML_HAS(ML_FEATURE_CLEARCOAT)
+    // KHR_materials_clearcoat: the coat's normal is the surface's own unless it has a map of its
+    // own (the material's normal map does not reach it).
+    s.clearcoat = m.clearcoat.x;
+    s.clearcoatRoughness = m.clearcoat.y;
+    s.clearcoatNormal = s.normal;
+#if ML_HAS(ML_FEATURE_CLEARCOAT_MAP)
+    if (hasTexture(m, ML_SLOT_CLEARCOAT)) s.clearcoat *= sampleMaterialTexture(u_clearcoatTexture, m, ML_SLOT_CLEARCOAT, c).r;
+    if (hasTexture(m, ML_SLOT_CLEARCOAT_ROUGHNESS))
+        s.clearcoatRoughness *= sampleMaterialTexture(u_clearcoatRoughnessTexture, m, ML_SLOT_CLEARCOAT_ROUGHNESS, c).g;
+    if (hasTexture(m, ML_SLOT_CLEARCOAT_NORMAL))
+        s.clearcoatNormal = perturbNormal(s.normal, worldTangent,
+                                          sampleMaterialTexture(u_clearcoatNormalTexture, m, ML_SLOT_CLEARCOAT_NORMAL, c).xyz, m.clearcoat.z);
+#endif
+#endif
 #if ML_HAS(ML_FEATURE_NORMAL_MAP)
     if (hasTexture(m, ML_SLOT_NORMAL))
         s.normal = perturbNormal(s.normal, worldTangent, sampleMaterialTexture(u_normalTexture, m, ML_SLOT_NORMAL, c).xyz, m.factors.z);

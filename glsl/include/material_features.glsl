@@ -4,3 +4,5 @@
 #define ML_MATERIAL_FEATURES 0
 #endif
 #define ML_HAS(feature) ((ML_MATERIAL_FEATURES & (feature)) != 0)
+// Do the material records hold every slot and the extensions' vec4s (bindings.h, ML_GPU_MATERIAL_VEC4S)?
+#define ML_EXTENDED_MATERIAL_RECORD ((ML_MATERIAL_FEATURES & ML_FEATURES_EXTENDED_RECORD) != 0)

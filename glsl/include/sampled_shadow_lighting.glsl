@@ -38,6 +38,6 @@ vec4 finishSampledPixel(ivec2 p, bool surface, ResolvedPixel px, vec3 lightSum) 
     imageStore(u_shadowLight, p, vec4(suns + lightSum, 1.0));
     imageStore(u_shadowGuide, p, vec4(px.surface.position, uintBitsToFloat(packSnorm2x16(octEncode(px.surface.normal)))));
     // Summed as finishPixel sums (shadeUnclustered, then the list's lights): the same bits as --shadows off.
-    vec3 color = viewShadesLights() ? shadeUnlit(px.surface) + suns + lightSum : vec3(0.0);
+    vec3 color = viewShadesLights() ? shadeUnlit(px.surface, px.viewDir) + suns + lightSum : vec3(0.0);
     return vec4(debugViewColor(grid.options.w, px.surface, px.cluster, px.viewDepth, color), 1.0);
 }

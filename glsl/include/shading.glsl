@@ -31,6 +31,13 @@
 //     energy from the diffuse. With c = 0.04 (ior 1.5, white) and w = 1 both are the F above, to the bit.
 //   KHR_materials_unlit: the surface shows its base colour and nothing else (no ambient, no
 //     emissive, no light: every light adds an exact zero).
+//   KHR_materials_clearcoat: a second specular lobe of its own roughness c_r and normal Nc over all
+//     of the above, layered by the coat's weight c and its Fresnel from N.V:
+//       k = c (0.04 + 0.96 (1 - |V.Nc|)^5),   each light adds  (1 - k) max(N.L, 0) f + k max(Nc.L, 0) f_c
+//     with f_c = D Vis at alpha_c = c_r^2 and normal Nc (GGX; under Blinn-Phong its normalized lobe
+//     at the coat's shininess), and the unlit terms become (1 - k) unlit + k ambient occlusion:
+//     the emissive under the coat is dimmed by it, and the ambient reflects off it. --specular off
+//     leaves the coat out, lobe and layering both (k = 0).
 
 #include "include/material_features.glsl"
 
@@ -110,6 +117,11 @@ struct SurfacePoint {
 #if ML_HAS(ML_FEATURE_UNLIT)
     bool unlitMaterial;    // KHR_materials_unlit
 #endif
+#if ML_HAS(ML_FEATURE_CLEARCOAT)
+    float clearcoat;           // KHR_materials_clearcoat: the coat's weight c (0: no coat)
+    float clearcoatRoughness;  // c_r
+    vec3 clearcoatNormal;      // Nc: world space, unit length, after the coat's own normal map
+#endif
     // Derived by deriveShadingTerms: what the light loop reads, and the unlit term, worked out
     // before the loop so that the material's inputs need not stay in registers through it.
     vec3 diffuse;
@@ -123,13 +135,20 @@ struct SurfacePoint {
     float f90;        // GGX: mix(w, 1, metallic)
     vec3 f0Diffuse;   // GGX: mix(w max(c), base, metallic), the diffuse's Fresnel
 #endif
+#if ML_HAS(ML_FEATURE_CLEARCOAT)
+    float clearcoatAlpha;      // GGX: c_r^2, floored at ML_GGX_MIN_ALPHA
+    float clearcoatShininess;  // Blinn-Phong
+#endif
 };
+
+// Blinn-Phong's exponent for GGX's alpha = roughness^2 (unfloored).
+float blinnPhongShininess(float alpha) { return clamp(2.0 / max(alpha * alpha, 1e-6) - 2.0, 1.0, 8192.0); }
 
 void deriveShadingTerms(inout SurfacePoint s) {
     float m = clamp(s.metallic, 0.0, 1.0);
     float r = clamp(s.roughness, 0.0, 1.0);
     float alpha = r * r;
-    s.shininess = clamp(2.0 / max(alpha * alpha, 1e-6) - 2.0, 1.0, 8192.0);
+    s.shininess = blinnPhongShininess(alpha);
     s.alpha = max(alpha, ML_GGX_MIN_ALPHA);
     s.diffuse = s.baseColor * (1.0 - m);
     s.diffuseOverPi = s.diffuse * (1.0 / kPi);
@@ -145,6 +164,11 @@ void deriveShadingTerms(inout SurfacePoint s) {
     s.unlit = ambientStrength() * s.occlusion * (s.diffuse + s.f0) + s.emissive;
 #if ML_HAS(ML_FEATURE_UNLIT)
     if (s.unlitMaterial) s.unlit = s.baseColor;
+#endif
+#if ML_HAS(ML_FEATURE_CLEARCOAT)
+    float coatRoughness = clamp(s.clearcoatRoughness, 0.0, 1.0);
+    s.clearcoatAlpha = max(coatRoughness * coatRoughness, ML_GGX_MIN_ALPHA);
+    s.clearcoatShininess = blinnPhongShininess(coatRoughness * coatRoughness);
 #endif
 }
 
@@ -162,6 +186,14 @@ float spotAttenuation(float cosToAxis, float cosInner, float cosOuter) {
 // visibility of Khronos' Sample Viewer, Filament and Bevy (the appendix writes the separable one;
 // they differ at grazing angles). 1 - (N.H)^2 as |N x H|^2: near the peak of a small alpha, the
 // difference 1 - (N.H)^2 loses the bits D depends on (Filament does the same).
+// GGX's D * Vis for alpha^2 = a2 (the terms as ggxBrdf names them).
+float ggxDistributionVisibility(float nDotH, vec3 nCrossH, float nDotL, float nDotV, float a2) {
+    float dDenominator = dot(nCrossH, nCrossH) + nDotH * nDotH * a2;  // (N.H)^2 (alpha^2 - 1) + 1
+    float visibilityDenominator = nDotL * sqrt(nDotV * nDotV * (1.0 - a2) + a2) + nDotV * sqrt(nDotL * nDotL * (1.0 - a2) + a2);
+    // D * Vis = (a2 / pi) / dDenominator^2 * 0.5 / visibilityDenominator, in one division.
+    return (0.5 / kPi) * a2 / (dDenominator * dDenominator * visibilityDenominator);
+}
+
 vec3 ggxBrdf(SurfacePoint s, vec3 viewDir, vec3 l, float nDotL) {
     vec3 h = normalize(l + viewDir);
     float nDotV = abs(dot(s.normal, viewDir));
@@ -178,10 +210,7 @@ vec3 ggxBrdf(SurfacePoint s, vec3 viewDir, vec3 l, float nDotL) {
 #else
     vec3 fresnel = s.f0 + (1.0 - s.f0) * q5;
 #endif
-    float dDenominator = dot(nCrossH, nCrossH) + nDotH * nDotH * a2;  // (N.H)^2 (alpha^2 - 1) + 1
-    float visibilityDenominator = nDotL * sqrt(nDotV * nDotV * (1.0 - a2) + a2) + nDotV * sqrt(nDotL * nDotL * (1.0 - a2) + a2);
-    // D * Vis = (a2 / pi) / dDenominator^2 * 0.5 / visibilityDenominator, in one division.
-    float distributionVisibility = (0.5 / kPi) * a2 / (dDenominator * dDenominator * visibilityDenominator);
+    float distributionVisibility = ggxDistributionVisibility(nDotH, nCrossH, nDotL, nDotV, a2);
     // (1 - F) diffuse / pi + F D Vis, as one multiply-add a channel.
 #if ML_HAS(ML_FEATURE_SPECULAR)
     // (1 - Fd) diffuse / pi + F D Vis: the last term is an exact zero where Fd is F.
@@ -191,22 +220,58 @@ vec3 ggxBrdf(SurfacePoint s, vec3 viewDir, vec3 l, float nDotL) {
 #endif
 }
 
+// The frame's BRDF for a light from unit direction l with N.L = nDotL > 0.
+vec3 surfaceBrdf(SurfacePoint s, vec3 viewDir, vec3 l, float nDotL) {
+    if (ggxEnabled()) return specularEnabled() ? ggxBrdf(s, viewDir, l, nDotL) : s.diffuseOverPi;
+    if (!specularEnabled()) return s.diffuse;
+    vec3 h = normalize(l + viewDir);
+    float spec = pow(max(dot(s.normal, h), 0.0), s.shininess);
+    return s.diffuse + s.specular * spec;
+}
+
+#if ML_HAS(ML_FEATURE_CLEARCOAT)
+// Does the coat take part? Not where there is none, nor under --specular off (a specular layer).
+bool coated(SurfacePoint s) { return s.clearcoat > 0.0 && specularEnabled(); }
+
+// k: the coat's share, its weight times its Fresnel from Nc.V (IOR 1.5).
+float clearcoatLayerWeight(SurfacePoint s, vec3 viewDir) {
+    float q = 1.0 - abs(dot(s.clearcoatNormal, viewDir));
+    float q2 = q * q;
+    return s.clearcoat * (0.04 + 0.96 * (q2 * q2 * q));
+}
+
+// The coat's lobe for unit l with Nc.L = coatNDotL > 0, Fresnel left to the layering.
+float clearcoatBrdf(SurfacePoint s, vec3 viewDir, vec3 l, float coatNDotL) {
+    vec3 h = normalize(l + viewDir);
+    float nDotH = max(dot(s.clearcoatNormal, h), 0.0);
+    if (!ggxEnabled()) return (s.clearcoatShininess + 8.0) / 8.0 * pow(nDotH, s.clearcoatShininess);
+    float a2 = s.clearcoatAlpha * s.clearcoatAlpha;
+    return ggxDistributionVisibility(nDotH, cross(s.clearcoatNormal, h), coatNDotL, abs(dot(s.clearcoatNormal, viewDir)), a2);
+}
+
+// A light through the coat: each lobe with its own normal's cosine, layered by k.
+vec3 shadeCoated(SurfacePoint s, vec3 viewDir, vec3 l, vec3 color, float weight, float nDotL) {
+    float coatNDotL = dot(s.clearcoatNormal, l);
+    if (nDotL <= 0.0 && coatNDotL <= 0.0) return vec3(0.0);
+    float k = clearcoatLayerWeight(s, viewDir);
+    vec3 base = nDotL > 0.0 ? nDotL * surfaceBrdf(s, viewDir, l, nDotL) : vec3(0.0);
+    float coat = coatNDotL > 0.0 ? coatNDotL * clearcoatBrdf(s, viewDir, l, coatNDotL) : 0.0;
+    return color * weight * (base * (1.0 - k) + coat * k);
+}
+#endif
+
 // A light of colour `color` arriving from unit direction l, weighted by its falloff (and cone),
 // through the frame's BRDF.
 vec3 shadeIncoming(SurfacePoint s, vec3 viewDir, vec3 l, vec3 color, float weight) {
     float nDotL = dot(s.normal, l);
+#if ML_HAS(ML_FEATURE_CLEARCOAT)
+    if (coated(s)) return shadeCoated(s, viewDir, l, color, weight, nDotL);  // never unlit (the loader's rule)
+#endif
     if (nDotL <= 0.0) return vec3(0.0);
 #if ML_HAS(ML_FEATURE_UNLIT)
     if (s.unlitMaterial) return vec3(0.0);  // lit by nothing (and so no shadow ray either)
 #endif
-    if (ggxEnabled()) {
-        if (!specularEnabled()) return color * (weight * nDotL) * s.diffuseOverPi;
-        return color * (weight * nDotL) * ggxBrdf(s, viewDir, l, nDotL);
-    }
-    if (!specularEnabled()) return color * (weight * nDotL) * s.diffuse;
-    vec3 h = normalize(l + viewDir);
-    float spec = pow(max(dot(s.normal, h), 0.0), s.shininess);
-    return color * (weight * nDotL) * (s.diffuse + s.specular * spec);
+    return color * (weight * nDotL) * surfaceBrdf(s, viewDir, l, nDotL);
 }
 
 // A point or spot light (include/lights.glsl's fields). A point light's cone cosines are
@@ -239,5 +304,14 @@ vec3 shadeDirectionalLight(SurfacePoint s, vec3 viewDir, vec3 direction, vec3 co
     return lit;
 }
 
-// What a surface shows with no light on it: the ambient term and its own glow.
-vec3 shadeUnlit(SurfacePoint s) { return s.unlit; }
+// What a surface shows with no light on it: the ambient term and its own glow (under a coat,
+// dimmed by it, and the ambient's reflection off the coat).
+vec3 shadeUnlit(SurfacePoint s, vec3 viewDir) {
+#if ML_HAS(ML_FEATURE_CLEARCOAT)
+    if (coated(s)) {
+        float k = clearcoatLayerWeight(s, viewDir);
+        return s.unlit * (1.0 - k) + ambientStrength() * s.occlusion * k;
+    }
+#endif
+    return s.unlit;
+}

@@ -18,7 +18,7 @@ vec3 shadeSuns(SurfacePoint s, vec3 viewDir) {
 }
 
 // What a point shows before the clustered lights: the unlit terms and every sun.
-vec3 shadeUnclustered(SurfacePoint s, vec3 viewDir) { return shadeUnlit(s) + shadeSuns(s, viewDir); }
+vec3 shadeUnclustered(SurfacePoint s, vec3 viewDir) { return shadeUnlit(s, viewDir) + shadeSuns(s, viewDir); }
 
 #ifdef ML_SHADOW_SAMPLED_LIGHTING
 // A point's colour from the sum of its clustered lights: the unlit terms, the suns and the sum,
@@ -28,6 +28,6 @@ vec3 sampledShadowColor(SurfacePoint s, vec3 viewDir, vec3 lightSum) {
     vec3 suns = shadeSuns(s, viewDir);
     float ratio = sampledShadowRatio(s.position, s.normal);
     // Where every drawn ray arrives, the sums of --shadows off, bit for bit.
-    return ratio == 1.0 ? shadeUnlit(s) + suns + lightSum : shadeUnlit(s) + (suns + lightSum) * ratio;
+    return ratio == 1.0 ? shadeUnlit(s, viewDir) + suns + lightSum : shadeUnlit(s, viewDir) + (suns + lightSum) * ratio;
 }
 #endif

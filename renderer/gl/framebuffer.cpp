@@ -5,8 +5,7 @@
 
 namespace ml::gl {
 
-Framebuffer::Framebuffer(std::string_view name, std::initializer_list<const Texture2D*> colors,
-                         const Texture2D* depth) {
+Framebuffer::Framebuffer(std::string_view name, const std::vector<const Texture2D*>& colors, const Texture2D* depth) {
     GLuint id = 0;
     glCreateFramebuffers(1, &id);
     handle_ = Handle<FramebufferDeleter>(id);

@@ -7,6 +7,22 @@ namespace ml {
 
 namespace {
 constexpr float kPi = 3.14159265358979f;
+
+// GGX's D * Vis (height-correlated Smith) for unit n, v, l with N.L > 0 and alpha^2 = a2.
+float ggxDistributionVisibility(const glm::vec3& n, const glm::vec3& v, const glm::vec3& l, float a2) {
+    const glm::vec3 h = glm::normalize(l + v);
+    const float nDotL = glm::dot(n, l);
+    const float nDotV = std::abs(glm::dot(n, v));
+    const float nDotH = std::max(glm::dot(n, h), 0.0f);
+    const glm::vec3 nCrossH = glm::cross(n, h);
+    const float dDenominator = glm::dot(nCrossH, nCrossH) + nDotH * nDotH * a2;
+    const float visibilityDenominator =
+        nDotL * std::sqrt(nDotV * nDotV * (1.0f - a2) + a2) + nDotV * std::sqrt(nDotL * nDotL * (1.0f - a2) + a2);
+    return (0.5f / kPi) * a2 / (dDenominator * dDenominator * visibilityDenominator);
+}
+
+float blinnPhongShininess(float alpha) { return std::clamp(2.0f / std::max(alpha * alpha, 1e-6f) - 2.0f, 1.0f, 8192.0f); }
+
 }  // namespace
 
 float stochasticAcceptance(float d2, float intensity, float cutoff) {
@@ -42,7 +58,7 @@ ShadingTerms shadingTerms(const glm::vec3& baseColor, float metallic, float roug
     ShadingTerms t;
     const float m = std::clamp(metallic, 0.0f, 1.0f);
     const float alpha = std::clamp(roughness, 0.0f, 1.0f) * std::clamp(roughness, 0.0f, 1.0f);
-    t.shininess = std::clamp(2.0f / std::max(alpha * alpha, 1e-6f) - 2.0f, 1.0f, 8192.0f);
+    t.shininess = blinnPhongShininess(alpha);
     t.alpha = std::max(alpha, static_cast<float>(ML_GGX_MIN_ALPHA));
     t.diffuse = baseColor * (1.0f - m);
     t.f0 = glm::mix(glm::vec3(0.04f), baseColor, m);
@@ -62,43 +78,63 @@ ShadingTerms shadingTerms(const SurfaceSample& s) {
     return t;
 }
 
+
 glm::vec3 ggxBrdf(const ShadingTerms& t, const glm::vec3& n, const glm::vec3& v, const glm::vec3& l) {
     const glm::vec3 h = glm::normalize(l + v);
-    const float nDotL = glm::dot(n, l);
-    const float nDotV = std::abs(glm::dot(n, v));
-    const float nDotH = std::max(glm::dot(n, h), 0.0f);
     const float vDotH = std::abs(glm::dot(v, h));
-    const glm::vec3 nCrossH = glm::cross(n, h);
-    const float a2 = t.alpha * t.alpha;
     const float q5 = std::pow(1.0f - vDotH, 5.0f);
     const glm::vec3 fresnel = t.f0 + (t.f90 - t.f0) * q5;
     const glm::vec3 diffuseFresnel = t.f0Diffuse + (t.f90 - t.f0Diffuse) * q5;
-    const float dDenominator = glm::dot(nCrossH, nCrossH) + nDotH * nDotH * a2;
-    const float visibilityDenominator =
-        nDotL * std::sqrt(nDotV * nDotV * (1.0f - a2) + a2) + nDotV * std::sqrt(nDotL * nDotL * (1.0f - a2) + a2);
-    const float distributionVisibility = (0.5f / kPi) * a2 / (dDenominator * dDenominator * visibilityDenominator);
+    const float distributionVisibility = ggxDistributionVisibility(n, v, l, t.alpha * t.alpha);
     const glm::vec3 diffuseOverPi = t.diffuse * (1.0f / kPi);
     return diffuseOverPi + fresnel * (distributionVisibility - diffuseOverPi) + (fresnel - diffuseFresnel) * diffuseOverPi;
+}
+
+float clearcoatLayerWeight(const SurfaceSample& s, const glm::vec3& v) {
+    return s.clearcoat * (0.04f + 0.96f * std::pow(1.0f - std::abs(glm::dot(s.clearcoatNormal, v)), 5.0f));
+}
+
+float clearcoatGgx(const SurfaceSample& s, const glm::vec3& v, const glm::vec3& l) {
+    const float r = std::clamp(s.clearcoatRoughness, 0.0f, 1.0f);
+    const float alpha = std::max(r * r, static_cast<float>(ML_GGX_MIN_ALPHA));
+    return ggxDistributionVisibility(s.clearcoatNormal, v, l, alpha * alpha);
 }
 
 glm::vec3 shadeReference(const SurfaceSample& s, const glm::vec3& eye, const std::vector<Light>& lights, float ambient,
                          bool specular, const LightModel& model) {
     if (s.unlit) return s.baseColor;
     const ShadingTerms t = shadingTerms(s);
-    glm::vec3 color = ambient * s.occlusion * (t.diffuse + t.f0) + s.emissive;
     const glm::vec3 v = glm::normalize(eye - s.position);
-    // A light of colour c from unit direction `dir`, weighted by its falloff and cone.
-    const auto incoming = [&](const glm::vec3& dir, const glm::vec3& c, float weight) {
+    // KHR_materials_clearcoat's share k (none under --specular off: the coat is a specular layer).
+    const float k = specular && s.clearcoat > 0.0f ? clearcoatLayerWeight(s, v) : 0.0f;
+    glm::vec3 color = (ambient * s.occlusion * (t.diffuse + t.f0) + s.emissive) * (1.0f - k) + ambient * s.occlusion * k;
+    // The material's BRDF times N.L for a light from unit direction `dir`.
+    const auto reflected = [&](const glm::vec3& dir) {
         const float nDotL = glm::dot(s.normal, dir);
         if (nDotL <= 0.0f) return glm::vec3(0.0f);
         if (model.brdf == Brdf::Ggx) {
-            if (!specular) return c * (weight * nDotL) * (t.diffuse * (1.0f / kPi));
-            return c * (weight * nDotL) * ggxBrdf(t, s.normal, v, dir);
+            if (!specular) return nDotL * (t.diffuse * (1.0f / kPi));
+            return nDotL * ggxBrdf(t, s.normal, v, dir);
         }
-        if (!specular) return c * (weight * nDotL) * t.diffuse;
+        if (!specular) return nDotL * t.diffuse;
         const glm::vec3 h = glm::normalize(dir + v);
         const float spec = std::pow(std::max(glm::dot(s.normal, h), 0.0f), t.shininess);
-        return c * (weight * nDotL) * (t.diffuse + t.specular * spec);
+        return nDotL * (t.diffuse + t.specular * spec);
+    };
+    // The coat's lobe times Nc.L.
+    const auto coatReflected = [&](const glm::vec3& dir) {
+        const float coatNDotL = glm::dot(s.clearcoatNormal, dir);
+        if (coatNDotL <= 0.0f) return 0.0f;
+        if (model.brdf == Brdf::Ggx) return coatNDotL * clearcoatGgx(s, v, dir);
+        const float r = std::clamp(s.clearcoatRoughness, 0.0f, 1.0f);
+        const float shininess = blinnPhongShininess(r * r);
+        const glm::vec3 h = glm::normalize(dir + v);
+        return coatNDotL * (shininess + 8.0f) / 8.0f * std::pow(std::max(glm::dot(s.clearcoatNormal, h), 0.0f), shininess);
+    };
+    // A light of colour c from unit direction `dir`, weighted by its falloff and cone.
+    const auto incoming = [&](const glm::vec3& dir, const glm::vec3& c, float weight) {
+        if (k == 0.0f) return c * weight * reflected(dir);
+        return c * weight * (reflected(dir) * (1.0f - k) + coatReflected(dir) * k);
     };
     // Directional lights first, as the shaders add them to the unlit terms (sun_lights.glsl).
     for (const Light& l : lights)

@@ -37,6 +37,10 @@ struct SurfaceSample {
     glm::vec3 specularF0{0.04f};
     float specularWeight = 1.0f;
     bool unlit = false;           // KHR_materials_unlit: the base colour, lit by nothing
+    // KHR_materials_clearcoat: the coat's weight (0: none), roughness and unit normal.
+    float clearcoat = 0.0f;
+    float clearcoatRoughness = 0.0f;
+    glm::vec3 clearcoatNormal{0.0f, 0.0f, 1.0f};
 };
 
 // The metallic-roughness material's terms, shared by every method.
@@ -57,6 +61,11 @@ ShadingTerms shadingTerms(const SurfaceSample& s);
 // (1 - Fd) diffuse / pi + F D Vis, Vis the height-correlated Smith term, Fd = F but where
 // KHR_materials_specular colours F0 (glsl/include/shading.glsl has the formulas).
 glm::vec3 ggxBrdf(const ShadingTerms& t, const glm::vec3& n, const glm::vec3& v, const glm::vec3& l);
+
+// KHR_materials_clearcoat's layer weight k = clearcoat (0.04 + 0.96 (1 - |V.Nc|)^5) and its lobe
+// (GGX's D Vis at the coat's alpha and normal, no Fresnel) for unit v and l with Nc.L > 0.
+float clearcoatLayerWeight(const SurfaceSample& s, const glm::vec3& v);
+float clearcoatGgx(const SurfaceSample& s, const glm::vec3& v, const glm::vec3& l);
 
 // The linear radiance the shaders compute for a surface point seen from `eye`, from lights of
 // every type (glsl/include/shading.glsl and sun_lights.glsl), in the given light model; without

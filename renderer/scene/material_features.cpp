@@ -37,6 +37,12 @@ std::uint32_t materialFeatures(const Scene& scene) {
             // Either map needs both slots' records (the specular slots come as a pair).
             if (uses(m.specularTexture) | uses(m.specularColorTexture)) f |= ML_FEATURE_SPECULAR_MAP;
         }
+        if (m.clearcoatModelled()) {
+            f |= ML_FEATURE_CLEARCOAT;
+            // The three maps share one switch; the coat's normal map reads the tangent stream too.
+            if (uses(m.clearcoatTexture) | uses(m.clearcoatRoughnessTexture)) f |= ML_FEATURE_CLEARCOAT_MAP;
+            if (!scene.tangents.empty() && uses(m.clearcoatNormalTexture)) f |= ML_FEATURE_CLEARCOAT_MAP | ML_FEATURE_NORMAL_MAP;
+        }
         if (m.alphaTested()) f |= ML_FEATURE_ALPHA_TEST;
         if (m.blended()) f |= ML_FEATURE_BLEND;
     }
@@ -63,6 +69,8 @@ std::string describeMaterialFeatures(std::uint32_t features) {
         {ML_FEATURE_UNLIT, "unlit"},
         {ML_FEATURE_SPECULAR, "specular and IOR"},
         {ML_FEATURE_SPECULAR_MAP, "specular maps"},
+        {ML_FEATURE_CLEARCOAT, "clearcoat"},
+        {ML_FEATURE_CLEARCOAT_MAP, "clearcoat maps"},
     };
     std::string text;
     for (const auto& [bit, name] : kNames)

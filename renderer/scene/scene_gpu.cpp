@@ -20,12 +20,17 @@ struct DrawElementsIndirectCommand {
 };
 static_assert(sizeof(DrawElementsIndirectCommand) == 20, "GL's indirect command layout");
 
-constexpr GLuint kSlotUnits[ML_TEXTURE_SLOTS] = {ML_TEX_BASE_COLOR, ML_TEX_METALLIC_ROUGHNESS, ML_TEX_NORMAL, ML_TEX_OCCLUSION,
-                                                 ML_TEX_EMISSIVE,    ML_TEX_SPECULAR,           ML_TEX_SPECULAR_COLOR};
+constexpr GLuint kSlotUnits[ML_TEXTURE_SLOTS] = {ML_TEX_BASE_COLOR,     ML_TEX_METALLIC_ROUGHNESS,  ML_TEX_NORMAL,
+                                                 ML_TEX_OCCLUSION,      ML_TEX_EMISSIVE,            ML_TEX_SPECULAR,
+                                                 ML_TEX_SPECULAR_COLOR, ML_TEX_CLEARCOAT,           ML_TEX_CLEARCOAT_ROUGHNESS,
+                                                 ML_TEX_CLEARCOAT_NORMAL};
 
-// The slots a scene's material records and texture bindings hold: the specular pair only where
-// some material models KHR_materials_specular or KHR_materials_ior.
-int materialSlots(std::uint32_t features) { return features & ML_FEATURE_SPECULAR ? ML_TEXTURE_SLOTS : ML_CORE_TEXTURE_SLOTS; }
+// Does the scene's material record hold every slot and the extensions' vec4s (bindings.h)?
+bool extendedRecord(std::uint32_t features) { return (features & ML_FEATURES_EXTENDED_RECORD) != 0; }
+
+// The slots a scene's material records and texture bindings hold: the extensions' only where some
+// material models one (KHR_materials_specular or ior, KHR_materials_clearcoat).
+int materialSlots(std::uint32_t features) { return extendedRecord(features) ? ML_TEXTURE_SLOTS : ML_CORE_TEXTURE_SLOTS; }
 
 // The texture slots whose shader path this scene compiles in (a slot whose feature is off is never sampled).
 std::array<const TextureRef*, ML_TEXTURE_SLOTS> sampledSlots(const Material& m, std::uint32_t features) {
@@ -38,6 +43,11 @@ std::array<const TextureRef*, ML_TEXTURE_SLOTS> sampledSlots(const Material& m, 
     if ((features & ML_FEATURE_SPECULAR_MAP) && m.specularModelled()) {
         slots[ML_SLOT_SPECULAR] = &m.specularTexture;
         slots[ML_SLOT_SPECULAR_COLOR] = &m.specularColorTexture;
+    }
+    if ((features & ML_FEATURE_CLEARCOAT_MAP) && m.clearcoatModelled()) {
+        slots[ML_SLOT_CLEARCOAT] = &m.clearcoatTexture;
+        slots[ML_SLOT_CLEARCOAT_ROUGHNESS] = &m.clearcoatRoughnessTexture;
+        if (features & ML_FEATURE_NORMAL_MAP) slots[ML_SLOT_CLEARCOAT_NORMAL] = &m.clearcoatNormalTexture;
     }
     return slots;
 }
@@ -111,6 +121,7 @@ SceneGpu::SceneGpu(const Scene& scene, TriangleOrder order) : features_(ml::mate
         g.emissiveCutoff = glm::vec4(m.emissive, m.alphaCutoff);
         g.factors = glm::vec4(m.metallic, m.roughness, m.normalScale, m.occlusionStrength);
         g.specular = glm::vec4(dielectricF0(m.ior) * m.specularColorFactor, m.specularFactor);
+        if (m.clearcoatModelled()) g.clearcoat = glm::vec4(m.clearcoatFactor, m.clearcoatRoughnessFactor, m.clearcoatNormalScale, 0.0f);
         if (m.unlit) g.info.w |= ML_MATERIAL_UNLIT;
         TextureSet set{};
         bool textured = false;
@@ -148,8 +159,8 @@ SceneGpu::SceneGpu(const Scene& scene, TriangleOrder order) : features_(ml::mate
         materialSet.push_back(-1);
     }
     // Each record as the scene's shaders declare it (material.glsl): the core slots' part alone
-    // where no material models specular, so that such a scene reads what it read before.
-    const std::size_t recordVec4s = ML_GPU_MATERIAL_VEC4S((features_ & ML_FEATURE_SPECULAR) != 0);
+    // where no material models an extension with maps, so that such a scene reads what it read before.
+    const std::size_t recordVec4s = ML_GPU_MATERIAL_VEC4S(extendedRecord(features_));
     std::vector<glm::vec4> records;
     records.resize(materials.size() * recordVec4s);
     for (std::size_t i = 0; i < materials.size(); ++i) std::memcpy(&records[i * recordVec4s], &materials[i], recordVec4s * sizeof(glm::vec4));
