@@ -282,7 +282,9 @@ TEST(FirstContact, InfoDescribesEveryCorpusFile) {
     }
     std::string toyCar;
     ASSERT_EQ(runManylights("info " + corpusFile("ToyCar", "ToyCar.gltf"), toyCar), 0) << toyCar;
-    EXPECT_TRUE(std::regex_search(toyCar, std::regex("KHR_materials_clearcoat +not modelled"))) << toyCar;
+    // Its clear coat is modelled (issue 65); its sheen is not yet.
+    EXPECT_TRUE(std::regex_search(toyCar, std::regex("KHR_materials_clearcoat +modelled"))) << toyCar;
+    EXPECT_TRUE(std::regex_search(toyCar, std::regex("KHR_materials_sheen +not modelled"))) << toyCar;
     EXPECT_TRUE(std::regex_search(toyCar, std::regex("KHR_texture_transform +modelled"))) << toyCar;
     std::string cameras;
     ASSERT_EQ(runManylights("info " + corpusFile("Cameras", "Cameras.gltf"), cameras), 0) << cameras;

@@ -1,5 +1,6 @@
-// glTF's material extensions on files the tests write: KHR_materials_unlit, KHR_materials_ior and
-// KHR_materials_specular (factors and both maps). Every clustered method (both deferred resolves,
+// glTF's material extensions on files the tests write: KHR_materials_unlit, KHR_materials_ior,
+// KHR_materials_specular (factors and both maps) and KHR_materials_clearcoat (factors, its three
+// maps, the emissive under it). Every clustered method (both deferred resolves,
 // the visibility buffer, all in the exact G-buffer) is held to naive on each; the frame's pixel is
 // held to the CPU mirror (renderer/reference/shading_reference.h) and, for unlit, to the base
 // colour itself, whatever the lights.
@@ -144,6 +145,92 @@ TEST_F(GltfMaterialExtensions, SpecularAndIorMatchNaiveAndTheCpuMirror) {
         const float* p = naive.hdr.at(kWidth / 2, kHeight / 2);
         for (int k = 0; k < 3; ++k) EXPECT_NEAR(p[k], mirror[k], 1e-4f + 1e-4f * mirror[k]) << c.name << " channel " << k;
     }
+}
+
+struct ClearcoatCase {
+    const char* name;
+    float factor, roughness;        // the extension's factors
+    std::array<std::uint8_t, 4> coatTexel, roughnessTexel, normalTexel;  // {0,0,0,0}: no such map
+    glm::vec3 emissive;
+    float clearcoat, clearcoatRoughness;  // what the mirror takes: factor x map
+    glm::vec3 clearcoatNormal;
+};
+
+// The tangent-space texel's normal on the test's quad (N = +z, T = +x, B = +y), scale 1.
+glm::vec3 quadNormalFromTexel(std::array<std::uint8_t, 4> t) {
+    return glm::normalize(glm::vec3(t[0], t[1], t[2]) / 255.0f * 2.0f - 1.0f);
+}
+
+// Quads under KHR_materials_clearcoat (factors, each map, a tilted coat normal over the plain one,
+// an emissive under the coat): every method holds to naive, and the middle pixel to the CPU mirror;
+// a clearcoatFactor of 0 compiles nothing in and leaves the frame as it was without the extension.
+TEST_F(GltfMaterialExtensions, ClearcoatMatchesNaiveAndTheCpuMirror) {
+    const std::array<std::uint8_t, 4> none{0, 0, 0, 0}, tilted{200, 128, 230, 255};
+    const glm::vec3 up(0.0f, 0.0f, 1.0f);
+    const std::vector<ClearcoatCase> cases = {
+        {"smooth coat", 1.0f, 0.05f, none, none, none, glm::vec3(0.0f), 1.0f, 0.05f, up},
+        {"half coat, rough", 0.5f, 0.6f, none, none, none, glm::vec3(0.0f), 0.5f, 0.6f, up},
+        {"maps", 0.9f, 0.8f, {153, 0, 0, 255}, {0, 51, 0, 255}, none, glm::vec3(0.0f), 0.9f * 153.0f / 255.0f,
+         0.8f * 51.0f / 255.0f, up},
+        {"coat normal map", 1.0f, 0.1f, none, none, tilted, glm::vec3(0.0f), 1.0f, 0.1f, quadNormalFromTexel(tilted)},
+        {"emissive under the coat", 1.0f, 0.2f, none, none, none, glm::vec3(0.5f, 0.2f, 0.1f), 1.0f, 0.2f, up},
+    };
+    const glm::vec3 base(0.7f, 0.1f, 0.1f);
+    const std::vector<float> tangents = {1, 0, 0, 1, 1, 0, 0, 1, 1, 0, 0, 1, 1, 0, 0, 1};
+    for (const ClearcoatCase& c : cases) {
+        Gltf g;
+        json coat = {{"clearcoatFactor", c.factor}, {"clearcoatRoughnessFactor", c.roughness}};
+        if (c.coatTexel != none) coat["clearcoatTexture"] = {{"index", addFlatTexture(g, c.coatTexel)}};
+        if (c.roughnessTexel != none) coat["clearcoatRoughnessTexture"] = {{"index", addFlatTexture(g, c.roughnessTexel)}};
+        if (c.normalTexel != none) coat["clearcoatNormalTexture"] = {{"index", addFlatTexture(g, c.normalTexel)}};
+        const int material = g.add("materials", {{"pbrMetallicRoughness", {{"baseColorFactor", {base.r, base.g, base.b, 1.0}},
+                                                                           {"metallicFactor", 0.0}, {"roughnessFactor", 0.5}}},
+                                                 {"emissiveFactor", {c.emissive.r, c.emissive.g, c.emissive.b}},
+                                                 {"extensions", {{"KHR_materials_clearcoat", coat}}}});
+        g.doc["extensionsUsed"] = {"KHR_materials_clearcoat"};
+        const json extra = {{"TANGENT", g.accessor(g.view(tangents.data(), tangents.size() * 4), kFloat, 4, "VEC4")}};
+        const Scene scene = writeAndLoad(g, {square(g, 0.0f, 2.5f, material, extra)}, "clearcoat");
+        ASSERT_TRUE(materialFeatures(scene) & ML_FEATURE_CLEARCOAT) << c.name;
+        EXPECT_EQ((materialFeatures(scene) & ML_FEATURE_CLEARCOAT_MAP) != 0, c.coatTexel != none || c.roughnessTexel != none || c.normalTexel != none)
+            << c.name;
+        const std::vector<Light> lights = testLights();
+        const FrameSettings settings = test::smallFrame(scene, kFrontView, kWidth, kHeight);
+        FrameRenderer renderer(scene, lights, settings);
+        const test::ReferenceFrame naive = test::expectClusteredVariantsMatchNaive(renderer, c.name);
+
+        SurfaceSample s;
+        s.position = middlePixelPoint();
+        s.normal = up;
+        s.baseColor = base;
+        s.roughness = 0.5f;
+        s.emissive = c.emissive;
+        s.clearcoat = c.clearcoat;
+        s.clearcoatRoughness = c.clearcoatRoughness;
+        s.clearcoatNormal = c.clearcoatNormal;
+        const glm::vec3 mirror = shadeReference(s, kFrontView.eye, lights, settings.ambient, true, settings.lightModel);
+        const float* p = naive.hdr.at(kWidth / 2, kHeight / 2);
+        for (int k = 0; k < 3; ++k) EXPECT_NEAR(p[k], mirror[k], 1e-4f + 1e-4f * mirror[k]) << c.name << " channel " << k;
+        // The coat shows: the pixel is not what the same material shows without it.
+        SurfaceSample bare = s;
+        bare.clearcoat = 0.0f;
+        const glm::vec3 uncoated = shadeReference(bare, kFrontView.eye, lights, settings.ambient, true, settings.lightModel);
+        EXPECT_GT(glm::length(mirror - uncoated), 1e-3f) << c.name << ": the coat changed nothing";
+    }
+
+    // clearcoatFactor 0 (with a map) is no coat: nothing compiles in, the frame is the plain material's.
+    std::vector<float> pixels[2];
+    for (int withExtension = 0; withExtension < 2; ++withExtension) {
+        Gltf g;
+        json material = {{"pbrMetallicRoughness", {{"baseColorFactor", {base.r, base.g, base.b, 1.0}}, {"metallicFactor", 0.0}, {"roughnessFactor", 0.5}}}};
+        if (withExtension)
+            material["extensions"] = {{"KHR_materials_clearcoat", {{"clearcoatFactor", 0.0}, {"clearcoatTexture", {{"index", addFlatTexture(g, {255, 0, 0, 255})}}}}}};
+        const Scene scene = writeAndLoad(g, {square(g, 0.0f, 2.5f, g.add("materials", material))}, "no_coat");
+        EXPECT_EQ(materialFeatures(scene) & (ML_FEATURE_CLEARCOAT | ML_FEATURE_CLEARCOAT_MAP), 0u);
+        FrameRenderer renderer(scene, testLights(), test::smallFrame(scene, kFrontView, kWidth, kHeight));
+        const test::ReferenceFrame naive = test::expectClusteredVariantsMatchNaive(renderer, "clearcoatFactor 0");
+        pixels[withExtension] = naive.hdr.pixels;
+    }
+    EXPECT_EQ(pixels[0], pixels[1]) << "a clearcoatFactor of 0 changed the frame";
 }
 
 }  // namespace

@@ -126,6 +126,33 @@ TEST(GltfMaterials, IorSpecularAndUnlitAreRead) {
     EXPECT_TRUE(warnings.empty()) << warnings.at(0);
 }
 
+// KHR_materials_clearcoat loads its factors, maps and the normal map's scale, warns about nothing,
+// and a factor of 0 is no coat whatever else the extension holds.
+TEST(GltfMaterials, ClearcoatIsRead) {
+    const fs::path dir = testDir();
+    Gltf g = withMaterial({{"extensions", {{"KHR_materials_clearcoat", {{"clearcoatFactor", 0.75}, {"clearcoatRoughnessFactor", 0.25},
+                                                                        {"clearcoatTexture", {{"index", 0}}},
+                                                                        {"clearcoatNormalTexture", {{"index", 0}, {"scale", 0.5}}}}}}}});
+    g.doc["extensionsUsed"] = {"KHR_materials_clearcoat"};
+    std::vector<std::string> warnings;
+    Scene s = load(g.writeGltf(dir, "clearcoat"), warnings);
+    const Material& m = s.materials.at(0);
+    EXPECT_FLOAT_EQ(m.clearcoatFactor, 0.75f);
+    EXPECT_FLOAT_EQ(m.clearcoatRoughnessFactor, 0.25f);
+    EXPECT_TRUE(m.clearcoatTexture.present());
+    EXPECT_FALSE(m.clearcoatRoughnessTexture.present());
+    EXPECT_TRUE(m.clearcoatNormalTexture.present());
+    EXPECT_FLOAT_EQ(m.clearcoatNormalScale, 0.5f);
+    EXPECT_TRUE(m.clearcoatModelled());
+    EXPECT_FALSE(s.tangents.empty()) << "the coat's normal map needs tangents as the material's own does";
+    EXPECT_TRUE(warnings.empty()) << warnings.at(0);
+
+    Gltf off = withMaterial({{"extensions", {{"KHR_materials_clearcoat", {{"clearcoatRoughnessFactor", 0.5}}}}}});
+    warnings.clear();
+    s = load(off.writeGltf(dir, "no_coat"), warnings);
+    EXPECT_FALSE(s.materials.at(0).clearcoatModelled()) << "glTF's default clearcoatFactor is 0";
+}
+
 TEST(GltfMaterials, BadValuesAreNamedInOneLine) {
     const fs::path dir = testDir();
     const auto refused = [&](const char* name, const json& material, std::initializer_list<const char*> keywords,
@@ -151,6 +178,14 @@ TEST(GltfMaterials, BadValuesAreNamedInOneLine) {
             {"materials[0]", "specularColorFactor"});
     refused("specular_texture", {{"extensions", {{"KHR_materials_specular", {{"specularColorTexture", {{"index", 9}}}}}}}},
             {"materials[0]", "specularColorTexture", "index 9"});
+    refused("clearcoat_factor", {{"extensions", {{"KHR_materials_clearcoat", {{"clearcoatFactor", 1.5}}}}}},
+            {"materials[0]", "KHR_materials_clearcoat", "clearcoatFactor 1.5"});
+    refused("clearcoat_roughness", {{"extensions", {{"KHR_materials_clearcoat", {{"clearcoatRoughnessFactor", "rough"}}}}}},
+            {"materials[0]", "clearcoatRoughnessFactor", "not a finite number"});
+    refused("clearcoat_texture", {{"extensions", {{"KHR_materials_clearcoat", {{"clearcoatFactor", 1.0}, {"clearcoatNormalTexture", {{"index", 9}}}}}}}},
+            {"materials[0]", "clearcoatNormalTexture", "index 9"});
+    refused("clearcoat_texture_info", {{"extensions", {{"KHR_materials_clearcoat", {{"clearcoatFactor", 1.0}, {"clearcoatTexture", 3}}}}}},
+            {"materials[0]", "clearcoatTexture", "not a textureInfo"});
     refused("min_filter", {{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}, {"samplers[0]", "minFilter 1234"},
             {{"minFilter", 1234}});
     refused("wrap", {{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}, {"samplers[0]", "wrapT 5"}, {{"wrapT", 5}});
