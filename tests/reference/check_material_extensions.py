@@ -1,12 +1,14 @@
 #!/usr/bin/python3
-"""Issue 65's independent check of KHR_materials_ior, KHR_materials_specular and
-KHR_materials_unlit: their formulas in numpy from the specifications (material_extensions.py),
+"""Issue 65's independent check of KHR_materials_ior, KHR_materials_specular,
+KHR_materials_unlit and KHR_materials_clearcoat: their formulas in numpy from the specifications (material_extensions.py),
 held to
 
 - the shader's CPU mirror (renderer/reference/shading_reference.cpp, run through
   ml_shading_mirror) on every material below, each under a sun at random directions and at
   grazing ones (light and view a few degrees above the surface, where Schlick's term is mostly
   F90, so an F90 that is not the specular weight shows), at most MIRROR_TOLERANCE relative apart;
+  the coated materials' coat normal tilted off the surface's in some cases, so that a lobe or a
+  Fresnel taken from the wrong normal shows;
 - the frame `manylights render` draws in every method (as check_cpu_reference.py does GGX's):
   strips of those materials on a floor seen at grazing angles, lit by a low sun from behind them,
   the float output (before the tonemap) at most PIXEL_TOLERANCE relative apart on every pixel
@@ -49,6 +51,8 @@ class Mat(NamedTuple):
     specular: float = 1.0
     specular_color: tuple = (1.0, 1.0, 1.0)
     unlit: bool = False
+    clearcoat: float = 0.0
+    clearcoat_roughness: float = 0.0
 
     def gltf(self):
         if self.unlit:
@@ -57,6 +61,9 @@ class Mat(NamedTuple):
             ext = {"KHR_materials_ior": {"ior": self.ior},
                    "KHR_materials_specular": {"specularFactor": self.specular,
                                               "specularColorFactor": list(self.specular_color)}}
+            if self.clearcoat > 0.0:
+                ext["KHR_materials_clearcoat"] = {"clearcoatFactor": self.clearcoat,
+                                                  "clearcoatRoughnessFactor": self.clearcoat_roughness}
         return ref.Material(base=self.base, metallic=self.metallic, roughness=self.roughness, extensions=ext)
 
 
@@ -69,7 +76,11 @@ MATERIALS = [
     Mat("metal", (0.9, 0.6, 0.3), 1.0, 0.35, ior=1.33, specular=0.3, specular_color=(0.2, 0.5, 1.0)),
     Mat("half_metal", (0.6, 0.4, 0.8), 0.5, 0.45, ior=1.7, specular=0.7, specular_color=(0.9, 1.0, 0.6)),
     Mat("unlit", (0.9, 0.5, 0.25), 0.0, 0.5, ior=2.0, specular=0.2, unlit=True),
+    Mat("coat_smooth", (0.7, 0.1, 0.1), 0.0, 0.5, clearcoat=1.0, clearcoat_roughness=0.15),
+    Mat("coat_rough_half", (0.2, 0.3, 0.8), 0.0, 0.3, clearcoat=0.5, clearcoat_roughness=0.55),
+    Mat("coat_on_metal", (0.9, 0.7, 0.2), 1.0, 0.6, ior=1.8, specular=0.7, clearcoat=0.8, clearcoat_roughness=0.2),
 ]
+COATED = [m.name for m in MATERIALS if m.clearcoat > 0.0]
 SUN_COLOR = (1.5, 1.4, 1.3)
 
 
@@ -79,7 +90,8 @@ def factor_arrays(mats):
         return np.array([f(m) for m in mats], dtype=dtype)
     return dict(base=col(lambda m: m.base), metallic=col(lambda m: m.metallic), roughness=col(lambda m: m.roughness),
                 ior=col(lambda m: m.ior), specular=col(lambda m: m.specular),
-                specular_color=col(lambda m: m.specular_color), unlit=col(lambda m: m.unlit, bool))
+                specular_color=col(lambda m: m.specular_color), unlit=col(lambda m: m.unlit, bool),
+                clearcoat=col(lambda m: m.clearcoat), clearcoat_roughness=col(lambda m: m.clearcoat_roughness))
 
 
 def directions(rng):
@@ -123,14 +135,19 @@ def check_mirror(mirror, failures):
         failures.append(f"mirror: a grazing case has (1 - |V.H|)^5 {q5[grazing].min():.3f} < {GRAZING_Q5}")
     f = factor_arrays(mats)
     f32 = {k: a.astype(np.float32).astype(float) if a.dtype != bool else a for k, a in f.items()}
+    # Every other case's coat normal tilted off the surface's (a coat normal map's work).
+    tilt = np.array([k % 2 == 1 for _ in MATERIALS for k in range(len(trip))])
+    coat_n = np.where(tilt[:, None], ref.normalize(n + 0.35 * ref.normalize(np.cross(n, v + 0.3))), n)
+    coat_n = coat_n.astype(np.float32).astype(float)
     eye = 3.0 * v                                     # the point at the origin, seen from 3 units along v
     rows = [list(eye[i]) + [0.0, 0.0, 0.0] + list(n[i]) + list(f32["base"][i]) +
             [f32["metallic"][i], f32["roughness"][i], f32["ior"][i], f32["specular"][i]] +
-            list(f32["specular_color"][i]) + [int(f["unlit"][i]), AMBIENT] + list(-l[i]) + list(SUN_COLOR)
+            list(f32["specular_color"][i]) + [int(f["unlit"][i]), f32["clearcoat"][i], f32["clearcoat_roughness"][i]] +
+            list(coat_n[i]) + [AMBIENT] + list(-l[i]) + list(SUN_COLOR)
             for i in range(len(mats))]
     got = run_mirror(mirror, rows)
     eye32 = eye.astype(np.float32).astype(float)      # what the mirror reads, and so sees
-    expected = mx.radiance(n, ref.normalize(eye32), l, SUN_COLOR, AMBIENT, **f32)
+    expected = mx.radiance(n, ref.normalize(eye32), l, SUN_COLOR, AMBIENT, clearcoat_normal=coat_n, **f32)
     rel = relative(got, expected).max(axis=-1)
     for name in dict.fromkeys(m.name for m in mats):
         sel = np.array([m.name == name for m in mats])
@@ -143,6 +160,9 @@ def check_mirror(mirror, failures):
     print(f"mirror: numpy against the CPU mirror, max relative difference {rel.max():.2e} over {len(rel)} cases")
 
     # The specification's diffuse weight against the renderer's convention: the same at metallic 0 and 1.
+    coats = np.isin([m.name for m in mats], COATED)
+    print(f"mirror: coated cases {int(coats.sum())}, {int((coats & tilt).sum())} with the coat's normal tilted; coat share "
+          f"{mx.clearcoat_share(v, f['clearcoat'], coat_n)[coats].min():.3f} to {mx.clearcoat_share(v, f['clearcoat'], coat_n)[coats].max():.3f}")
     args = (n, v, l, f["base"], f["metallic"], f["roughness"], f["ior"], f["specular"], f["specular_color"])
     spec, conv = mx.brdf_times_cos(*args, convention=False), mx.brdf_times_cos(*args, convention=True)
     ends = np.isin(f["metallic"], (0.0, 1.0))
@@ -155,7 +175,7 @@ def check_mirror(mirror, failures):
 
 def strips_scene():
     """One floor strip per material along x, seen from a low camera, a low sun shining from behind them."""
-    rects = [ref.Rect((1.4 * (k - (len(MATERIALS) - 1) / 2.0), 0.0, -2.0), (0.6, 0.0, 0.0), (0.0, 0.0, -5.0), m.gltf())
+    rects = [ref.Rect((1.0 * (k - (len(MATERIALS) - 1) / 2.0), 0.0, -2.0), (0.4, 0.0, 0.0), (0.0, 0.0, -5.0), m.gltf())
              for k, m in enumerate(MATERIALS)]
     sun = ref.Light("directional", color=(1.0, 1.0, 1.0), intensity=0.6, direction=(0.15, -0.12, 1.0))
     return ref.Scene("material_extensions", cpu_check.look_at((0.0, 0.7, 9.0), (0.0, 0.0, -3.0), 0.55),
@@ -170,7 +190,7 @@ def expected_frame(scene, width, height):
     l = np.broadcast_to(-ref.normalize(sun.direction), (int(hit.sum()), 3))
     frame = np.zeros((height, width, 3))
     frame[hit] = mx.radiance(normals[hit], -dirs[hit], l, np.asarray(sun.color) * sun.intensity, AMBIENT,
-                             **factor_arrays([MATERIALS[i] for i in ids[hit]]))
+                             clearcoat_normal=normals[hit], **factor_arrays([MATERIALS[i] for i in ids[hit]]))
     return frame, ids
 
 

@@ -1,6 +1,6 @@
-"""KHR_materials_ior, KHR_materials_specular and KHR_materials_unlit written from their
-specifications (issue 65), for check_material_extensions.py; GGX's D and Vis are cpu_reference's
-(glTF appendix B). Nothing here comes from the renderer's shading code.
+"""KHR_materials_ior, KHR_materials_specular, KHR_materials_unlit and KHR_materials_clearcoat
+written from their specifications (issue 65), for check_material_extensions.py; GGX's D and Vis are
+cpu_reference's (glTF appendix B). Nothing here comes from the renderer's shading code.
 
 KHR_materials_specular's BRDF, with alpha, D and Vis as in appendix B:
   dielectric_f0  = min(((ior - 1) / (ior + 1))^2 * specularColorFactor, 1)             (with KHR_materials_ior)
@@ -10,6 +10,12 @@ KHR_materials_specular's BRDF, with alpha, D and Vis as in appendix B:
   metal_brdf     = F_schlick(base, 1) D Vis                                            (conductor_fresnel)
   f = mix(dielectric_brdf, metal_brdf, metallic)
 KHR_materials_unlit: the surface shows its base colour, whatever the lights.
+KHR_materials_clearcoat (its "Implementation" section), Nc the coat's normal:
+  clearcoat_fresnel = 0.04 + (1 - 0.04) (1 - |V.Nc|)^5
+  clearcoat_brdf    = D(clearcoatRoughness^2) G / (4 |V.Nc| |L.Nc|)      (appendix B's specular term, no Fresnel)
+  coated_material   = mix(material, clearcoat_brdf, clearcoat clearcoat_fresnel)
+  coated_emission   = emission (1 - clearcoat clearcoat_fresnel)
+each BRDF times its own normal's cosine with the light.
 """
 import numpy as np
 
@@ -52,9 +58,21 @@ def ambient_fill(ambient, base, metallic, ior, specular, specular_color):
     return ambient * ((1.0 - m) * base + f0)
 
 
-def radiance(n, v, sun_l, sun_color, ambient, base, metallic, roughness, ior, specular, specular_color, unlit):
+def clearcoat_share(v, clearcoat, clearcoat_normal):
+    """clearcoat x clearcoat_fresnel (N, 1): what the coat takes of the layers below."""
+    return (clearcoat * (0.04 + 0.96 * (1.0 - np.abs(dot(v, clearcoat_normal))) ** 5))[:, None]
+
+
+def radiance(n, v, sun_l, sun_color, ambient, base, metallic, roughness, ior, specular, specular_color, unlit,
+             clearcoat, clearcoat_roughness, clearcoat_normal):
     """A point's linear radiance under one directional light (towards it: sun_l) and the ambient
-    fill; an unlit material's is its base colour (KHR_materials_unlit)."""
-    lit = ambient_fill(ambient, base, metallic, ior, specular, specular_color) + np.asarray(sun_color) * brdf_times_cos(
-        n, v, sun_l, base, metallic, roughness, ior, specular, specular_color)
+    fill; an unlit material's is its base colour (KHR_materials_unlit). Under a coat, the ambient
+    fill (a renderer convention) is layered as the emission is, and the coat reflects the fill
+    as a mirror of albedo one would (its Fresnel is in the share)."""
+    k = clearcoat_share(v, clearcoat, clearcoat_normal)
+    coat = ggx_distribution_visibility(clearcoat_normal, v, sun_l, clearcoat_roughness) * np.maximum(dot(clearcoat_normal, sun_l), 0.0)
+    fill = ambient_fill(ambient, base, metallic, ior, specular, specular_color)
+    lit = (1.0 - k) * (fill + np.asarray(sun_color) * brdf_times_cos(n, v, sun_l, base, metallic, roughness, ior, specular,
+                                                                    specular_color)) \
+        + k * (ambient + np.asarray(sun_color) * coat[:, None])
     return np.where(unlit[:, None], base, lit)
