@@ -15,6 +15,15 @@ namespace ml::depth {
 inline constexpr float kClear = 0.0f;          // the far plane, and the background
 inline constexpr GLenum kNearer = GL_GREATER;  // the depth test that keeps the nearest surface
 
+// Clears framebuffer fbo's depth to the background and turns on the test that keeps the nearest
+// surface, with depth writes: what every pass that rasters the scene's depth starts with.
+inline void beginNearestDepth(GLuint fbo) {
+    glClearNamedFramebufferfv(fbo, GL_DEPTH, 0, &kClear);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(kNearer);
+    glDepthMask(GL_TRUE);
+}
+
 // Clip depth in [0, 1], origin lower left: call once the context's functions are loaded.
 inline void useReversedDepth() { glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE); }
 

@@ -48,10 +48,7 @@ void ClusteredDeferred::render(const FrameContext& ctx) {
             // Each pixel's surface is rebuilt and written once, not once per fragment of overdraw.
             DepthPrePass::drawNearestOnce(ctx.scene, gbufferProgram_);
         } else {
-            glClearNamedFramebufferfv(fbo.id(), GL_DEPTH, 0, &depth::kClear);
-            glEnable(GL_DEPTH_TEST);
-            glDepthFunc(depth::kNearer);
-            glDepthMask(GL_TRUE);
+            depth::beginNearestDepth(fbo.id());
             ctx.scene.draw(gbufferProgram_);
         }
         glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);

@@ -48,10 +48,7 @@ void ForwardPlus::shadeOpaque(const FrameContext& ctx) {
         clustering_.build(ctx);
         auto pass = ctx.timer.pass("forward+.shade");
         clearColour();
-        glClearNamedFramebufferfv(fbo.id(), GL_DEPTH, 0, &depth::kClear);
-        glEnable(GL_DEPTH_TEST);
-        glDepthFunc(depth::kNearer);
-        glDepthMask(GL_TRUE);
+        depth::beginNearestDepth(fbo.id());
         ctx.bindLightsForShading();
         clustering_.bindForShading();
         ctx.scene.draw(shadeProgram_);

@@ -43,10 +43,7 @@ void NaiveForward::shadeOpaque(const FrameContext& ctx) {
     glViewport(0, 0, ctx.targets.width(), ctx.targets.height());
     const float clearColor[4] = {0.0f, 0.0f, 0.0f, 1.0f};
     glClearNamedFramebufferfv(ctx.targets.hdrFramebuffer().id(), GL_COLOR, 0, clearColor);
-    glClearNamedFramebufferfv(ctx.targets.hdrFramebuffer().id(), GL_DEPTH, 0, &depth::kClear);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(depth::kNearer);
-    glDepthMask(GL_TRUE);
+    depth::beginNearestDepth(ctx.targets.hdrFramebuffer().id());
     ctx.bindLightsForShading();
     ctx.scene.draw(program_);
 }

@@ -102,10 +102,7 @@ void VisibilityBuffer::rasterInHardware(const FrameContext& ctx) {
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     depthFbo_.bind();
     glViewport(0, 0, ctx.targets.width(), ctx.targets.height());
-    glClearNamedFramebufferfv(depthFbo_.id(), GL_DEPTH, 0, &depth::kClear);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(depth::kNearer);
-    glDepthMask(GL_TRUE);
+    depth::beginNearestDepth(depthFbo_.id());
     ctx.scene.draw(rasterProgram_, SceneGpu::Ranges::Opaque);
     if (ctx.scene.hasAlphaTestedRanges()) {
         // Drawn last, through the ROPs: their ids overwrite where they pass the depth test.

@@ -10,12 +10,9 @@ DepthPrePass::DepthPrePass(std::string_view label, std::uint32_t materialFeature
 
 void DepthPrePass::drawDepth(const SceneGpu& scene, const gl::Framebuffer& fbo) const {
     fbo.bind();
-    glClearNamedFramebufferfv(fbo.id(), GL_DEPTH, 0, &depth::kClear);
     const GLint clearStencil = 0;
     glClearNamedFramebufferiv(fbo.id(), GL_STENCIL, 0, &clearStencil);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(depth::kNearer);
-    glDepthMask(GL_TRUE);
+    depth::beginNearestDepth(fbo.id());
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
     scene.draw(depthProgram_);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
