@@ -8,6 +8,7 @@
 
 #include "app/animation_choice.h"
 #include "app/camera_spec.h"
+#include "app/material_variant_choice.h"
 #include "renderer/camera/default_camera.h"
 #include "glsl/include/bindings.h"
 #include "renderer/lights/light_buffers.h"
@@ -145,6 +146,8 @@ void addFrameOptions(CLI::App& cmd, FrameOptions& o) {
                    "(drawn at rest) (default: the first clip)")->type_name("NAME|INDEX|off");
     cmd.add_option("--scene-time", o.sceneTime, "seconds into the clip at frame 0; each frame adds 1/60 s, as the lights' "
                    "animation does, and the clip loops")->capture_default_str();
+    cmd.add_option("--material-variant", o.materialVariant, "a glTF file's KHR_materials_variants variant to draw, by name "
+                   "(default: the file's own materials; `info FILE` lists them)");
     cmd.add_option("--exposure", o.exposure, "auto (from the frame's log-average luminance, computed on the GPU), or EV "
                    "stops (the HDR frame times 2^EV before the tonemap) (default: auto for a file; for a built-in scene "
                    "log2(pi) = 1.65 under --brdf ggx, whose Lambert divides by pi, and 0 under blinn-phong: the same look)")
@@ -339,6 +342,7 @@ PreparedFrame prepareFrame(const FrameOptions& o, const Scene* loaded) {
 
     f.scene = loaded ? *loaded : loadScene(SceneRequest{o.scene, o.detail}, f.warnings);
     if (f.scene.indices.empty()) throw SceneError(o.scene + ": the scene has no triangles");
+    applyMaterialVariant(f.scene, parseMaterialVariant(o.materialVariant, f.scene));
     f.settings.sceneAnimation = sceneAnimationFor(o.animation, o.sceneTime, f.scene);
     if (const std::optional<std::size_t> clip = f.settings.sceneAnimation.clip) {
         // The scene as frame 0 shows it (the default camera frames it, lights are placed on it),

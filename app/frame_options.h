@@ -57,6 +57,7 @@ struct FrameOptions {
     long long frames = 0;
     std::string animation;   // --animation NAME|INDEX|off; empty: the first clip (app/animation_choice.h)
     double sceneTime = 0.0;  // --scene-time: seconds into the clip at frame 0
+    std::string materialVariant;  // --material-variant NAME (KHR_materials_variants); empty: the file's own materials
     // --exposure: auto, or EV stops (2^EV before the tonemap); empty: defaultLook (auto for a file;
     // for a built-in scene log2(pi) under GGX, 0 under Blinn-Phong).
     std::string exposure;

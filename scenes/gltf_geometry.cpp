@@ -5,6 +5,7 @@
 #include <tuple>
 
 #include "scenes/gltf_common.h"
+#include "scenes/gltf_variants.h"
 #include "scenes/tangent_frames.h"
 
 namespace ml::gltf {
@@ -18,7 +19,8 @@ glm::vec3 safeNormalize(const glm::vec3& v) {
 
 }  // namespace
 
-MeshPlan planMesh(const std::string& path, const tinygltf::Model& model, std::size_t meshIndex, Skipped& skipped) {
+MeshPlan planMesh(const std::string& path, const tinygltf::Model& model, std::size_t meshIndex, std::size_t variantCount,
+                  Skipped& skipped) {
     const tinygltf::Mesh& mesh = model.meshes[meshIndex];
     MeshPlan plan;
     std::map<std::tuple<int, int, int, int, int, int>, std::size_t> groupOf;
@@ -51,21 +53,32 @@ MeshPlan planMesh(const std::string& path, const tinygltf::Model& model, std::si
                            std::to_string(model.materials.size()) + " materials)");
 
         PrimitivePlan planned{static_cast<int>(p), 0, prim.indices, prim.material, prim.mode};
+        if (variantCount > 0) planned.variantMaterials = primitiveVariantMaterials(path, model, prim, variantCount, where());
         const int texcoord1 = attribute("TEXCOORD_1");
-        if (prim.material >= 0) {
-            const std::size_t m = static_cast<std::size_t>(prim.material);
+        // The streams follow every material the primitive may be drawn with, its variants' too,
+        // so that choosing a variant needs no reload. Tangents come from the first normal map's UV set.
+        bool normalSetChosen = false;
+        const auto needsOf = [&](int materialIndex) {
+            if (materialIndex < 0) return;
+            const std::size_t m = static_cast<std::size_t>(materialIndex);
             const tinygltf::Material& material = model.materials[m];
             checkTexCoords(path, model, m);
-            planned.readsTexcoord1 = usesTexCoord1(material);
-            planned.normalMapped = hasNormalTexture(material);
-            planned.normalTexCoord = normalTextureTexCoord(material);
-            if (planned.readsTexcoord1 && texcoord1 < 0) {
+            const bool readsTexcoord1 = usesTexCoord1(material);
+            planned.readsTexcoord1 = planned.readsTexcoord1 || readsTexcoord1;
+            if (hasNormalTexture(material) && !normalSetChosen) {
+                planned.normalMapped = true;
+                planned.normalTexCoord = normalTextureTexCoord(material);
+                normalSetChosen = true;
+            }
+            if (readsTexcoord1 && texcoord1 < 0) {
                 for (const MaterialTexture& texture : texturesOf(material))
                     if (texture.texCoord == 1.0)
                         fail(path, named("materials", m, material.name) + ": " + texture.slot + " reads TEXCOORD_1, which " +
                                        where() + " does not have");
             }
-        }
+        };
+        needsOf(prim.material);
+        for (int variantMaterial : planned.variantMaterials) needsOf(variantMaterial);
         const int normal = attribute("NORMAL"), texcoord = attribute("TEXCOORD_0"), color = attribute("COLOR_0"),
                   tangent = attribute("TANGENT");
         const auto key = std::make_tuple(position, normal, texcoord, texcoord1, color, tangent);
@@ -108,7 +121,7 @@ std::vector<std::uint32_t> SceneBuilder::addInstance(const MeshInstance& instanc
             ++skipped_.emptyPrimitives;
             continue;
         }
-        runs_.push_back({static_cast<std::uint32_t>(first), static_cast<std::uint32_t>(count), materials_.materialFor(prim.material)});
+        runs_.push_back({static_cast<std::uint32_t>(first), static_cast<std::uint32_t>(count), materialSetOf(prim)});
         colorsDrawn_ = colorsDrawn_ || plan.groups[prim.group].color >= 0;
         uv1Drawn_ = uv1Drawn_ || prim.readsTexcoord1;
         tangentsDrawn_ = tangentsDrawn_ || prim.normalMapped;
@@ -318,16 +331,33 @@ void SceneBuilder::generateNormals(const Block& block, const Ranges& ranges) {
     for (std::uint32_t i = 0; i < block.count; ++i) scene_.vertices[block.base + i].normal = safeNormalize(glm::vec3(sums[i]));
 }
 
+std::uint32_t SceneBuilder::materialSetOf(const PrimitivePlan& prim) {
+    std::vector<std::uint32_t> set{materials_.materialFor(prim.material)};
+    for (int variantMaterial : prim.variantMaterials) set.push_back(materials_.materialFor(variantMaterial));
+    const auto [it, added] = materialSetIndex_.try_emplace(set, static_cast<std::uint32_t>(materialSets_.size()));
+    if (added) materialSets_.push_back(std::move(set));
+    return it->second;
+}
+
 void SceneBuilder::finish() {
-    std::vector<std::size_t> offsets(scene_.materials.size() + 1, 0);
-    for (const DrawRange& run : runs_) offsets[run.material + 1] += run.indexCount;
+    // Ranges in the order of their material sets (the default material first): for a file
+    // without variants, one range per material in material order.
+    std::vector<std::uint32_t> rank(materialSets_.size());
+    std::uint32_t next = 0;
+    for (const auto& entry : materialSetIndex_) rank[entry.second] = next++;
+    std::vector<std::uint32_t> setOfRank(materialSets_.size());
+    for (std::uint32_t s = 0; s < rank.size(); ++s) setOfRank[rank[s]] = s;
+
+    std::vector<std::size_t> offsets(materialSets_.size() + 1, 0);
+    for (const DrawRange& run : runs_) offsets[rank[run.material] + 1] += run.indexCount;
     for (std::size_t m = 1; m < offsets.size(); ++m) offsets[m] += offsets[m - 1];
 
     std::vector<std::uint32_t> grouped(scene_.indices.size());
     std::vector<std::size_t> cursor(offsets.begin(), offsets.end() - 1);
     for (const DrawRange& run : runs_) {
-        std::copy_n(scene_.indices.begin() + run.firstIndex, run.indexCount, grouped.begin() + cursor[run.material]);
-        cursor[run.material] += run.indexCount;
+        std::size_t& at = cursor[rank[run.material]];
+        std::copy_n(scene_.indices.begin() + run.firstIndex, run.indexCount, grouped.begin() + at);
+        at += run.indexCount;
     }
     scene_.indices.swap(grouped);
     // A stream only a skipped or empty primitive asked for is not part of the scene.
@@ -335,10 +365,18 @@ void SceneBuilder::finish() {
     if (!uv1Drawn_) scene_.uv1.clear();
     if (!tangentsDrawn_) scene_.tangents.clear();
     scene_.draws.clear();
-    for (std::size_t m = 0; m + 1 < offsets.size(); ++m)
-        if (offsets[m + 1] > offsets[m])
-            scene_.draws.push_back({static_cast<std::uint32_t>(offsets[m]),
-                                    static_cast<std::uint32_t>(offsets[m + 1] - offsets[m]), static_cast<std::uint32_t>(m)});
+    MaterialVariants& variants = scene_.materialVariants;
+    variants.defaults.clear();
+    variants.materials.assign(variants.names.size(), {});
+    for (std::size_t r = 0; r + 1 < offsets.size(); ++r) {
+        if (offsets[r + 1] == offsets[r]) continue;
+        const std::vector<std::uint32_t>& set = materialSets_[setOfRank[r]];
+        scene_.draws.push_back({static_cast<std::uint32_t>(offsets[r]), static_cast<std::uint32_t>(offsets[r + 1] - offsets[r]), set[0]});
+        if (variants.empty()) continue;
+        variants.defaults.push_back(set[0]);
+        // A primitive without mappings takes its default under every variant.
+        for (std::size_t v = 0; v < variants.names.size(); ++v) variants.materials[v].push_back(set.size() > 1 ? set[1 + v] : set[0]);
+    }
 }
 
 }  // namespace ml::gltf

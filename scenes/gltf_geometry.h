@@ -54,6 +54,9 @@ struct PrimitivePlan {
     bool readsTexcoord1 = false;
     bool normalMapped = false;
     int normalTexCoord = 0;  // the UV set tangents are generated from
+    // KHR_materials_variants: the glTF material under each of the file's variants (its own where
+    // no mapping lists one); empty where the primitive has no mappings.
+    std::vector<int> variantMaterials;
 };
 
 // How one glTF mesh becomes triangles, worked out once however many nodes instance it, so that a
@@ -62,7 +65,10 @@ struct MeshPlan {
     std::vector<VertexGroup> groups;
     std::vector<PrimitivePlan> primitives;
 };
-MeshPlan planMesh(const std::string& path, const tinygltf::Model& model, std::size_t meshIndex, Skipped& skipped);
+// `variantCount`: the file's KHR_materials_variants (readVariantNames), whose mappings each
+// primitive is checked against.
+MeshPlan planMesh(const std::string& path, const tinygltf::Model& model, std::size_t meshIndex, std::size_t variantCount,
+                  Skipped& skipped);
 
 // Builds the scene from mesh instances: vertices in world space, materials through the converter.
 class SceneBuilder {
@@ -80,8 +86,9 @@ public:
     // another) and triangles; returns where each group's block starts.
     std::vector<std::uint32_t> addInstance(const MeshInstance& instance, const MeshPlan& plan);
 
-    // One draw range per material (instances append in node order, so a material recurs), and
-    // the optional streams dropped where no drawn primitive asked for them.
+    // One draw range per material (instances append in node order, so a material recurs), or per
+    // set of materials a primitive takes under the file's variants (scene.materialVariants, whose
+    // names the loader set), and the optional streams dropped where no drawn primitive asked for them.
     void finish();
 
 private:
@@ -99,6 +106,8 @@ private:
                                     const char* attribute, const Format& format, std::size_t count, float replacement,
                                     std::size_t& repairs) const;
     void appendTriangles(const MeshInstance& instance, const PrimitivePlan& prim, const Block& block, bool mirrored);
+    // The index into materialSets_ of the primitive's materials: its default, then one a variant.
+    std::uint32_t materialSetOf(const PrimitivePlan& prim);
     void generateNormals(const Block& block, const Ranges& ranges);
 
     // Optional streams (Scene::colors, uv1, tangents): once a stream exists, every vertex appended
@@ -113,7 +122,9 @@ private:
     Skipped& skipped_;
     MaterialConverter& materials_;
     AccessorReader reader_;
-    std::vector<DrawRange> runs_;  // per primitive instance, before grouping
+    std::vector<DrawRange> runs_;  // per primitive instance, before grouping; material: a materialSets_ index
+    std::vector<std::vector<std::uint32_t>> materialSets_;  // Scene::materials indices: default, then per variant
+    std::map<std::vector<std::uint32_t>, std::uint32_t> materialSetIndex_;
     // Whether a drawn primitive asked for each optional stream.
     bool colorsDrawn_ = false, uv1Drawn_ = false, tangentsDrawn_ = false;
 };

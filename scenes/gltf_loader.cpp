@@ -14,7 +14,8 @@
 //                    world space, reading through gltf_accessors (which checks every byte range);
 //                    an instance that moves in the mesh's own space, its influences and morph
 //                    deltas beside it (gltf_deformation), posed at rest once all are placed;
-//   gltf_materials   convert materials and their images on first use;
+//   gltf_variants    read KHR_materials_variants' names, and each primitive's mappings as it is planned;
+//   gltf_materials   convert materials and their images on first use (a variant's too);
 //   gltf_cameras     place the perspective cameras the node trees hold;
 //   gltf_lights      place the lights (KHR_lights_punctual) the node trees hold;
 //   unreferenced_vertices  drop the vertices no index uses (they are not part of the scene);
@@ -38,6 +39,7 @@
 #include "scenes/gltf_instancing.h"
 #include "scenes/gltf_materials.h"
 #include "scenes/gltf_nodes.h"
+#include "scenes/gltf_variants.h"
 #include "scenes/unreferenced_vertices.h"
 
 namespace ml {
@@ -121,6 +123,7 @@ Scene loadChecked(const std::string& path, std::vector<std::string>& warnings) {
     SceneBuilder builder(path, model, scene, skipped, materials);
     const AccessorReader instanceReader(path, model, lists(model.extensionsUsed, "KHR_mesh_quantization"));
     std::size_t instanceBudget = kMaxInstances;
+    scene.materialVariants.names = readVariantNames(path, model);
     std::vector<std::optional<MeshPlan>> plans(model.meshes.size());
     const FlatScene flat = flattenNodes(path, model);
     // Only a file with something that moves pays for animation.
@@ -132,7 +135,7 @@ Scene loadChecked(const std::string& path, std::vector<std::string>& warnings) {
     }
     for (const MeshInstance& instance : flat.meshes) {
         std::optional<MeshPlan>& plan = plans[instance.mesh];
-        if (!plan) plan = planMesh(path, model, instance.mesh, skipped);
+        if (!plan) plan = planMesh(path, model, instance.mesh, scene.materialVariants.names.size(), skipped);
         for (const MeshInstance& placed : gpuInstances(path, model, instanceReader, instance, instanceBudget)) {
             if (!animation || !animation->deforms(placed)) {
                 builder.addInstance(placed, *plan);
@@ -183,7 +186,9 @@ bool isModelledGltfExtension(const std::string& name) {
     // GPU instances flattened (gltf_instancing).
     return name == "KHR_lights_punctual" || name == "KHR_mesh_quantization" || name == "KHR_texture_transform" ||
            name == "KHR_materials_emissive_strength" || name == "KHR_materials_unlit" || name == "KHR_materials_ior" ||
-           name == "KHR_materials_specular" || name == "KHR_materials_clearcoat" || name == "KHR_draco_mesh_compression" ||
+           name == "KHR_materials_specular" || name == "KHR_materials_clearcoat" ||
+           name == "KHR_materials_pbrSpecularGlossiness" || name == "KHR_materials_variants" ||
+           name == "KHR_draco_mesh_compression" ||
            name == "EXT_meshopt_compression" || name == "EXT_mesh_gpu_instancing";
 }
 

@@ -1,6 +1,7 @@
 #include "scenes/gltf_materials.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <initializer_list>
 #include <sstream>
@@ -138,11 +139,23 @@ Material MaterialConverter::convertMaterial(std::size_t index) {
     Material m;
     m.name = source.name.empty() ? "material " + std::to_string(index) : source.name;
     const tinygltf::PbrMetallicRoughness& pbr = source.pbrMetallicRoughness;
-    const std::vector<double>& f = pbr.baseColorFactor;
-    if (f.size() != 4) fail(path_, what + ": baseColorFactor has " + std::to_string(f.size()) + " numbers, expected 4");
-    for (int c = 0; c < 4; ++c) m.baseColorFactor[c] = factor(f[c], "baseColorFactor", 0.0, 1.0);
-    m.metallic = factor(pbr.metallicFactor, "metallicFactor", 0.0, 1.0);
-    m.roughness = factor(pbr.roughnessFactor, "roughnessFactor", 0.0, 1.0);
+    // KHR_materials_pbrSpecularGlossiness stands in for the metallic-roughness block, which a
+    // file keeps only as a fallback for viewers without the extension.
+    const auto specularGlossiness = source.extensions.find(kSpecularGlossiness);
+    const bool metallicRoughness = specularGlossiness == source.extensions.end();
+    if (metallicRoughness) {
+        const std::vector<double>& f = pbr.baseColorFactor;
+        if (f.size() != 4) fail(path_, what + ": baseColorFactor has " + std::to_string(f.size()) + " numbers, expected 4");
+        for (int c = 0; c < 4; ++c) m.baseColorFactor[c] = factor(f[c], "baseColorFactor", 0.0, 1.0);
+        m.metallic = factor(pbr.metallicFactor, "metallicFactor", 0.0, 1.0);
+        m.roughness = factor(pbr.roughnessFactor, "roughnessFactor", 0.0, 1.0);
+        m.baseColorTexture = textureRef(what + " baseColorTexture", pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord,
+                                        pbr.baseColorTexture.extensions, true);
+        m.metallicRoughnessTexture = textureRef(what + " metallicRoughnessTexture", pbr.metallicRoughnessTexture.index,
+                                                pbr.metallicRoughnessTexture.texCoord, pbr.metallicRoughnessTexture.extensions, false);
+    } else {
+        convertSpecularGlossiness(specularGlossiness->second, what, m);
+    }
     m.doubleSided = source.doubleSided;
 
     if (source.alphaMode == "MASK") {
@@ -156,10 +169,6 @@ Material MaterialConverter::convertMaterial(std::size_t index) {
         fail(path_, what + ": alphaCutoff " + number(source.alphaCutoff) + " is not a number >= 0");
     m.alphaCutoff = static_cast<float>(source.alphaCutoff);
 
-    m.baseColorTexture = textureRef(what + " baseColorTexture", pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord,
-                                    pbr.baseColorTexture.extensions, true);
-    m.metallicRoughnessTexture = textureRef(what + " metallicRoughnessTexture", pbr.metallicRoughnessTexture.index,
-                                            pbr.metallicRoughnessTexture.texCoord, pbr.metallicRoughnessTexture.extensions, false);
     const tinygltf::NormalTextureInfo& normal = source.normalTexture;
     m.normalTexture = textureRef(what + " normalTexture", normal.index, normal.texCoord, normal.extensions, false);
     if (!finite(normal.scale)) fail(path_, what + ": normalTexture.scale " + number(normal.scale) + " is not a finite number");
@@ -215,6 +224,9 @@ void MaterialConverter::convertMaterialExtensions(const tinygltf::Material& sour
         m.unlit = true;
         return;
     }
+    // Specular-glossiness sets its own F0 (convertSpecularGlossiness); the extension is not
+    // meant to be combined with these two.
+    if (source.extensions.count(kSpecularGlossiness) != 0) return;
     if (const tinygltf::Value* ior = extension("KHR_materials_ior")) {
         const double v = extensionNumber(path_, what, *ior, "KHR_materials_ior", "ior", 1.5);
         // The schema allows 0 (F0 = 1, the specular-glossiness conversion) and [1, inf).
@@ -260,6 +272,84 @@ void MaterialConverter::convertMaterialExtensions(const tinygltf::Material& sour
             m.clearcoatNormalScale = static_cast<float>(
                 extensionNumber(path_, what, coat->Get("clearcoatNormalTexture"), "KHR_materials_clearcoat clearcoatNormalTexture", "scale", 1.0));
     }
+}
+
+namespace {
+
+// Factors of specular-glossiness: `n` numbers in [0, 1], or `fallback` where absent.
+template <std::size_t N>
+std::array<float, N> unitFactors(const std::string& path, const std::string& what, const tinygltf::Value& object,
+                                 const char* field, float fallback) {
+    std::array<float, N> out;
+    out.fill(fallback);
+    if (!object.Has(field)) return out;
+    double v[N];
+    const tinygltf::Value& given = object.Get(field);
+    const bool read = N == 1 ? (given.IsNumber() || given.IsInt()) && finite(v[0] = given.GetNumberAsDouble())
+                             : readNumbers(given, N, v);
+    if (!read || std::any_of(v, v + N, [](double x) { return x < 0.0 || x > 1.0; }))
+        fail(path, what + ": " + kSpecularGlossiness + " " + field + " is not " + (N == 1 ? "a number" : std::to_string(N) + " numbers") +
+                       " in [0, 1]");
+    for (std::size_t i = 0; i < N; ++i) out[i] = static_cast<float>(v[i]);
+    return out;
+}
+
+// The metallic-roughness map a specular-glossiness map stands for: G, the roughness, is
+// 1 - glossinessFactor x A; B, the metallic, 0. Baked once at load, so the shaders keep one path.
+Image bakeRoughnessFromGlossiness(const Image& specularGlossiness, float glossinessFactor) {
+    Image out;
+    out.name = specularGlossiness.name + " (roughness from glossiness)";
+    out.width = specularGlossiness.width;
+    out.height = specularGlossiness.height;
+    out.srgb = false;
+    out.rgba8.resize(specularGlossiness.rgba8.size());
+    for (std::size_t i = 0; i + 3 < out.rgba8.size(); i += 4) {
+        const float glossiness = glossinessFactor * (specularGlossiness.rgba8[i + 3] / 255.0f);
+        out.rgba8[i + 0] = 255;
+        out.rgba8[i + 1] = static_cast<std::uint8_t>(std::lround(255.0f * (1.0f - glossiness)));
+        out.rgba8[i + 2] = 0;
+        out.rgba8[i + 3] = 255;
+    }
+    return out;
+}
+
+}  // namespace
+
+void MaterialConverter::convertSpecularGlossiness(const tinygltf::Value& sg, const std::string& what, Material& m) {
+    if (!sg.IsObject()) fail(path_, what + ": " + kSpecularGlossiness + " is not a JSON object");
+    const std::array<float, 4> diffuse = unitFactors<4>(path_, what, sg, "diffuseFactor", 1.0f);
+    const std::array<float, 3> specular = unitFactors<3>(path_, what, sg, "specularFactor", 1.0f);
+    const float glossiness = unitFactors<1>(path_, what, sg, "glossinessFactor", 1.0f)[0];
+    const std::string prefix = what + " " + kSpecularGlossiness + " ";
+    // The diffuse colour is the base colour: sRGB, its alpha the coverage; metallic 0.
+    m.baseColorFactor = glm::vec4(diffuse[0], diffuse[1], diffuse[2], diffuse[3]);
+    if (sg.Has("diffuseTexture")) m.baseColorTexture = extensionTextureRef(prefix + "diffuseTexture", sg.Get("diffuseTexture"), true);
+    m.metallic = 0.0f;
+    m.roughness = 1.0f - glossiness;
+    // The specular colour is the dielectric's F0 itself: ior 0 makes ((ior - 1) / (ior + 1))^2 = 1,
+    // and KHR_materials_specular's colour (factor x sRGB map) is then F0, its weight 1.
+    m.ior = 0.0f;
+    m.specularFactor = 1.0f;
+    m.specularColorFactor = glm::vec3(specular[0], specular[1], specular[2]);
+    if (!sg.Has("specularGlossinessTexture")) return;
+    const TextureRef map = extensionTextureRef(prefix + "specularGlossinessTexture", sg.Get("specularGlossinessTexture"), true);
+    if (!map.present()) return;  // no PNG/JPEG source: counted by textureRef
+    m.specularColorTexture = map;  // RGB, sRGB; its alpha is not read there
+    // Glossiness in the map's alpha moves to a metallic-roughness map's G channel.
+    const auto key = std::make_pair(map.image, glossiness);
+    auto [it, added] = bakedRoughness_.try_emplace(key, static_cast<int>(scene_.images.size()));
+    if (added) {
+        const Image& source = scene_.images[static_cast<std::size_t>(map.image)];
+        const std::uint64_t texels = std::uint64_t(source.width) * std::uint64_t(source.height);
+        if (texels > texelBudget_)
+            fail(path_, prefix + "specularGlossinessTexture: its roughness map would exceed the limit of " +
+                            std::to_string(kMaxImageTexels) + " texels in all");
+        texelBudget_ -= texels;
+        scene_.images.push_back(bakeRoughnessFromGlossiness(source, glossiness));
+    }
+    m.metallicRoughnessTexture = map;
+    m.metallicRoughnessTexture.image = it->second;
+    m.roughness = 1.0f;  // the map holds 1 - glossinessFactor x A
 }
 
 TextureRef MaterialConverter::extensionTextureRef(const std::string& what, const tinygltf::Value& info, bool srgb) {
@@ -443,17 +533,21 @@ std::optional<JsonTextureInfo> clearcoatNormalTexture(const tinygltf::Material& 
 
 std::vector<MaterialTexture> texturesOf(const tinygltf::Material& material) {
     std::vector<MaterialTexture> out;
-    addIfPresent(out, "baseColorTexture", material.pbrMetallicRoughness.baseColorTexture);
-    addIfPresent(out, "metallicRoughnessTexture", material.pbrMetallicRoughness.metallicRoughnessTexture);
+    if (material.extensions.count(kSpecularGlossiness) == 0) {  // else the fallback block is never read
+        addIfPresent(out, "baseColorTexture", material.pbrMetallicRoughness.baseColorTexture);
+        addIfPresent(out, "metallicRoughnessTexture", material.pbrMetallicRoughness.metallicRoughnessTexture);
+    }
     addIfPresent(out, "normalTexture", material.normalTexture);
     addIfPresent(out, "occlusionTexture", material.occlusionTexture);
     addIfPresent(out, "emissiveTexture", material.emissiveTexture);
+    addExtensionTexture(out, material, kSpecularGlossiness, "diffuseTexture");
     if (material.extensions.count("KHR_materials_unlit") == 0) {  // unlit: the extension's maps are never read
         addExtensionTexture(out, material, "KHR_materials_specular", "specularTexture");
         addExtensionTexture(out, material, "KHR_materials_specular", "specularColorTexture");
         addExtensionTexture(out, material, "KHR_materials_clearcoat", "clearcoatTexture");
         addExtensionTexture(out, material, "KHR_materials_clearcoat", "clearcoatRoughnessTexture");
         addExtensionTexture(out, material, "KHR_materials_clearcoat", "clearcoatNormalTexture");
+        addExtensionTexture(out, material, kSpecularGlossiness, "specularGlossinessTexture");
     }
     return out;
 }

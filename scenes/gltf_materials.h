@@ -4,8 +4,10 @@
 #pragma once
 
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <tiny_gltf.h>
@@ -14,6 +16,8 @@
 #include "scenes/scene.h"
 
 namespace ml::gltf {
+
+inline constexpr const char* kSpecularGlossiness = "KHR_materials_pbrSpecularGlossiness";
 
 // Converts materials on first use and appends them (and the images they read) to the scene.
 class MaterialConverter {
@@ -43,6 +47,10 @@ private:
     TextureRef extensionTextureRef(const std::string& what, const tinygltf::Value& info, bool srgb);
     // KHR_materials_unlit, KHR_materials_ior and KHR_materials_specular into m.
     void convertMaterialExtensions(const tinygltf::Material& source, const std::string& what, Material& m);
+    // KHR_materials_pbrSpecularGlossiness (the extension's object) into m's base colour,
+    // roughness and KHR_materials_specular F0, in place of the metallic-roughness block
+    // (docs/gltf.md says what it keeps and what it changes).
+    void convertSpecularGlossiness(const tinygltf::Value& specularGlossiness, const std::string& what, Material& m);
     int imageFor(std::size_t index, bool srgb);
     int samplerFor(std::size_t index);
 
@@ -53,6 +61,8 @@ private:
     std::vector<int> imageSlots_[2];  // glTF image -> Scene::images index, [0] linear, [1] sRGB
     std::vector<int> samplerSlots_;   // glTF sampler -> Scene::samplers index
     std::optional<std::uint32_t> defaultMaterial_;
+    // Roughness maps baked from specular-glossiness maps: (sRGB Scene::images index, glossinessFactor) -> Scene::images index.
+    std::map<std::pair<int, float>, int> bakedRoughness_;
     std::uint64_t texelBudget_ = kMaxImageTexels;
     // Counts of what was skipped or approximated, each reported once as a warning.
     std::size_t texturesWithoutSource_ = 0;

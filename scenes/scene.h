@@ -17,6 +17,7 @@
 
 #include <glm/glm.hpp>
 
+#include "scenes/material_variants.h"
 #include "scenes/scene_animation.h"
 
 namespace ml {
@@ -191,6 +192,7 @@ struct Scene {
     Bounds bounds;                           // of the vertex positions the triangles use
     std::optional<CameraPose> suggestedView; // procedural scenes set one; a file's default view: renderer/camera/default_camera.h
     std::vector<std::string> extensionsUsed; // a glTF file's extensionsUsed, as it lists them (`manylights info`)
+    MaterialVariants materialVariants;       // KHR_materials_variants; empty for most scenes
     // A glTF file's clips, skins and morph targets, and the rest data of the vertices they move
     // (those vertices are held posed at rest above); null for a static scene.
     std::shared_ptr<const SceneAnimation> animation;

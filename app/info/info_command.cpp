@@ -3,10 +3,12 @@
 #include <cstdio>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "app/animation_choice.h"
 #include "app/frame_options.h"
+#include "app/material_variant_choice.h"
 #include "app/report.h"
 #include "glsl/include/bindings.h"
 #include "renderer/camera/default_camera.h"
@@ -64,6 +66,20 @@ void printMaterials(const Scene& scene) {
     }
 }
 
+// The file's KHR_materials_variants, and the one drawn (--material-variant).
+void printMaterialVariants(const Scene& scene, const std::string& chosen) {
+    const std::vector<std::string>& names = scene.materialVariants.names;
+    if (names.empty()) {
+        std::printf("material variants (KHR_materials_variants): none\n");
+        return;
+    }
+    std::printf("material variants (KHR_materials_variants): %zu\n", names.size());
+    for (std::size_t i = 0; i < names.size(); ++i) std::printf("  %zu '%s'\n", i, names[i].c_str());
+    const std::optional<std::size_t> drawn = parseMaterialVariant(chosen, scene);
+    if (drawn) std::printf("  draws '%s' (--material-variant)\n", names[*drawn].c_str());
+    else std::printf("  draws the default materials (--material-variant NAME for another)\n");
+}
+
 void printLightsAndCameras(const Scene& scene) {
     std::size_t counts[3] = {0, 0, 0};
     for (const SceneLight& l : scene.lights) ++counts[static_cast<int>(l.type)];
@@ -102,6 +118,7 @@ int runInfo(const FrameOptions& o) {
     std::printf("scene: %s (%s)\n", o.scene.c_str(), isBuiltinScene(o.scene) ? "built-in" : "glTF file");
     printGeometry(scene);
     printMaterials(scene);
+    printMaterialVariants(scene, o.materialVariant);
     printLightsAndCameras(scene);
     printAnimation(scene, frame.settings.sceneAnimation);
     if (frame.warnings.empty()) std::printf("warnings: none\n");

@@ -60,7 +60,8 @@ void addViewCommand(CLI::App& app, int& exitCode) {
                     "(the scene is replaced by it, with its own default camera, lights and exposure)");
     cmd->add_option("--panel", options->panel,
                     "scripted: set panel controls before frame 1, as if changed there: brdf=ggx|blinn-phong, "
-                    "cutoff=radius|hard|stochastic|none, light-cutoff=E, light-sum=float|fixed (comma-separated)");
+                    "cutoff=radius|hard|stochastic|none, light-cutoff=E, light-sum=float|fixed, material-variant=NAME "
+                    "(comma-separated)");
     cmd->add_option("--run-for", options->runFor,
                     "measure: run the live loop (vsync off, statistics as shown interactively) for this many seconds, "
                     "print the mean frame rate of the last 60 frames and exit")

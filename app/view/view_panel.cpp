@@ -435,6 +435,10 @@ PanelEdits drawViewPanel(ViewSettings& settings, const ViewStatistics& stats) {
         if (ImGui::CollapsingHeader("Cluster grid", ImGuiTreeNodeFlags_DefaultOpen)) gridSection(settings, edits);
         if (ImGui::CollapsingHeader("Shading")) shadingSection(settings, stats, edits);
         if (ImGui::CollapsingHeader("Camera and window", ImGuiTreeNodeFlags_DefaultOpen)) cameraSection(settings, stats, edits);
+        // Only a file with KHR_materials_variants has the section.
+        if (!stats.materialVariants.empty() && ImGui::CollapsingHeader("Material variants", ImGuiTreeNodeFlags_DefaultOpen) &&
+            comboOf("variant", settings.materialVariant, stats.materialVariants))
+            edits.materialVariant = true;
         if (ImGui::CollapsingHeader("Open a file, keys")) {
             openFileField(settings, edits);
             keysSection();

@@ -43,6 +43,7 @@ struct ViewSettings {
     float renderScale = 1.0f;  // the renderer's size over the window's (app/view/render_scale.h)
     CameraMode cameraMode = CameraMode::Fly;
     int sceneCamera = -1;  // the scene file's camera last chosen (Scene::cameras), -1: free camera
+    int materialVariant = 0;  // 0: the file's own materials, i + 1: its KHR_materials_variants variant i
     std::array<char, 1024> openPath{};  // the panel's path field: a .gltf/.glb to open
 };
 
@@ -71,6 +72,7 @@ struct ViewStatistics {
     float sceneSize = 1.0f;                  // bounds' diagonal: the radius slider's scale
     float flySpeed = 0.0f;
     std::vector<std::string> sceneCameras;   // the scene file's cameras as the panel lists them
+    std::vector<std::string> materialVariants;  // "default", then the file's variants; empty: it has none
     std::optional<float> autoExposureStops;  // the measured exposure in EV, while automatic
     int glErrors = 0;
     std::string error;                       // the last change that failed, and why
@@ -87,6 +89,7 @@ struct PanelEdits {
     bool frameScene = false;   // the whole scene in view, from its front (F)
     bool openFile = false;     // open ViewSettings::openPath
     bool sceneCamera = false;  // a camera of the scene file was chosen
+    bool materialVariant = false;  // another material variant was chosen
     bool screenshot = false;
 };
 

@@ -12,6 +12,7 @@
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
+#include "app/material_variant_choice.h"
 #include "app/view/render_scale.h"
 #include "app/report.h"
 #include "app/view/window_capture.h"
@@ -112,6 +113,14 @@ void ViewSession::adoptSceneSettings() {
     settings_.exposureStops = std::log2(frame_.settings.exposure);
     settings_.autoExposure = frame_.settings.autoExposure;
     settings_.sceneCamera = -1;
+    // prepareFrame has applied --material-variant, which it checked.
+    const std::optional<std::size_t> variant = parseMaterialVariant(o.materialVariant, frame_.scene);
+    settings_.materialVariant = variant ? static_cast<int>(*variant) + 1 : 0;
+    stats_.materialVariants.clear();
+    if (!frame_.scene.materialVariants.empty()) {
+        stats_.materialVariants.push_back("default");
+        for (const std::string& name : frame_.scene.materialVariants.names) stats_.materialVariants.push_back(name);
+    }
     stats_.sceneLights = frame_.scene.lights.size();
     stats_.transparentRanges = renderer_ ? renderer_->scene().transparentRangeCount() : 0;
     stats_.lightsFromFile = !o.lightsFile.empty();
@@ -132,6 +141,7 @@ void ViewSession::openScene(const std::string& path) {
     o.lightsFile.clear();
     o.lightPlacement.clear();
     o.exposure.clear();
+    o.materialVariant.clear();  // another file's variants are its own
     try {
         PreparedFrame next = prepareFrame(o);
         for (const std::string& w : next.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
@@ -318,6 +328,30 @@ void ViewSession::applyLights() {
     lastStatistics_ = -1.0;
 }
 
+void ViewSession::applyMaterialVariant() {
+    const int chosen = settings_.materialVariant;
+    const std::vector<std::string>& names = frame_.scene.materialVariants.names;
+    if (chosen < 0 || static_cast<std::size_t>(chosen) > names.size()) return;
+    const std::optional<std::size_t> variant = chosen == 0 ? std::nullopt : std::optional<std::size_t>(chosen - 1);
+    try {
+        Scene scene = frame_.scene;
+        ml::applyMaterialVariant(scene, variant);
+        // The materials drawn decide the shaders' features, the transparent ranges and the
+        // shadow casters: a new renderer on the same settings, built before the old one goes.
+        renderer_ = std::make_unique<FrameRenderer>(scene, frame_.lights, renderer_->settings());
+        frame_.scene = std::move(scene);
+        options_.frame.materialVariant = variant ? names[*variant] : "";
+        stats_.error.clear();
+    } catch (const std::exception& e) {
+        stats_.error = std::string("material variant: ") + e.what();
+        return;
+    }
+    std::printf("material variant: %s\n", variant ? names[*variant].c_str() : "default");
+    stats_.transparentRanges = renderer_->scene().transparentRangeCount();
+    stats_.clusters.reset();
+    lastStatistics_ = -1.0;
+}
+
 void ViewSession::applyBrdf() {
     LightModel model = renderer_->settings().lightModel;
     const Brdf previous = model.brdf;
@@ -363,9 +397,18 @@ void ViewSession::applyPanelScript(const std::string& script) {
                 throw std::invalid_argument("--panel '" + item + "': " + e.what());
             }
             edits.method = true;
+        } else if (key == "material-variant") {
+            try {
+                const std::optional<std::size_t> variant = parseMaterialVariant(value, frame_.scene);
+                settings_.materialVariant = variant ? static_cast<int>(*variant) + 1 : 0;
+            } catch (const std::invalid_argument& e) {
+                throw std::invalid_argument("--panel '" + item + "': " + e.what());
+            }
+            edits.materialVariant = true;
         } else {
             throw std::invalid_argument("--panel '" + item + "': expected brdf=ggx|blinn-phong, "
-                                        "cutoff=radius|hard|stochastic|none, light-cutoff=E or light-sum=float|fixed");
+                                        "cutoff=radius|hard|stochastic|none, light-cutoff=E, light-sum=float|fixed "
+                                        "or material-variant=NAME");
         }
     }
     applyEdits(edits);
@@ -376,6 +419,7 @@ void ViewSession::applyEdits(const PanelEdits& edits) {
     if (edits.method) setMethodOrExplain(settings_.method);
     if (edits.brdf) applyBrdf();
     if (edits.lights) applyLights();
+    if (edits.materialVariant) applyMaterialVariant();
     if (edits.vsync) window_.setVsync(settings_.vsync);
     if (edits.renderScale) stats_.renderScaleNote.clear();  // the user's choice now, not ours
     if (edits.cameraMode) controller_.setMode(settings_.cameraMode);

@@ -74,7 +74,11 @@ private:
     // The panel's BRDF; a fixed exposure and a built-in scene's ambient follow it (defaultLook),
     // so the picture keeps its brightness and only the BRDF's shape changes.
     void applyBrdf();
-    // --panel brdf=ggx|blinn-phong,cutoff=radius|hard|stochastic|none,light-cutoff=E: as if set in
+    // The panel's material variant (KHR_materials_variants): the draw ranges take its materials
+    // and the renderer is rebuilt on the scene, whose shaders follow the materials drawn.
+    void applyMaterialVariant();
+    // --panel brdf=ggx|blinn-phong,cutoff=radius|hard|stochastic|none,light-cutoff=E,
+    // material-variant=NAME: as if set in
     // the panel before frame 1 (scripted frames take no input). Throws std::invalid_argument.
     void applyPanelScript(const std::string& script);
     void setMethodOrExplain(const MethodSettings& method);
