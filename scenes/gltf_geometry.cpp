@@ -53,7 +53,8 @@ MeshPlan planMesh(const std::string& path, const tinygltf::Model& model, std::si
                            std::to_string(model.materials.size()) + " materials)");
 
         PrimitivePlan planned{static_cast<int>(p), 0, prim.indices, prim.material, prim.mode};
-        if (variantCount > 0) planned.variantMaterials = primitiveVariantMaterials(path, model, prim, variantCount, where());
+        if (prim.extensions.count("KHR_materials_variants") != 0)
+            planned.variantMaterials = primitiveVariantMaterials(path, model, prim, variantCount, where());
         const int texcoord1 = attribute("TEXCOORD_1");
         // The streams follow every material the primitive may be drawn with, its variants' too,
         // so that choosing a variant needs no reload. Tangents come from the first normal map's UV set.

@@ -1,5 +1,6 @@
 // The glTF loader's materials: what a file's material says reaches the scene model, once and in
 // the right colour space, and every bad value is refused in one line that names it.
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -151,6 +152,59 @@ TEST(GltfMaterials, ClearcoatIsRead) {
     warnings.clear();
     s = load(off.writeGltf(dir, "no_coat"), warnings);
     EXPECT_FALSE(s.materials.at(0).clearcoatModelled()) << "glTF's default clearcoatFactor is 0";
+// KHR_materials_pbrSpecularGlossiness: the diffuse is the base colour, metallic 0, the specular
+// colour the dielectric's F0 (ior 0, weight 1), and glossiness in the map's alpha becomes the
+// roughness of a metallic-roughness map baked at load: G = 1 - glossinessFactor x A, B = 0.
+TEST(GltfMaterials, SpecularGlossinessBecomesMetallicRoughnessAndSpecular) {
+    const fs::path dir = testDir();
+    Gltf g;
+    g.add("images", {{"uri", "data:image/png;base64," + base64(encodePng(2, 1, {200, 100, 50, 255, 10, 20, 30, 51}))}});
+    g.add("textures", {{"source", 0}});
+    g.add("materials", {{"pbrMetallicRoughness", {{"baseColorFactor", {0.1, 0.1, 0.1, 1.0}}, {"metallicFactor", 1.0}}},
+                        {"extensions",
+                         {{"KHR_materials_pbrSpecularGlossiness",
+                           {{"diffuseFactor", {0.5, 0.25, 1.0, 0.75}},
+                            {"specularFactor", {0.9, 0.6, 0.3}},
+                            {"glossinessFactor", 0.8},
+                            {"diffuseTexture", {{"index", 0}}},
+                            {"specularGlossinessTexture", {{"index", 0}}}}}}}});
+    g.add("materials", {{"extensions", {{"KHR_materials_pbrSpecularGlossiness", {{"glossinessFactor", 0.3}}}}}});
+    g.doc["extensionsUsed"] = {"KHR_materials_pbrSpecularGlossiness"};
+    json textured = trianglePrimitive(g, true, 0);
+    textured["attributes"]["TEXCOORD_0"] = g.vec2({{0, 0}, {1, 0}, {0, 1}});
+    json factors = primitive({{"POSITION", g.vec3({{5, 0, 0}, {6, 0, 0}, {5, 1, 0}})}}, g.indices({0, 1, 2}), 1);
+    g.scene({g.node({{"mesh", g.mesh({textured, factors})}})});
+    std::vector<std::string> warnings;
+    const Scene s = load(g.writeGltf(dir, "specgloss"), warnings);
+    EXPECT_TRUE(warnings.empty()) << warnings.at(0);
+    ASSERT_EQ(s.materials.size(), 2u);
+
+    const Material& m = s.materials[0];
+    EXPECT_EQ(m.baseColorFactor, glm::vec4(0.5f, 0.25f, 1.0f, 0.75f)) << "the diffuse, not the fallback block";
+    EXPECT_EQ(m.metallic, 0.0f);
+    EXPECT_EQ(m.roughness, 1.0f) << "the baked map holds the roughness";
+    EXPECT_EQ(m.ior, 0.0f);
+    EXPECT_EQ(m.specularFactor, 1.0f);
+    EXPECT_EQ(m.specularColorFactor, glm::vec3(0.9f, 0.6f, 0.3f));
+    EXPECT_TRUE(m.specularModelled());
+    ASSERT_TRUE(m.baseColorTexture.present() && m.specularColorTexture.present() && m.metallicRoughnessTexture.present());
+    EXPECT_EQ(m.baseColorTexture.image, m.specularColorTexture.image) << "one sRGB copy for diffuse and specular";
+    EXPECT_TRUE(s.images.at(static_cast<std::size_t>(m.specularColorTexture.image)).srgb);
+    const Image& baked = s.images.at(static_cast<std::size_t>(m.metallicRoughnessTexture.image));
+    EXPECT_FALSE(baked.srgb);
+    ASSERT_EQ(baked.rgba8.size(), 8u);
+    EXPECT_EQ(baked.rgba8[1], std::lround(255.0 * (1.0 - 0.8)));               // A 255: roughness 0.2
+    EXPECT_EQ(baked.rgba8[5], std::lround(255.0 * (1.0 - 0.8 * 51.0 / 255.0)));  // A 51: roughness 0.84
+    EXPECT_EQ(baked.rgba8[2], 0);
+    EXPECT_EQ(baked.rgba8[6], 0);
+    EXPECT_EQ(s.images.size(), 2u) << "the sRGB map and its baked roughness, nothing else";
+
+    const Material& plain = s.materials[1];
+    EXPECT_EQ(plain.baseColorFactor, glm::vec4(1.0f));
+    EXPECT_FLOAT_EQ(plain.roughness, 0.7f);
+    EXPECT_EQ(plain.specularColorFactor, glm::vec3(1.0f));
+    EXPECT_FALSE(plain.metallicRoughnessTexture.present());
+    EXPECT_EQ(plain.ior, 0.0f);
 }
 
 TEST(GltfMaterials, BadValuesAreNamedInOneLine) {
@@ -186,6 +240,13 @@ TEST(GltfMaterials, BadValuesAreNamedInOneLine) {
             {"materials[0]", "clearcoatNormalTexture", "index 9"});
     refused("clearcoat_texture_info", {{"extensions", {{"KHR_materials_clearcoat", {{"clearcoatFactor", 1.0}, {"clearcoatTexture", 3}}}}}},
             {"materials[0]", "clearcoatTexture", "not a textureInfo"});
+    const auto sg = [](const json& fields) { return json{{"extensions", {{"KHR_materials_pbrSpecularGlossiness", fields}}}}; };
+    refused("glossiness", sg({{"glossinessFactor", 1.5}}), {"materials[0]", "KHR_materials_pbrSpecularGlossiness glossinessFactor"});
+    refused("diffuse_count", sg({{"diffuseFactor", {1.0, 1.0, 1.0}}}), {"materials[0]", "diffuseFactor", "4 numbers"});
+    refused("specular_negative", sg({{"specularFactor", {1.0, -0.5, 1.0}}}), {"materials[0]", "specularFactor", "[0, 1]"});
+    refused("diffuse_texture", sg({{"diffuseTexture", {{"index", 4}}}}), {"materials[0]", "diffuseTexture", "index 4"});
+    refused("specgloss_texture", sg({{"specularGlossinessTexture", {{"texCoord", 0}}}}),
+            {"materials[0]", "specularGlossinessTexture", "not a textureInfo"});
     refused("min_filter", {{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}, {"samplers[0]", "minFilter 1234"},
             {{"minFilter", 1234}});
     refused("wrap", {{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}, {"samplers[0]", "wrapT 5"}, {{"wrapT", 5}});
