@@ -62,6 +62,7 @@ std::string frameKeyOf(const FrameOptions& o, double radius) {
     k["exposure"] = o.exposure;
     k["specular"] = o.specular;  // the naive reference must shade with the same model
     k["brdf"] = o.brdf;
+    k["material_variant"] = o.materialVariant;  // the materials drawn
     k["shadows"] = o.shadows;  // naive traces the same rays
     // The renderer builds its occluders and programs for these (naive's frame is the same for all).
     k["shadow_bvh_width"] = o.shadowBvhWidth;
@@ -97,6 +98,7 @@ BenchRow configColumns(const BenchPoint& p, int index, std::uint32_t frame, cons
     row["experiment"] = p.experiment;
     row["point"] = index;
     row["scene"] = o.scene;
+    row["material_variant"] = o.materialVariant;
     row["method"] = o.method;
     row["lights"] = o.lights ? nlohmann::json(*o.lights) : nlohmann::json();
     row["spot_share"] = o.spotShare;

@@ -103,6 +103,8 @@ const std::vector<AxisDef>& axisDefs() {
                  throw std::invalid_argument("neither a built-in scene (atrium, plane, boxes) nor a file");
              p.frame.scene = s;
          }},
+        {{"material_variant", "--material-variant", "a glTF file's KHR_materials_variants variant, by name (default: the file's own materials)"},
+         ValueKind::Text, Applies::Always, [](BenchPoint& p, const json& v) { p.frame.materialVariant = asText(v); }},
         {{"detail", "--detail", "tessellation scale of procedural scenes"}, ValueKind::Number, Applies::Always,
          [](BenchPoint& p, const json& v) {
              const double d = asNumber(v);

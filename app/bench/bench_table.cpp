@@ -11,7 +11,7 @@ namespace {
 
 // Before the pass columns: what the point is and how long a frame took.
 const std::vector<std::string> kLeadingColumns = {
-    "experiment", "point", "scene", "method", "lights", "spot_share", "radius", "radius_rule", "seed", "intensity", "drift_speed", "specular", "brdf", "shadows", "shadow_bvh_width", "shadow_rays_per_pixel", "shadow_reuse", "shadow_denoise", "light_sum", "light_cutoff", "cutoff", "accumulate", "bloom",
+    "experiment", "point", "scene", "material_variant", "method", "lights", "spot_share", "radius", "radius_rule", "seed", "intensity", "drift_speed", "specular", "brdf", "shadows", "shadow_bvh_width", "shadow_rays_per_pixel", "shadow_reuse", "shadow_denoise", "light_sum", "light_cutoff", "cutoff", "accumulate", "bloom",
     "width", "height", "camera", "near", "far", "tiles_x", "tiles_y", "slices", "slicing", "assign",
     "max_per_cluster", "active_only", "cull", "normal_cones", "gbuffer", "resolve", "vis_raster", "prepass", "msaa", "draw", "draw_calls", "backface_culling", "transparency", "triangle_order", "workgroup", "frame_index", "warmup_frames",
     "timed_frames", "clock", "sm_clock_mhz", "sm_clock_mhz_min", "frame_ms", "frame_ms_p10", "frame_ms_p90", "wall_ms",
