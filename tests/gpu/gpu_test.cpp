@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include "renderer/clustering/clustered_lighting.h"
 #include "renderer/gl/debug_output.h"
@@ -205,6 +206,13 @@ int runManylights(const std::string& args, std::string& output, const std::strin
     while (std::fgets(buffer.data(), buffer.size(), pipe)) output += buffer.data();
     const int status = pclose(pipe);
     return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+bool haveXvfb() { return std::system("command -v xvfb-run >/dev/null 2>&1") == 0; }
+
+int runViewUnderXvfb(const std::string& args, std::string& output) {
+    const std::string server = std::to_string(100 + getpid() % 800);
+    return runManylights("view " + args, output, "", "xvfb-run -a -n " + server + " -s '-screen 0 1024x768x24'");
 }
 
 }  // namespace ml::test

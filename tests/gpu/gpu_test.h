@@ -128,4 +128,15 @@ std::string testNameOf(const std::string& text);
 int runManylights(const std::string& args, std::string& output, const std::string& workingDir = "",
                   const std::string& wrapper = "");
 
+// Whether xvfb-run is installed: the window tests (`manylights view`) need an X server.
+bool haveXvfb();
+
+// Runs `manylights view <args>` on a private X server. -a takes the first free display from
+// -n on; starting the search from this process's id keeps tests that CTest runs side by side
+// from racing for the same number.
+int runViewUnderXvfb(const std::string& args, std::string& output);
+
+#define REQUIRE_XVFB() \
+    if (!::ml::test::haveXvfb()) GTEST_SKIP() << "xvfb-run not found (apt install xvfb): the window tests need an X server"
+
 }  // namespace ml::test

@@ -3,10 +3,8 @@
 // write, each command draws the variant asked for, and a variant the file lacks, or a file without
 // variants, is one line naming the value and what there is.
 #include <algorithm>
-#include <cstdlib>
 #include <string>
 #include <tuple>
-#include <unistd.h>
 #include <utility>
 #include <vector>
 
@@ -83,18 +81,10 @@ TEST(MaterialVariantCommand, InfoListsTheVariants) {
     EXPECT_NE(output.find("material variants (KHR_materials_variants): none"), std::string::npos) << output;
 }
 
-bool haveXvfb() { return std::system("command -v xvfb-run >/dev/null 2>&1") == 0; }
-
-// As view_command_test.cpp runs it: a private X server, its number from this process's id.
-int runViewUnderXvfb(const std::string& args, std::string& output) {
-    const std::string server = std::to_string(100 + (getpid() + 400) % 800);
-    return runManylights("view " + args, output, "", "xvfb-run -a -n " + server + " -s '-screen 0 1024x768x24'");
-}
-
 // The view starts on --material-variant's variant, and the panel's choice (rebuilding the
 // renderer on the remapped scene) gives the frame `render --material-variant` gives.
 TEST(MaterialVariantCommand, ViewDrawsTheFlagsAndThePanelsVariant) {
-    if (!haveXvfb()) GTEST_SKIP() << "xvfb-run not found (apt install xvfb): the window tests need an X server";
+    REQUIRE_XVFB();
     const fs::path dir = testDir();
     const std::string file = writeVariantsFile(dir);
     const std::string common = "--scene " + file + kFrame + " --frames 3";

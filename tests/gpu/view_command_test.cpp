@@ -18,19 +18,6 @@ namespace {
 // driver that rounds a blit differently, none for a different frame.
 constexpr double kMaxAbs = 1.0 / 255.0 + 1e-9;
 
-bool haveXvfb() { return std::system("command -v xvfb-run >/dev/null 2>&1") == 0; }
-
-// Runs `manylights view <args>` on a private X server. -a takes the first free display from
-// -n on; starting the search from this process's id keeps tests that CTest runs side by side
-// from racing for the same number.
-int runViewUnderXvfb(const std::string& args, std::string& output) {
-    const std::string server = std::to_string(100 + getpid() % 800);
-    return runManylights("view " + args, output, "", "xvfb-run -a -n " + server + " -s '-screen 0 1024x768x24'");
-}
-
-#define REQUIRE_XVFB() \
-    if (!haveXvfb()) GTEST_SKIP() << "xvfb-run not found (apt install xvfb): the window tests need an X server"
-
 TEST(ViewCommand, ScreenshotMatchesRenderForEveryMethod) {
     REQUIRE_XVFB();
     const std::string dir = testOutputDir().string();
