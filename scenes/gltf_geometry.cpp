@@ -52,7 +52,7 @@ MeshPlan planMesh(const std::string& path, const tinygltf::Model& model, std::si
             fail(path, where() + ": material index " + std::to_string(prim.material) + " out of range (" +
                            std::to_string(model.materials.size()) + " materials)");
 
-        PrimitivePlan planned{static_cast<int>(p), 0, prim.indices, prim.material, prim.mode};
+        PrimitivePlan planned{static_cast<int>(p), 0, prim.indices, prim.material, prim.mode, false, false, 0, {}};
         if (prim.extensions.count("KHR_materials_variants") != 0)
             planned.variantMaterials = primitiveVariantMaterials(path, model, prim, variantCount, where());
         const int texcoord1 = attribute("TEXCOORD_1");

@@ -152,6 +152,8 @@ TEST(GltfMaterials, ClearcoatIsRead) {
     warnings.clear();
     s = load(off.writeGltf(dir, "no_coat"), warnings);
     EXPECT_FALSE(s.materials.at(0).clearcoatModelled()) << "glTF's default clearcoatFactor is 0";
+}
+
 // KHR_materials_pbrSpecularGlossiness: the diffuse is the base colour, metallic 0, the specular
 // colour the dielectric's F0 (ior 0, weight 1), and glossiness in the map's alpha becomes the
 // roughness of a metallic-roughness map baked at load: G = 1 - glossinessFactor x A, B = 0.
