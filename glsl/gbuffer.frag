@@ -19,8 +19,11 @@ layout(location = 2) out vec4 o_target2;
 #if ML_GBUFFER_FLOAT_TARGETS >= 4
 layout(location = 3) out vec4 o_target3;
 #endif
-#if ML_GBUFFER_FLOAT_TARGETS == 5
+#if ML_GBUFFER_FLOAT_TARGETS >= 5
 layout(location = 4) out vec4 o_target4;
+#endif
+#if ML_GBUFFER_FLOAT_TARGETS == 6
+layout(location = 5) out vec4 o_target5;
 #endif
 #endif
 
@@ -37,8 +40,11 @@ void main() {
 #if ML_GBUFFER_FLOAT_TARGETS >= 4
     o_target3 = t.target[3];
 #endif
-#if ML_GBUFFER_FLOAT_TARGETS == 5
+#if ML_GBUFFER_FLOAT_TARGETS >= 5
     o_target4 = t.target[4];
+#endif
+#if ML_GBUFFER_FLOAT_TARGETS == 6
+    o_target5 = t.target[5];
 #endif
 #endif
 }

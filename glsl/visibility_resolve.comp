@@ -28,8 +28,11 @@ layout(binding = ML_IMG_GBUFFER2, ML_GBUFFER_FLOAT_IMAGE) uniform writeonly imag
 #if ML_GBUFFER_FLOAT_TARGETS >= 4
 layout(binding = ML_IMG_GBUFFER3, ML_GBUFFER_FLOAT_IMAGE) uniform writeonly image2D u_gTarget3Out;
 #endif
-#if ML_GBUFFER_FLOAT_TARGETS == 5
+#if ML_GBUFFER_FLOAT_TARGETS >= 5
 layout(binding = ML_IMG_GBUFFER4, ML_GBUFFER_FLOAT_IMAGE) uniform writeonly image2D u_gTarget4Out;
+#endif
+#if ML_GBUFFER_FLOAT_TARGETS == 6
+layout(binding = ML_IMG_GBUFFER5, ML_GBUFFER_FLOAT_IMAGE) uniform writeonly image2D u_gTarget5Out;
 #endif
 #endif
 uniform int u_textureSet;
@@ -56,8 +59,11 @@ void storeGBuffer(ivec2 p, GBufferTexel t) {
 #if ML_GBUFFER_FLOAT_TARGETS >= 4
     if (gbufferUsesTarget3(t)) imageStore(u_gTarget3Out, p, t.target[3]);
 #endif
-#if ML_GBUFFER_FLOAT_TARGETS == 5
+#if ML_GBUFFER_FLOAT_TARGETS >= 5
     if (gbufferUsesTarget4(t)) imageStore(u_gTarget4Out, p, t.target[4]);
+#endif
+#if ML_GBUFFER_FLOAT_TARGETS == 6
+    if (gbufferUsesTarget5(t)) imageStore(u_gTarget5Out, p, t.target[5]);
 #endif
 #endif
 }

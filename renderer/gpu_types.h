@@ -50,6 +50,8 @@ struct alignas(16) GpuMaterial {
     // KHR_materials_clearcoat: clearcoatFactor, clearcoatRoughnessFactor, the clearcoat normal
     // texture's scale, 0.
     glm::vec4 clearcoat;
+    // KHR_materials_sheen: rgb sheenColorFactor, a sheenRoughnessFactor.
+    glm::vec4 sheen;
 };
 static_assert(sizeof(GpuMaterial) == 16 * ML_GPU_MATERIAL_VEC4S(true));
 static_assert(offsetof(GpuMaterial, uvTransforms) + 32 * ML_CORE_TEXTURE_SLOTS == 16 * ML_GPU_MATERIAL_VEC4S(false));

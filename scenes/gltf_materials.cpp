@@ -272,6 +272,24 @@ void MaterialConverter::convertMaterialExtensions(const tinygltf::Material& sour
             m.clearcoatNormalScale = static_cast<float>(
                 extensionNumber(path_, what, coat->Get("clearcoatNormalTexture"), "KHR_materials_clearcoat clearcoatNormalTexture", "scale", 1.0));
     }
+    if (const tinygltf::Value* sheen = extension("KHR_materials_sheen")) {
+        if (sheen->Has("sheenColorFactor")) {
+            double c[3];
+            if (!readNumbers(sheen->Get("sheenColorFactor"), 3, c) || c[0] < 0.0 || c[1] < 0.0 || c[2] < 0.0 || c[0] > 1.0 ||
+                c[1] > 1.0 || c[2] > 1.0)
+                fail(path_, what + ": KHR_materials_sheen sheenColorFactor is not 3 numbers in [0, 1]");
+            m.sheenColorFactor = glm::vec3(static_cast<float>(c[0]), static_cast<float>(c[1]), static_cast<float>(c[2]));
+        }
+        const double roughness = extensionNumber(path_, what, *sheen, "KHR_materials_sheen", "sheenRoughnessFactor", 0.0);
+        if (roughness < 0.0 || roughness > 1.0)
+            fail(path_, what + ": KHR_materials_sheen sheenRoughnessFactor " + number(roughness) + " is outside [0, 1]");
+        m.sheenRoughnessFactor = static_cast<float>(roughness);
+        if (sheen->Has("sheenColorTexture"))
+            m.sheenColorTexture = extensionTextureRef(what + " KHR_materials_sheen sheenColorTexture", sheen->Get("sheenColorTexture"), true);
+        if (sheen->Has("sheenRoughnessTexture"))
+            m.sheenRoughnessTexture =
+                extensionTextureRef(what + " KHR_materials_sheen sheenRoughnessTexture", sheen->Get("sheenRoughnessTexture"), false);
+    }
 }
 
 namespace {
@@ -548,6 +566,8 @@ std::vector<MaterialTexture> texturesOf(const tinygltf::Material& material) {
         addExtensionTexture(out, material, "KHR_materials_clearcoat", "clearcoatRoughnessTexture");
         addExtensionTexture(out, material, "KHR_materials_clearcoat", "clearcoatNormalTexture");
         addExtensionTexture(out, material, kSpecularGlossiness, "specularGlossinessTexture");
+        addExtensionTexture(out, material, "KHR_materials_sheen", "sheenColorTexture");
+        addExtensionTexture(out, material, "KHR_materials_sheen", "sheenRoughnessTexture");
     }
     return out;
 }

@@ -112,6 +112,12 @@ struct Material {
     TextureRef clearcoatRoughnessTexture;      // linear; G multiplies the roughness
     TextureRef clearcoatNormalTexture;         // linear, tangent space; none: the surface's own normal
     float clearcoatNormalScale = 1.0f;
+    // KHR_materials_sheen: a Charlie micro-fibre lobe under any coat, over the material, which it
+    // dims by its albedo (docs/lights-and-shading.md). A colour of 0 (glTF's default) is no sheen.
+    glm::vec3 sheenColorFactor{0.0f};          // linear, [0, 1]
+    TextureRef sheenColorTexture;              // sRGB; RGB multiplies the colour
+    float sheenRoughnessFactor = 0.0f;         // [0, 1]
+    TextureRef sheenRoughnessTexture;          // linear; A multiplies the roughness
 
     bool alphaTested() const { return alphaMode == AlphaMode::Mask; }
     // Does the material ask for anything but glTF's default dielectric Fresnel?
@@ -121,6 +127,8 @@ struct Material {
     }
     // Is there a coat? (glTF: a clearcoatFactor of 0 disables the layer, whatever its textures.)
     bool clearcoatModelled() const { return !unlit && clearcoatFactor > 0.0f; }
+    // Is there a sheen? (glTF: a sheenColorFactor of 0 disables the layer, whatever its textures.)
+    bool sheenModelled() const { return !unlit && sheenColorFactor != glm::vec3(0.0f); }
     bool blended() const { return alphaMode == AlphaMode::Blend; }
 };
 

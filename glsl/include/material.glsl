@@ -26,6 +26,8 @@ struct Material {
     vec4 specular;
     // KHR_materials_clearcoat: factor, roughness, normal scale.
     vec4 clearcoat;
+    // KHR_materials_sheen: rgb colour factor, a roughness factor.
+    vec4 sheen;
 #endif
 };
 layout(std430, binding = ML_SSBO_MATERIALS) readonly buffer MaterialBuffer { Material materials[]; };
@@ -43,6 +45,10 @@ layout(binding = ML_TEX_SPECULAR_COLOR) uniform sampler2D u_specularColorTexture
 layout(binding = ML_TEX_CLEARCOAT) uniform sampler2D u_clearcoatTexture;                    // linear; R
 layout(binding = ML_TEX_CLEARCOAT_ROUGHNESS) uniform sampler2D u_clearcoatRoughnessTexture;  // linear; G
 layout(binding = ML_TEX_CLEARCOAT_NORMAL) uniform sampler2D u_clearcoatNormalTexture;        // linear, tangent space
+#endif
+#if ML_HAS(ML_FEATURE_SHEEN_MAP)
+layout(binding = ML_TEX_SHEEN_COLOR) uniform sampler2D u_sheenColorTexture;          // sRGB; RGB
+layout(binding = ML_TEX_SHEEN_ROUGHNESS) uniform sampler2D u_sheenRoughnessTexture;  // linear; A
 #endif
 
 // Where a point samples its material: its UV sets and their screen-space gradients, which every
@@ -165,6 +171,15 @@ SurfacePoint surfaceFromMaterial(Material m, vec3 worldPos, vec3 worldNormal, ve
 #endif
 #if ML_HAS(ML_FEATURE_UNLIT)
     s.unlitMaterial = (m.info.w & ML_MATERIAL_UNLIT) != 0u;
+#endif
+#if ML_HAS(ML_FEATURE_SHEEN)
+    s.sheenColor = m.sheen.rgb;
+    s.sheenRoughness = m.sheen.a;
+#if ML_HAS(ML_FEATURE_SHEEN_MAP)
+    if (hasTexture(m, ML_SLOT_SHEEN_COLOR)) s.sheenColor *= sampleMaterialTexture(u_sheenColorTexture, m, ML_SLOT_SHEEN_COLOR, c).rgb;
+    if (hasTexture(m, ML_SLOT_SHEEN_ROUGHNESS))
+        s.sheenRoughness *= sampleMaterialTexture(u_sheenRoughnessTexture, m, ML_SLOT_SHEEN_ROUGHNESS, c).a;
+#endif
 #endif
     deriveShadingTerms(s);
     return s;

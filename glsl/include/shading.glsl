@@ -38,6 +38,20 @@
 //     at the coat's shininess), and the unlit terms become (1 - k) unlit + k ambient occlusion:
 //     the emissive under the coat is dimmed by it, and the ambient reflects off it. --specular off
 //     leaves the coat out, lobe and layering both (k = 0).
+//   KHR_materials_sheen: a micro-fibre lobe of colour c_s and roughness r_s over the material (under
+//     any coat: the coat layers over sheen and material together), which it dims by its albedo
+//     (the extension's albedo scaling, Conty Estevez and Kulla 2017):
+//       each light adds  max(N.L, 0) (c_s D_s V_s + f s),   s = min(1 - max(c_s) E(N.V), 1 - max(c_s) E(N.L))
+//     with alpha_s = max(r_s, 0.07)^2 (the Sample Viewer's floor, which keeps D's exponent at or under
+//     102), D_s = (2 + 1 / alpha_s) sin(N,H)^(1 / alpha_s) / (2 pi) (Charlie),
+//     V_s = 1 / ((1 + Lambda(N.V) + Lambda(N.L)) 4 N.V N.L) (Charlie, the extension's fit of Lambda),
+//     N.V floored at 1e-4, and E the lobe's directional albedo by Conty Estevez and Kulla's fit
+//       E(mu) = 0.65584461 (1 - mu)^3 + 1 / (4.16526551 + exp(6.33516894 - 7.97291361 sqrt(alpha_s)))
+//     (within 0.05 of the integral; tests/reference/check_material_extensions.py measures it). The
+//     unlit terms take the albedo scaling from N.V alone, and the ambient reflects off the sheen:
+//       ambient occlusion ((diffuse + f0) (1 - max(c_s) E(N.V)) + c_s E(N.V)) + emissive.
+//     Under Blinn-Phong the lobe is scaled by pi (that model's f is pi times a physical BRDF).
+//     --specular off leaves the sheen out, lobe and scaling both.
 
 #include "include/material_features.glsl"
 
@@ -122,6 +136,10 @@ struct SurfacePoint {
     float clearcoatRoughness;  // c_r
     vec3 clearcoatNormal;      // Nc: world space, unit length, after the coat's own normal map
 #endif
+#if ML_HAS(ML_FEATURE_SHEEN)
+    vec3 sheenColor;       // KHR_materials_sheen: c_s, linear (0: no sheen)
+    float sheenRoughness;  // r_s
+#endif
     // Derived by deriveShadingTerms: what the light loop reads, and the unlit term, worked out
     // before the loop so that the material's inputs need not stay in registers through it.
     vec3 diffuse;
@@ -139,7 +157,17 @@ struct SurfacePoint {
     float clearcoatAlpha;      // GGX: c_r^2, floored at ML_GGX_MIN_ALPHA
     float clearcoatShininess;  // Blinn-Phong
 #endif
+#if ML_HAS(ML_FEATURE_SHEEN)
+    float sheenAlpha;          // alpha_s
+    float sheenAlbedoOffset;   // E's term in alpha_s alone: 1 / (4.16526551 + exp(...))
+    float sheenMax;            // max(c_s)
+#endif
 };
+
+#if ML_HAS(ML_FEATURE_SHEEN)
+// KHR_materials_sheen's roughness floor (the Sample Viewer's): alpha_s >= 0.0049.
+const float kSheenMinRoughness = 0.07;
+#endif
 
 // Blinn-Phong's exponent for GGX's alpha = roughness^2 (unfloored).
 float blinnPhongShininess(float alpha) { return clamp(2.0 / max(alpha * alpha, 1e-6) - 2.0, 1.0, 8192.0); }
@@ -169,6 +197,12 @@ void deriveShadingTerms(inout SurfacePoint s) {
     float coatRoughness = clamp(s.clearcoatRoughness, 0.0, 1.0);
     s.clearcoatAlpha = max(coatRoughness * coatRoughness, ML_GGX_MIN_ALPHA);
     s.clearcoatShininess = blinnPhongShininess(coatRoughness * coatRoughness);
+#endif
+#if ML_HAS(ML_FEATURE_SHEEN)
+    float sheenRoughness = max(clamp(s.sheenRoughness, 0.0, 1.0), kSheenMinRoughness);
+    s.sheenAlpha = sheenRoughness * sheenRoughness;
+    s.sheenAlbedoOffset = 1.0 / (4.16526551 + exp(6.33516894 - 7.97291361 * sheenRoughness));
+    s.sheenMax = max(s.sheenColor.r, max(s.sheenColor.g, s.sheenColor.b));
 #endif
 }
 
@@ -229,6 +263,65 @@ vec3 surfaceBrdf(SurfacePoint s, vec3 viewDir, vec3 l, float nDotL) {
     return s.diffuse + s.specular * spec;
 }
 
+#if ML_HAS(ML_FEATURE_SHEEN)
+// Does the sheen take part? Not where there is none, nor under --specular off (a specular layer).
+bool sheened(SurfacePoint s) { return s.sheenMax > 0.0 && specularEnabled(); }
+
+// E: the sheen lobe's directional albedo at cosine mu (Conty Estevez and Kulla's fit).
+float sheenAlbedo(SurfacePoint s, float mu) {
+    float q = 1.0 - clamp(mu, 0.0, 1.0);
+    return 0.65584461 * (q * q * q) + s.sheenAlbedoOffset;
+}
+
+// The Charlie visibility's Lambda, by the extension's fit, interpolated in (1 - alpha_s)^2.
+float sheenLambdaFit(float x, float alpha) {
+    float t = (1.0 - alpha) * (1.0 - alpha);
+    float a = mix(21.5473, 25.3245, t);
+    float b = mix(3.82987, 3.32435, t);
+    float c = mix(0.19823, 0.16801, t);
+    float d = mix(-1.97760, -1.27393, t);
+    float e = mix(-4.32054, -4.85967, t);
+    return a / (1.0 + b * pow(x, c)) + d * x + e;
+}
+float sheenLambda(float cosTheta, float alpha) {
+    return cosTheta < 0.5 ? exp(sheenLambdaFit(cosTheta, alpha))
+                          : exp(2.0 * sheenLambdaFit(0.5, alpha) - sheenLambdaFit(1.0 - cosTheta, alpha));
+}
+
+// The sheen lobe D_s V_s times N.L (the N.L of V_s cancelled, so that a grazing light stays finite).
+float sheenLobeTimesNDotL(SurfacePoint s, vec3 viewDir, vec3 l, float nDotL, float nDotV) {
+    vec3 nCrossH = cross(s.normal, normalize(l + viewDir));
+    float sin2h = dot(nCrossH, nCrossH);  // 1 - (N.H)^2, as GGX takes it
+    float inverseAlpha = 1.0 / s.sheenAlpha;
+    float distribution = (2.0 + inverseAlpha) * pow(sin2h, 0.5 * inverseAlpha) * (0.5 / kPi);
+    return distribution / ((1.0 + sheenLambda(nDotV, s.sheenAlpha) + sheenLambda(nDotL, s.sheenAlpha)) * (4.0 * nDotV));
+}
+
+// The sheen over the material for a light with N.L = nDotL > 0, times N.L.
+vec3 sheenReflected(SurfacePoint s, vec3 viewDir, vec3 l, float nDotL) {
+    float nDotV = max(abs(dot(s.normal, viewDir)), 1e-4);
+    float scaling = min(1.0 - s.sheenMax * sheenAlbedo(s, nDotV), 1.0 - s.sheenMax * sheenAlbedo(s, nDotL));
+    vec3 sheen = s.sheenColor * sheenLobeTimesNDotL(s, viewDir, l, nDotL, nDotV);
+    if (!ggxEnabled()) sheen *= kPi;
+    return sheen + nDotL * surfaceBrdf(s, viewDir, l, nDotL) * scaling;
+}
+
+// The unlit terms under the sheen: the ambient dimmed by E(N.V), and reflected off the sheen.
+vec3 sheenUnlit(SurfacePoint s, vec3 viewDir) {
+    float albedo = sheenAlbedo(s, max(abs(dot(s.normal, viewDir)), 1e-4));
+    return ambientStrength() * s.occlusion * ((s.diffuse + s.f0) * (1.0 - s.sheenMax * albedo) + s.sheenColor * albedo) + s.emissive;
+}
+#endif
+
+// The material under any coat for a light with N.L = nDotL > 0, times N.L: under a sheen where
+// there is one.
+vec3 underCoatReflected(SurfacePoint s, vec3 viewDir, vec3 l, float nDotL) {
+#if ML_HAS(ML_FEATURE_SHEEN)
+    if (sheened(s)) return sheenReflected(s, viewDir, l, nDotL);
+#endif
+    return nDotL * surfaceBrdf(s, viewDir, l, nDotL);
+}
+
 #if ML_HAS(ML_FEATURE_CLEARCOAT)
 // Does the coat take part? Not where there is none, nor under --specular off (a specular layer).
 bool coated(SurfacePoint s) { return s.clearcoat > 0.0 && specularEnabled(); }
@@ -254,7 +347,7 @@ vec3 shadeCoated(SurfacePoint s, vec3 viewDir, vec3 l, vec3 color, float weight,
     float coatNDotL = dot(s.clearcoatNormal, l);
     if (nDotL <= 0.0 && coatNDotL <= 0.0) return vec3(0.0);
     float k = clearcoatLayerWeight(s, viewDir);
-    vec3 base = nDotL > 0.0 ? nDotL * surfaceBrdf(s, viewDir, l, nDotL) : vec3(0.0);
+    vec3 base = nDotL > 0.0 ? underCoatReflected(s, viewDir, l, nDotL) : vec3(0.0);
     float coat = coatNDotL > 0.0 ? coatNDotL * clearcoatBrdf(s, viewDir, l, coatNDotL) : 0.0;
     return color * weight * (base * (1.0 - k) + coat * k);
 }
@@ -270,6 +363,9 @@ vec3 shadeIncoming(SurfacePoint s, vec3 viewDir, vec3 l, vec3 color, float weigh
     if (nDotL <= 0.0) return vec3(0.0);
 #if ML_HAS(ML_FEATURE_UNLIT)
     if (s.unlitMaterial) return vec3(0.0);  // lit by nothing (and so no shadow ray either)
+#endif
+#if ML_HAS(ML_FEATURE_SHEEN)
+    if (sheened(s)) return color * weight * sheenReflected(s, viewDir, l, nDotL);  // never unlit either
 #endif
     return color * (weight * nDotL) * surfaceBrdf(s, viewDir, l, nDotL);
 }
@@ -304,14 +400,19 @@ vec3 shadeDirectionalLight(SurfacePoint s, vec3 viewDir, vec3 direction, vec3 co
     return lit;
 }
 
-// What a surface shows with no light on it: the ambient term and its own glow (under a coat,
-// dimmed by it, and the ambient's reflection off the coat).
+// What a surface shows with no light on it: the ambient term and its own glow (under a sheen,
+// the ambient dimmed by it and reflected off it; under a coat, all of it dimmed by the coat, and
+// the ambient's reflection off the coat).
 vec3 shadeUnlit(SurfacePoint s, vec3 viewDir) {
+    vec3 unlit = s.unlit;
+#if ML_HAS(ML_FEATURE_SHEEN)
+    if (sheened(s)) unlit = sheenUnlit(s, viewDir);
+#endif
 #if ML_HAS(ML_FEATURE_CLEARCOAT)
     if (coated(s)) {
         float k = clearcoatLayerWeight(s, viewDir);
-        return s.unlit * (1.0 - k) + ambientStrength() * s.occlusion * k;
+        return unlit * (1.0 - k) + ambientStrength() * s.occlusion * k;
     }
 #endif
-    return s.unlit;
+    return unlit;
 }

@@ -100,6 +100,42 @@ float clearcoatGgx(const SurfaceSample& s, const glm::vec3& v, const glm::vec3& 
     return ggxDistributionVisibility(s.clearcoatNormal, v, l, alpha * alpha);
 }
 
+namespace {
+// alpha_s's floor, as the shader's kSheenMinRoughness, and N.V's.
+constexpr float kSheenMinRoughness = 0.07f;
+constexpr float kSheenMinCos = 1e-4f;
+
+float sheenRoughnessFloored(float r) { return std::max(std::clamp(r, 0.0f, 1.0f), kSheenMinRoughness); }
+
+// The Charlie visibility's Lambda by the extension's fit, interpolated in (1 - alpha)^2.
+float sheenLambdaFit(float x, float alpha) {
+    const float t = (1.0f - alpha) * (1.0f - alpha);
+    const auto mix = [t](float a, float b) { return a + (b - a) * t; };
+    const float a = mix(21.5473f, 25.3245f), b = mix(3.82987f, 3.32435f), c = mix(0.19823f, 0.16801f);
+    const float d = mix(-1.97760f, -1.27393f), e = mix(-4.32054f, -4.85967f);
+    return a / (1.0f + b * std::pow(x, c)) + d * x + e;
+}
+float sheenLambda(float cosTheta, float alpha) {
+    return cosTheta < 0.5f ? std::exp(sheenLambdaFit(cosTheta, alpha))
+                           : std::exp(2.0f * sheenLambdaFit(0.5f, alpha) - sheenLambdaFit(1.0f - cosTheta, alpha));
+}
+}  // namespace
+
+float sheenAlbedo(float mu, float sheenRoughness) {
+    const float q = 1.0f - std::clamp(mu, 0.0f, 1.0f);
+    return 0.65584461f * (q * q * q) + 1.0f / (4.16526551f + std::exp(6.33516894f - 7.97291361f * sheenRoughnessFloored(sheenRoughness)));
+}
+
+float sheenCharlieTimesNDotL(const glm::vec3& n, const glm::vec3& v, const glm::vec3& l, float nDotL, float nDotV,
+                             float sheenRoughness) {
+    const float r = sheenRoughnessFloored(sheenRoughness);
+    const float alpha = r * r;
+    const glm::vec3 nCrossH = glm::cross(n, glm::normalize(l + v));
+    const float sin2h = glm::dot(nCrossH, nCrossH);
+    const float distribution = (2.0f + 1.0f / alpha) * std::pow(sin2h, 0.5f / alpha) * (0.5f / kPi);
+    return distribution / ((1.0f + sheenLambda(nDotV, alpha) + sheenLambda(nDotL, alpha)) * (4.0f * nDotV));
+}
+
 glm::vec3 shadeReference(const SurfaceSample& s, const glm::vec3& eye, const std::vector<Light>& lights, float ambient,
                          bool specular, const LightModel& model) {
     if (s.unlit) return s.baseColor;
@@ -107,9 +143,17 @@ glm::vec3 shadeReference(const SurfaceSample& s, const glm::vec3& eye, const std
     const glm::vec3 v = glm::normalize(eye - s.position);
     // KHR_materials_clearcoat's share k (none under --specular off: the coat is a specular layer).
     const float k = specular && s.clearcoat > 0.0f ? clearcoatLayerWeight(s, v) : 0.0f;
-    glm::vec3 color = (ambient * s.occlusion * (t.diffuse + t.f0) + s.emissive) * (1.0f - k) + ambient * s.occlusion * k;
+    // KHR_materials_sheen (none under --specular off either): its largest channel and E(N.V).
+    const float sheenMax = std::max({s.sheenColor.r, s.sheenColor.g, s.sheenColor.b});
+    const bool sheen = specular && sheenMax > 0.0f;
+    const float nDotV = std::max(std::abs(glm::dot(s.normal, v)), kSheenMinCos);
+    const float viewAlbedo = sheen ? sheenAlbedo(nDotV, s.sheenRoughness) : 0.0f;
+    const glm::vec3 unlit =
+        sheen ? ambient * s.occlusion * ((t.diffuse + t.f0) * (1.0f - sheenMax * viewAlbedo) + s.sheenColor * viewAlbedo) + s.emissive
+              : ambient * s.occlusion * (t.diffuse + t.f0) + s.emissive;
+    glm::vec3 color = unlit * (1.0f - k) + ambient * s.occlusion * k;
     // The material's BRDF times N.L for a light from unit direction `dir`.
-    const auto reflected = [&](const glm::vec3& dir) {
+    const auto baseReflected = [&](const glm::vec3& dir) {
         const float nDotL = glm::dot(s.normal, dir);
         if (nDotL <= 0.0f) return glm::vec3(0.0f);
         if (model.brdf == Brdf::Ggx) {
@@ -120,6 +164,16 @@ glm::vec3 shadeReference(const SurfaceSample& s, const glm::vec3& eye, const std
         const glm::vec3 h = glm::normalize(dir + v);
         const float spec = std::pow(std::max(glm::dot(s.normal, h), 0.0f), t.shininess);
         return nDotL * (t.diffuse + t.specular * spec);
+    };
+    // ...under the sheen, where there is one: its lobe (pi times it under Blinn-Phong, whose f is
+    // pi times a physical BRDF) over the material, dimmed by the albedo scaling.
+    const auto reflected = [&](const glm::vec3& dir) {
+        const float nDotL = glm::dot(s.normal, dir);
+        if (!sheen || nDotL <= 0.0f) return baseReflected(dir);
+        const float scaling = std::min(1.0f - sheenMax * viewAlbedo, 1.0f - sheenMax * sheenAlbedo(nDotL, s.sheenRoughness));
+        glm::vec3 lobe = s.sheenColor * sheenCharlieTimesNDotL(s.normal, v, dir, nDotL, nDotV, s.sheenRoughness);
+        if (model.brdf != Brdf::Ggx) lobe *= kPi;
+        return lobe + baseReflected(dir) * scaling;
     };
     // The coat's lobe times Nc.L.
     const auto coatReflected = [&](const glm::vec3& dir) {

@@ -41,6 +41,9 @@ struct SurfaceSample {
     float clearcoat = 0.0f;
     float clearcoatRoughness = 0.0f;
     glm::vec3 clearcoatNormal{0.0f, 0.0f, 1.0f};
+    // KHR_materials_sheen: the sheen's linear colour (0: none) and roughness.
+    glm::vec3 sheenColor{0.0f};
+    float sheenRoughness = 0.0f;
 };
 
 // The metallic-roughness material's terms, shared by every method.
@@ -66,6 +69,13 @@ glm::vec3 ggxBrdf(const ShadingTerms& t, const glm::vec3& n, const glm::vec3& v,
 // (GGX's D Vis at the coat's alpha and normal, no Fresnel) for unit v and l with Nc.L > 0.
 float clearcoatLayerWeight(const SurfaceSample& s, const glm::vec3& v);
 float clearcoatGgx(const SurfaceSample& s, const glm::vec3& v, const glm::vec3& l);
+
+// KHR_materials_sheen (glsl/include/shading.glsl has the formulas): the lobe's directional albedo E
+// at cosine mu by Conty Estevez and Kulla's fit, and the Charlie lobe D V times N.L for unit n, v, l
+// with N.L = nDotL > 0 and N.V = nDotV (floored), alpha_s = max(roughness, 0.07)^2.
+float sheenAlbedo(float mu, float sheenRoughness);
+float sheenCharlieTimesNDotL(const glm::vec3& n, const glm::vec3& v, const glm::vec3& l, float nDotL, float nDotV,
+                             float sheenRoughness);
 
 // The linear radiance the shaders compute for a surface point seen from `eye`, from lights of
 // every type (glsl/include/shading.glsl and sun_lights.glsl), in the given light model; without

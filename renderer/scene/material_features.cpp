@@ -43,6 +43,10 @@ std::uint32_t materialFeatures(const Scene& scene) {
             if (uses(m.clearcoatTexture) | uses(m.clearcoatRoughnessTexture)) f |= ML_FEATURE_CLEARCOAT_MAP;
             if (!scene.tangents.empty() && uses(m.clearcoatNormalTexture)) f |= ML_FEATURE_CLEARCOAT_MAP | ML_FEATURE_NORMAL_MAP;
         }
+        if (m.sheenModelled()) {
+            f |= ML_FEATURE_SHEEN;
+            if (uses(m.sheenColorTexture) | uses(m.sheenRoughnessTexture)) f |= ML_FEATURE_SHEEN_MAP;
+        }
         if (m.alphaTested()) f |= ML_FEATURE_ALPHA_TEST;
         if (m.blended()) f |= ML_FEATURE_BLEND;
     }
@@ -71,6 +75,8 @@ std::string describeMaterialFeatures(std::uint32_t features) {
         {ML_FEATURE_SPECULAR_MAP, "specular maps"},
         {ML_FEATURE_CLEARCOAT, "clearcoat"},
         {ML_FEATURE_CLEARCOAT_MAP, "clearcoat maps"},
+        {ML_FEATURE_SHEEN, "sheen"},
+        {ML_FEATURE_SHEEN_MAP, "sheen maps"},
     };
     std::string text;
     for (const auto& [bit, name] : kNames)

@@ -20,16 +20,16 @@ struct DrawElementsIndirectCommand {
 };
 static_assert(sizeof(DrawElementsIndirectCommand) == 20, "GL's indirect command layout");
 
-constexpr GLuint kSlotUnits[ML_TEXTURE_SLOTS] = {ML_TEX_BASE_COLOR,     ML_TEX_METALLIC_ROUGHNESS,  ML_TEX_NORMAL,
-                                                 ML_TEX_OCCLUSION,      ML_TEX_EMISSIVE,            ML_TEX_SPECULAR,
-                                                 ML_TEX_SPECULAR_COLOR, ML_TEX_CLEARCOAT,           ML_TEX_CLEARCOAT_ROUGHNESS,
-                                                 ML_TEX_CLEARCOAT_NORMAL};
+constexpr GLuint kSlotUnits[ML_TEXTURE_SLOTS] = {ML_TEX_BASE_COLOR,       ML_TEX_METALLIC_ROUGHNESS,  ML_TEX_NORMAL,
+                                                 ML_TEX_OCCLUSION,        ML_TEX_EMISSIVE,            ML_TEX_SPECULAR,
+                                                 ML_TEX_SPECULAR_COLOR,   ML_TEX_CLEARCOAT,           ML_TEX_CLEARCOAT_ROUGHNESS,
+                                                 ML_TEX_CLEARCOAT_NORMAL, ML_TEX_SHEEN_COLOR,         ML_TEX_SHEEN_ROUGHNESS};
 
 // Does the scene's material record hold every slot and the extensions' vec4s (bindings.h)?
 bool extendedRecord(std::uint32_t features) { return (features & ML_FEATURES_EXTENDED_RECORD) != 0; }
 
 // The slots a scene's material records and texture bindings hold: the extensions' only where some
-// material models one (KHR_materials_specular or ior, KHR_materials_clearcoat).
+// material models one (KHR_materials_specular or ior, KHR_materials_clearcoat, KHR_materials_sheen).
 int materialSlots(std::uint32_t features) { return extendedRecord(features) ? ML_TEXTURE_SLOTS : ML_CORE_TEXTURE_SLOTS; }
 
 // The texture slots whose shader path this scene compiles in (a slot whose feature is off is never sampled).
@@ -48,6 +48,10 @@ std::array<const TextureRef*, ML_TEXTURE_SLOTS> sampledSlots(const Material& m, 
         slots[ML_SLOT_CLEARCOAT] = &m.clearcoatTexture;
         slots[ML_SLOT_CLEARCOAT_ROUGHNESS] = &m.clearcoatRoughnessTexture;
         if (features & ML_FEATURE_NORMAL_MAP) slots[ML_SLOT_CLEARCOAT_NORMAL] = &m.clearcoatNormalTexture;
+    }
+    if ((features & ML_FEATURE_SHEEN_MAP) && m.sheenModelled()) {
+        slots[ML_SLOT_SHEEN_COLOR] = &m.sheenColorTexture;
+        slots[ML_SLOT_SHEEN_ROUGHNESS] = &m.sheenRoughnessTexture;
     }
     return slots;
 }
@@ -122,6 +126,7 @@ SceneGpu::SceneGpu(const Scene& scene, TriangleOrder order) : features_(ml::mate
         g.factors = glm::vec4(m.metallic, m.roughness, m.normalScale, m.occlusionStrength);
         g.specular = glm::vec4(dielectricF0(m.ior) * m.specularColorFactor, m.specularFactor);
         if (m.clearcoatModelled()) g.clearcoat = glm::vec4(m.clearcoatFactor, m.clearcoatRoughnessFactor, m.clearcoatNormalScale, 0.0f);
+        if (m.sheenModelled()) g.sheen = glm::vec4(m.sheenColorFactor, m.sheenRoughnessFactor);
         if (m.unlit) g.info.w |= ML_MATERIAL_UNLIT;
         TextureSet set{};
         bool textured = false;
