@@ -1,10 +1,11 @@
 // glTF's material extensions on files the tests write: KHR_materials_unlit, KHR_materials_ior,
 // KHR_materials_specular (factors and both maps), KHR_materials_clearcoat (factors, its three maps,
-// the emissive under it), KHR_materials_pbrSpecularGlossiness (held to its conversion by hand) and
-// KHR_materials_variants (each variant drawn with its material). Every clustered method (both
-// deferred resolves, the visibility buffer, all in the exact G-buffer) is held to naive on each;
-// the frame's pixel is held to the CPU mirror (renderer/reference/shading_reference.h) and, for
-// unlit, to the base colour itself, whatever the lights.
+// the emissive under it), KHR_materials_sheen (factors, both maps, under a coat),
+// KHR_materials_pbrSpecularGlossiness (held to its conversion by hand) and KHR_materials_variants
+// (each variant drawn with its material). Every clustered method (both deferred resolves, the
+// visibility buffer, all in the exact G-buffer) is held to naive on each; the frame's pixel is
+// held to the CPU mirror (renderer/reference/shading_reference.h) and, for unlit, to the base
+// colour itself, whatever the lights.
 #include <algorithm>
 #include <array>
 #include <optional>
@@ -358,6 +359,89 @@ TEST_F(GltfMaterialExtensions, EachVariantDrawsItsMaterial) {
         const test::ReferenceFrame expected = test::renderReference(directRenderer, 0);
         for (int k = 0; k < 3; ++k) EXPECT_EQ(quad[k], expected.hdr.at(kWidth / 2, kHeight / 2)[k]) << label << " channel " << k;
     }
+}
+
+struct SheenCase {
+    const char* name;
+    glm::vec3 colorFactor;
+    float roughnessFactor;
+    std::array<std::uint8_t, 4> colorTexel, roughnessTexel;  // {0,0,0,0}: no such map
+    float clearcoat;                                         // 0: no coat over the sheen
+    glm::vec3 sheenColor;                                    // what the mirror takes: factor x map
+    float sheenRoughness;
+};
+
+// Quads under KHR_materials_sheen (the colour alone, rough, both maps, under a clear coat): every
+// method holds to naive, and the middle pixel to the CPU mirror; a sheenColorFactor of 0 compiles
+// nothing in and leaves the frame as it was without the extension.
+TEST_F(GltfMaterialExtensions, SheenMatchesNaiveAndTheCpuMirror) {
+    const std::array<std::uint8_t, 4> none{0, 0, 0, 0}, colorTexel{200, 150, 90, 255}, roughnessTexel{0, 0, 0, 153};
+    const glm::vec3 mapped = glm::vec3(1.0f, 0.8f, 0.6f) *
+                             glm::vec3(srgbToLinear(colorTexel[0]), srgbToLinear(colorTexel[1]), srgbToLinear(colorTexel[2]));
+    const std::vector<SheenCase> cases = {
+        {"colour factor only", glm::vec3(0.8f, 0.6f, 0.9f), 0.0f, none, none, 0.0f, glm::vec3(0.8f, 0.6f, 0.9f), 0.0f},
+        {"rough", glm::vec3(0.9f), 0.8f, none, none, 0.0f, glm::vec3(0.9f), 0.8f},
+        {"both maps", glm::vec3(1.0f, 0.8f, 0.6f), 0.9f, colorTexel, roughnessTexel, 0.0f, mapped, 0.9f * 153.0f / 255.0f},
+        {"under a clear coat", glm::vec3(0.7f), 0.5f, none, none, 1.0f, glm::vec3(0.7f), 0.5f},
+    };
+    const glm::vec3 base(0.2f, 0.3f, 0.6f);
+    for (const SheenCase& c : cases) {
+        Gltf g;
+        json sheen = {{"sheenColorFactor", {c.colorFactor.r, c.colorFactor.g, c.colorFactor.b}}, {"sheenRoughnessFactor", c.roughnessFactor}};
+        if (c.colorTexel != none) sheen["sheenColorTexture"] = {{"index", addFlatTexture(g, c.colorTexel)}};
+        if (c.roughnessTexel != none) sheen["sheenRoughnessTexture"] = {{"index", addFlatTexture(g, c.roughnessTexel)}};
+        json extensions = {{"KHR_materials_sheen", sheen}};
+        if (c.clearcoat > 0.0f) extensions["KHR_materials_clearcoat"] = {{"clearcoatFactor", c.clearcoat}, {"clearcoatRoughnessFactor", 0.2}};
+        const int material = g.add("materials", {{"pbrMetallicRoughness", {{"baseColorFactor", {base.r, base.g, base.b, 1.0}},
+                                                                           {"metallicFactor", 0.0}, {"roughnessFactor", 0.5}}},
+                                                 {"extensions", extensions}});
+        g.doc["extensionsUsed"] = {"KHR_materials_sheen", "KHR_materials_clearcoat"};
+        const Scene scene = writeAndLoad(g, {square(g, 0.0f, 2.5f, material)}, "sheen");
+        ASSERT_TRUE(materialFeatures(scene) & ML_FEATURE_SHEEN) << c.name;
+        EXPECT_EQ((materialFeatures(scene) & ML_FEATURE_SHEEN_MAP) != 0, c.colorTexel != none || c.roughnessTexel != none) << c.name;
+        // A light low over the quad too, where the sheen's albedo (its (1 - N.L)^3 term) and lobe show.
+        std::vector<Light> lights = testLights();
+        lights.push_back(Light{{2.5f, 0.4f, 0.3f}, 8.0f, {4.0f, 3.0f, 2.0f}});
+        const FrameSettings settings = test::smallFrame(scene, kFrontView, kWidth, kHeight);
+        FrameRenderer renderer(scene, lights, settings);
+        const test::ReferenceFrame naive = test::expectClusteredVariantsMatchNaive(renderer, c.name);
+
+        SurfaceSample s;
+        s.position = middlePixelPoint();
+        s.normal = glm::vec3(0.0f, 0.0f, 1.0f);
+        s.baseColor = base;
+        s.roughness = 0.5f;
+        s.clearcoat = c.clearcoat;
+        s.clearcoatRoughness = 0.2f;
+        s.clearcoatNormal = s.normal;
+        s.sheenColor = c.sheenColor;
+        s.sheenRoughness = c.sheenRoughness;
+        const glm::vec3 mirror = shadeReference(s, kFrontView.eye, lights, settings.ambient, true, settings.lightModel);
+        const float* p = naive.hdr.at(kWidth / 2, kHeight / 2);
+        for (int k = 0; k < 3; ++k) EXPECT_NEAR(p[k], mirror[k], 1e-4f + 1e-4f * mirror[k]) << c.name << " channel " << k;
+        // The sheen shows: the pixel is not what the same material shows without it.
+        SurfaceSample bare = s;
+        bare.sheenColor = glm::vec3(0.0f);
+        const glm::vec3 plain = shadeReference(bare, kFrontView.eye, lights, settings.ambient, true, settings.lightModel);
+        EXPECT_GT(glm::length(mirror - plain), 1e-3f) << c.name << ": the sheen changed nothing";
+    }
+
+    // sheenColorFactor 0 (with a map and a roughness) is no sheen: nothing compiles in, the frame is
+    // the plain material's.
+    std::vector<float> pixels[2];
+    for (int withExtension = 0; withExtension < 2; ++withExtension) {
+        Gltf g;
+        json material = {{"pbrMetallicRoughness", {{"baseColorFactor", {base.r, base.g, base.b, 1.0}}, {"metallicFactor", 0.0}, {"roughnessFactor", 0.5}}}};
+        if (withExtension)
+            material["extensions"] = {{"KHR_materials_sheen", {{"sheenRoughnessFactor", 0.5},
+                                                               {"sheenColorTexture", {{"index", addFlatTexture(g, {255, 255, 255, 255})}}}}}};
+        const Scene scene = writeAndLoad(g, {square(g, 0.0f, 2.5f, g.add("materials", material))}, "no_sheen");
+        EXPECT_EQ(materialFeatures(scene) & (ML_FEATURE_SHEEN | ML_FEATURE_SHEEN_MAP), 0u);
+        FrameRenderer renderer(scene, testLights(), test::smallFrame(scene, kFrontView, kWidth, kHeight));
+        const test::ReferenceFrame naive = test::expectClusteredVariantsMatchNaive(renderer, "sheenColorFactor 0");
+        pixels[withExtension] = naive.hdr.pixels;
+    }
+    EXPECT_EQ(pixels[0], pixels[1]) << "a sheenColorFactor of 0 changed the frame";
 }
 
 }  // namespace

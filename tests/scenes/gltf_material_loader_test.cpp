@@ -209,6 +209,31 @@ TEST(GltfMaterials, SpecularGlossinessBecomesMetallicRoughnessAndSpecular) {
     EXPECT_EQ(plain.ior, 0.0f);
 }
 
+// KHR_materials_sheen loads its factors and maps (the colour's as sRGB), warns about nothing, and
+// a colour of 0 is no sheen whatever else the extension holds.
+TEST(GltfMaterials, SheenIsRead) {
+    const fs::path dir = testDir();
+    Gltf g = withMaterial({{"extensions", {{"KHR_materials_sheen", {{"sheenColorFactor", {0.5, 0.25, 1.0}}, {"sheenRoughnessFactor", 0.75},
+                                                                    {"sheenColorTexture", {{"index", 0}}},
+                                                                    {"sheenRoughnessTexture", {{"index", 0}}}}}}}});
+    g.doc["extensionsUsed"] = {"KHR_materials_sheen"};
+    std::vector<std::string> warnings;
+    Scene s = load(g.writeGltf(dir, "sheen"), warnings);
+    const Material& m = s.materials.at(0);
+    EXPECT_EQ(m.sheenColorFactor, glm::vec3(0.5f, 0.25f, 1.0f));
+    EXPECT_FLOAT_EQ(m.sheenRoughnessFactor, 0.75f);
+    EXPECT_TRUE(m.sheenColorTexture.present());
+    EXPECT_TRUE(m.sheenRoughnessTexture.present());
+    EXPECT_NE(m.sheenColorTexture.image, m.sheenRoughnessTexture.image) << "one image as sRGB colour and as linear roughness";
+    EXPECT_TRUE(m.sheenModelled());
+    EXPECT_TRUE(warnings.empty()) << warnings.at(0);
+
+    Gltf off = withMaterial({{"extensions", {{"KHR_materials_sheen", {{"sheenRoughnessFactor", 0.5}, {"sheenColorTexture", {{"index", 0}}}}}}}});
+    warnings.clear();
+    s = load(off.writeGltf(dir, "no_sheen"), warnings);
+    EXPECT_FALSE(s.materials.at(0).sheenModelled()) << "glTF's default sheenColorFactor is 0";
+}
+
 TEST(GltfMaterials, BadValuesAreNamedInOneLine) {
     const fs::path dir = testDir();
     const auto refused = [&](const char* name, const json& material, std::initializer_list<const char*> keywords,
@@ -249,6 +274,16 @@ TEST(GltfMaterials, BadValuesAreNamedInOneLine) {
     refused("diffuse_texture", sg({{"diffuseTexture", {{"index", 4}}}}), {"materials[0]", "diffuseTexture", "index 4"});
     refused("specgloss_texture", sg({{"specularGlossinessTexture", {{"texCoord", 0}}}}),
             {"materials[0]", "specularGlossinessTexture", "not a textureInfo"});
+    refused("sheen_color", {{"extensions", {{"KHR_materials_sheen", {{"sheenColorFactor", {0.5, 1.5, 0.5}}}}}}},
+            {"materials[0]", "KHR_materials_sheen", "sheenColorFactor"});
+    refused("sheen_color_count", {{"extensions", {{"KHR_materials_sheen", {{"sheenColorFactor", {0.5, 0.5}}}}}}},
+            {"materials[0]", "sheenColorFactor", "3 numbers"});
+    refused("sheen_roughness", {{"extensions", {{"KHR_materials_sheen", {{"sheenColorFactor", {1, 1, 1}}, {"sheenRoughnessFactor", -0.25}}}}}},
+            {"materials[0]", "sheenRoughnessFactor -0.25", "outside [0, 1]"});
+    refused("sheen_texture", {{"extensions", {{"KHR_materials_sheen", {{"sheenColorFactor", {1, 1, 1}}, {"sheenRoughnessTexture", {{"index", 9}}}}}}}},
+            {"materials[0]", "sheenRoughnessTexture", "index 9"});
+    refused("sheen_texture_info", {{"extensions", {{"KHR_materials_sheen", {{"sheenColorTexture", {{"texCoord", 0}}}}}}}},
+            {"materials[0]", "sheenColorTexture", "not a textureInfo"});
     refused("min_filter", {{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}, {"samplers[0]", "minFilter 1234"},
             {{"minFilter", 1234}});
     refused("wrap", {{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}, {"samplers[0]", "wrapT 5"}, {{"wrapT", 5}});
