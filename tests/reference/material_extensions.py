@@ -1,6 +1,7 @@
-"""KHR_materials_ior, KHR_materials_specular, KHR_materials_unlit and KHR_materials_clearcoat
-written from their specifications (issue 65), for check_material_extensions.py; GGX's D and Vis are
-cpu_reference's (glTF appendix B). Nothing here comes from the renderer's shading code.
+"""KHR_materials_ior, KHR_materials_specular, KHR_materials_unlit, KHR_materials_clearcoat and
+KHR_materials_sheen written from their specifications (issue 65), for check_material_extensions.py;
+GGX's D and Vis are cpu_reference's (glTF appendix B). Nothing here comes from the renderer's
+shading code.
 
 KHR_materials_specular's BRDF, with alpha, D and Vis as in appendix B:
   dielectric_f0  = min(((ior - 1) / (ior + 1))^2 * specularColorFactor, 1)             (with KHR_materials_ior)
@@ -16,10 +17,19 @@ KHR_materials_clearcoat (its "Implementation" section), Nc the coat's normal:
   coated_material   = mix(material, clearcoat_brdf, clearcoat clearcoat_fresnel)
   coated_emission   = emission (1 - clearcoat clearcoat_fresnel)
 each BRDF times its own normal's cosine with the light.
+KHR_materials_sheen (its "Implementation Notes"), c the sheen colour, alpha_g = sheenRoughness^2:
+  sheen_distribution = (2 + 1 / alpha_g) sin2h^(0.5 / alpha_g) / (2 pi)                   (Charlie)
+  sheen_visibility   = 1 / ((1 + lambda_sheen(N.V) + lambda_sheen(N.L)) 4 N.V N.L)       (its fit of Lambda)
+  sheen_albedo_scaling = min(1 - max3(c) E(V.N), 1 - max3(c) E(L.N))
+  sheen_material     = c sheen_distribution sheen_visibility + material sheen_albedo_scaling
+with E the sheen BRDF's directional albedo, here integrated over the hemisphere (sheen_albedo_table),
+not fitted; clearcoat layers over sheen_material. Renderer conventions: sheenRoughness floored at
+0.07 (the specification's inv_r is infinite at 0), and the ambient fill dimmed by E(V.N) alone and
+reflected off the sheen (c E(V.N)).
 """
 import numpy as np
 
-from cpu_reference import dot, ggx_distribution_visibility, schlick_weight
+from cpu_reference import dot, ggx_distribution_visibility, normalize, schlick_weight
 
 
 def dielectric_f0(ior, specular_color):
@@ -64,7 +74,7 @@ def clearcoat_share(v, clearcoat, clearcoat_normal):
 
 
 def radiance(n, v, sun_l, sun_color, ambient, base, metallic, roughness, ior, specular, specular_color, unlit,
-             clearcoat, clearcoat_roughness, clearcoat_normal):
+             clearcoat, clearcoat_roughness, clearcoat_normal, sheen_color, sheen_roughness, sheen_albedo=None):
     """A point's linear radiance under one directional light (towards it: sun_l) and the ambient
     fill; an unlit material's is its base colour (KHR_materials_unlit). Under a coat, the ambient
     fill (a renderer convention) is layered as the emission is, and the coat reflects the fill
@@ -72,7 +82,105 @@ def radiance(n, v, sun_l, sun_color, ambient, base, metallic, roughness, ior, sp
     k = clearcoat_share(v, clearcoat, clearcoat_normal)
     coat = ggx_distribution_visibility(clearcoat_normal, v, sun_l, clearcoat_roughness) * np.maximum(dot(clearcoat_normal, sun_l), 0.0)
     fill = ambient_fill(ambient, base, metallic, ior, specular, specular_color)
-    lit = (1.0 - k) * (fill + np.asarray(sun_color) * brdf_times_cos(n, v, sun_l, base, metallic, roughness, ior, specular,
-                                                                    specular_color)) \
-        + k * (ambient + np.asarray(sun_color) * coat[:, None])
+    material = brdf_times_cos(n, v, sun_l, base, metallic, roughness, ior, specular, specular_color)
+    material, fill = sheen_layer(n, v, sun_l, material, fill, ambient, sheen_color, sheen_roughness,
+                                 SHEEN_ALBEDO if sheen_albedo is None else sheen_albedo)
+    lit = (1.0 - k) * (fill + np.asarray(sun_color) * material) + k * (ambient + np.asarray(sun_color) * coat[:, None])
     return np.where(unlit[:, None], base, lit)
+
+
+SHEEN_MIN_ROUGHNESS = 0.07  # renderer convention (Khronos' Sample Viewer's floor)
+
+
+def sheen_alpha(sheen_roughness):
+    return np.maximum(sheen_roughness, SHEEN_MIN_ROUGHNESS) ** 2
+
+
+def sheen_distribution(n_dot_h, alpha_g):
+    inv_r = 1.0 / alpha_g
+    sin2h = np.maximum(1.0 - n_dot_h * n_dot_h, 0.0)
+    return (2.0 + inv_r) * sin2h ** (inv_r * 0.5) / (2.0 * np.pi)
+
+
+def _sheen_l(x, alpha_g):
+    t = (1.0 - alpha_g) ** 2
+    a = 21.5473 + (25.3245 - 21.5473) * t
+    b = 3.82987 + (3.32435 - 3.82987) * t
+    c = 0.19823 + (0.16801 - 0.19823) * t
+    d = -1.97760 + (-1.27393 + 1.97760) * t
+    e = -4.32054 + (-4.85967 + 4.32054) * t
+    return a / (1.0 + b * np.abs(x) ** c) + d * x + e
+
+
+def lambda_sheen(cos_theta, alpha_g):
+    return np.where(np.abs(cos_theta) < 0.5, np.exp(_sheen_l(cos_theta, alpha_g)),
+                    np.exp(2.0 * _sheen_l(0.5, alpha_g) - _sheen_l(1.0 - cos_theta, alpha_g)))
+
+
+def sheen_brdf(n_dot_v, n_dot_l, n_dot_h, sheen_roughness):
+    """The Charlie BRDF D V (colour 1) for N.V, N.L > 0."""
+    alpha_g = sheen_alpha(sheen_roughness)
+    visibility = 1.0 / ((1.0 + lambda_sheen(n_dot_v, alpha_g) + lambda_sheen(n_dot_l, alpha_g)) * (4.0 * n_dot_v * n_dot_l))
+    return sheen_distribution(n_dot_h, alpha_g) * visibility
+
+
+def sheen_albedo_integral(mu, sheen_roughness, steps=(512, 256)):
+    """E(mu): the sheen BRDF times N.L integrated over the hemisphere of light directions, the view
+    at cosine mu; midpoint rule in cos(theta_L) and in phi over [0, pi] (the lobe is symmetric)."""
+    u = (np.arange(steps[0]) + 0.5) / steps[0]                  # cos(theta_L)
+    phi = (np.arange(steps[1]) + 0.5) / steps[1] * np.pi
+    u, phi = np.meshgrid(u, phi, indexing="ij")
+    s = np.sqrt(1.0 - u * u)
+    l = np.stack([s * np.cos(phi), s * np.sin(phi), u], axis=-1)
+    v = np.array([np.sqrt(1.0 - mu * mu), 0.0, mu])
+    h = l + v
+    n_dot_h = h[..., 2] / np.linalg.norm(h, axis=-1)
+    f = sheen_brdf(mu, u, n_dot_h, sheen_roughness) * u
+    return 2.0 * f.sum() * (1.0 / steps[0]) * (np.pi / steps[1])
+
+
+def sheen_albedo_fit(mu, sheen_roughness):
+    """Conty Estevez and Kulla's fit of E, as the renderer takes it (sqrt(alpha_g) = the floored roughness)."""
+    r = np.maximum(sheen_roughness, SHEEN_MIN_ROUGHNESS)
+    return 0.65584461 * (1.0 - mu) ** 3 + 1.0 / (4.16526551 + np.exp(-7.97291361 * r + 6.33516894))
+
+
+class SheenAlbedoTable:
+    """E by integration on a grid of N.V for each roughness it is asked about, interpolated linearly."""
+    MU = np.linspace(0.0, 1.0, 129)[1:]
+
+    def __init__(self):
+        self.rows = {}
+
+    def __call__(self, mu, sheen_roughness):
+        mu, sheen_roughness = np.broadcast_arrays(np.asarray(mu, float), np.asarray(sheen_roughness, float))
+        out = np.zeros(mu.shape)
+        for r in np.unique(sheen_roughness):
+            if r not in self.rows:
+                self.rows[r] = np.array([sheen_albedo_integral(m, r) for m in self.MU])
+            sel = sheen_roughness == r
+            out[sel] = np.interp(mu[sel], self.MU, self.rows[r])
+        return out
+
+
+SHEEN_ALBEDO = SheenAlbedoTable()
+
+
+def sheen_layer(n, v, sun_l, base_lit, fill, ambient, sheen_color, sheen_roughness, albedo=SHEEN_ALBEDO):
+    """The material under its sheen: (the sun's light, the ambient fill), base_lit and fill being the
+    material's own; unchanged where the sheen colour is 0."""
+    c = np.asarray(sheen_color, float)
+    m = c.max(axis=-1)
+    n_dot_v, n_dot_l = np.abs(dot(n, v)), dot(n, sun_l)
+    lit = n_dot_l > 0.0
+    nl = np.where(lit, n_dot_l, 1.0)
+    sheen = m > 0.0
+    e_v, e_l = np.zeros(m.shape), np.zeros(m.shape)                        # E only where there is a sheen
+    e_v[sheen] = albedo(n_dot_v[sheen], sheen_roughness[sheen])
+    e_l[sheen] = albedo(np.clip(nl[sheen], 0.0, 1.0), sheen_roughness[sheen])
+    scaling = np.minimum(1.0 - m * e_v, 1.0 - m * e_l)
+    h = normalize(v + sun_l)
+    lobe = np.where(lit, sheen_brdf(n_dot_v, nl, dot(n, h), sheen_roughness) * nl, 0.0)
+    lit_out = np.where(sheen[:, None], c * lobe[:, None] + base_lit * scaling[:, None], base_lit)
+    fill_out = np.where(sheen[:, None], fill * (1.0 - m * e_v)[:, None] + ambient * c * e_v[:, None], fill)
+    return lit_out, fill_out

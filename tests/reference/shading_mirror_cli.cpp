@@ -2,7 +2,8 @@
 // (tests/reference/check_material_extensions.py) can hold it to the specification. One case a
 // line on stdin, as glTF states the material (the ior to F0 conversion is the renderer's):
 //   eye(3) position(3) normal(3) base(3) metallic roughness ior specularFactor specularColor(3)
-//   unlit clearcoat clearcoatRoughness clearcoatNormal(3) ambient sunDirection(3) sunColor(3)
+//   unlit clearcoat clearcoatRoughness clearcoatNormal(3) sheenColor(3) sheenRoughness ambient
+//   sunDirection(3) sunColor(3)
 // and one line "r g b" of shadeReference's linear radiance on stdout, in float's shortest exact form.
 #include <algorithm>
 #include <cstdio>
@@ -20,7 +21,8 @@ int main() {
     while (std::cin >> eye.x >> eye.y >> eye.z >> s.position.x >> s.position.y >> s.position.z >> s.normal.x >>
            s.normal.y >> s.normal.z >> base.r >> base.g >> base.b >> s.metallic >> s.roughness >> ior >>
            specularFactor >> specularColor.r >> specularColor.g >> specularColor.b >> unlit >> s.clearcoat >>
-           s.clearcoatRoughness >> s.clearcoatNormal.x >> s.clearcoatNormal.y >> s.clearcoatNormal.z >> ambient >>
+           s.clearcoatRoughness >> s.clearcoatNormal.x >> s.clearcoatNormal.y >> s.clearcoatNormal.z >> s.sheenColor.r >>
+           s.sheenColor.g >> s.sheenColor.b >> s.sheenRoughness >> ambient >>
            sunDirection.x >> sunDirection.y >> sunDirection.z >> sunColor.r >> sunColor.g >> sunColor.b) {
         s.baseColor = base;
         s.specularF0 = glm::min(dielectricF0(ior) * specularColor, glm::vec3(1.0f));  // as glsl/include/material.glsl
