@@ -10,6 +10,7 @@
 #include <array>
 #include <optional>
 #include <cmath>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -60,6 +61,36 @@ glm::vec3 middlePixelPoint() {
     const float x = ((kWidth / 2 + 0.5f) / kWidth * 2.0f - 1.0f) * t * float(kWidth) / float(kHeight);
     const float y = (1.0f - (kHeight / 2 + 0.5f) / kHeight * 2.0f) * t;
     return {x, y, 0.0f};
+}
+
+// The middle pixel against the CPU mirror's `s`, and the extension visible there: the mirror's
+// `without` (s less the extension) is not the same.
+void expectMirrorPixelShowingTheExtension(const test::ReferenceFrame& naive, const SurfaceSample& s, const SurfaceSample& without,
+                                          const std::vector<Light>& lights, const FrameSettings& settings, const std::string& label) {
+    const glm::vec3 mirror = shadeReference(s, kFrontView.eye, lights, settings.ambient, true, settings.lightModel);
+    const float* p = naive.hdr.at(kWidth / 2, kHeight / 2);
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR(p[k], mirror[k], 1e-4f + 1e-4f * mirror[k]) << label << " channel " << k;
+    const glm::vec3 plain = shadeReference(without, kFrontView.eye, lights, settings.ambient, true, settings.lightModel);
+    EXPECT_GT(glm::length(mirror - plain), 1e-3f) << label << ": the extension changed nothing";
+}
+
+// A quad of base colour `base` whose extension is switched off (`extensions(g)`: the material's
+// extensions object, maps added to g) compiles none of `features` in and draws, in every method,
+// the frame the plain material draws.
+void expectSwitchedOffExtensionDrawsThePlainMaterial(glm::vec3 base, const std::function<json(Gltf&)>& extensions,
+                                                     std::uint32_t features, const std::string& label) {
+    std::vector<float> pixels[2];
+    for (int withExtension = 0; withExtension < 2; ++withExtension) {
+        Gltf g;
+        json material = {{"pbrMetallicRoughness", {{"baseColorFactor", {base.r, base.g, base.b, 1.0}}, {"metallicFactor", 0.0}, {"roughnessFactor", 0.5}}}};
+        if (withExtension) material["extensions"] = extensions(g);
+        const Scene scene = writeAndLoad(g, {square(g, 0.0f, 2.5f, g.add("materials", material))}, "switched_off");
+        EXPECT_EQ(materialFeatures(scene) & features, 0u) << label;
+        FrameRenderer renderer(scene, testLights(), test::smallFrame(scene, kFrontView, kWidth, kHeight));
+        const test::ReferenceFrame naive = test::expectClusteredVariantsMatchNaive(renderer, label);
+        pixels[withExtension] = naive.hdr.pixels;
+    }
+    EXPECT_EQ(pixels[0], pixels[1]) << label << " changed the frame";
 }
 
 class GltfMaterialExtensions : public GpuTest {};
@@ -213,30 +244,18 @@ TEST_F(GltfMaterialExtensions, ClearcoatMatchesNaiveAndTheCpuMirror) {
         s.clearcoat = c.clearcoat;
         s.clearcoatRoughness = c.clearcoatRoughness;
         s.clearcoatNormal = c.clearcoatNormal;
-        const glm::vec3 mirror = shadeReference(s, kFrontView.eye, lights, settings.ambient, true, settings.lightModel);
-        const float* p = naive.hdr.at(kWidth / 2, kHeight / 2);
-        for (int k = 0; k < 3; ++k) EXPECT_NEAR(p[k], mirror[k], 1e-4f + 1e-4f * mirror[k]) << c.name << " channel " << k;
-        // The coat shows: the pixel is not what the same material shows without it.
-        SurfaceSample bare = s;
-        bare.clearcoat = 0.0f;
-        const glm::vec3 uncoated = shadeReference(bare, kFrontView.eye, lights, settings.ambient, true, settings.lightModel);
-        EXPECT_GT(glm::length(mirror - uncoated), 1e-3f) << c.name << ": the coat changed nothing";
+        SurfaceSample uncoated = s;
+        uncoated.clearcoat = 0.0f;
+        expectMirrorPixelShowingTheExtension(naive, s, uncoated, lights, settings, c.name);
     }
 
     // clearcoatFactor 0 (with a map) is no coat: nothing compiles in, the frame is the plain material's.
-    std::vector<float> pixels[2];
-    for (int withExtension = 0; withExtension < 2; ++withExtension) {
-        Gltf g;
-        json material = {{"pbrMetallicRoughness", {{"baseColorFactor", {base.r, base.g, base.b, 1.0}}, {"metallicFactor", 0.0}, {"roughnessFactor", 0.5}}}};
-        if (withExtension)
-            material["extensions"] = {{"KHR_materials_clearcoat", {{"clearcoatFactor", 0.0}, {"clearcoatTexture", {{"index", addFlatTexture(g, {255, 0, 0, 255})}}}}}};
-        const Scene scene = writeAndLoad(g, {square(g, 0.0f, 2.5f, g.add("materials", material))}, "no_coat");
-        EXPECT_EQ(materialFeatures(scene) & (ML_FEATURE_CLEARCOAT | ML_FEATURE_CLEARCOAT_MAP), 0u);
-        FrameRenderer renderer(scene, testLights(), test::smallFrame(scene, kFrontView, kWidth, kHeight));
-        const test::ReferenceFrame naive = test::expectClusteredVariantsMatchNaive(renderer, "clearcoatFactor 0");
-        pixels[withExtension] = naive.hdr.pixels;
-    }
-    EXPECT_EQ(pixels[0], pixels[1]) << "a clearcoatFactor of 0 changed the frame";
+    expectSwitchedOffExtensionDrawsThePlainMaterial(
+        base,
+        [](Gltf& g) {
+            return json{{"KHR_materials_clearcoat", {{"clearcoatFactor", 0.0}, {"clearcoatTexture", {{"index", addFlatTexture(g, {255, 0, 0, 255})}}}}}};
+        },
+        ML_FEATURE_CLEARCOAT | ML_FEATURE_CLEARCOAT_MAP, "clearcoatFactor 0");
 }
 
 // A spec-gloss quad (diffuse and specular-glossiness maps, factors) and the same material converted
@@ -416,32 +435,20 @@ TEST_F(GltfMaterialExtensions, SheenMatchesNaiveAndTheCpuMirror) {
         s.clearcoatNormal = s.normal;
         s.sheenColor = c.sheenColor;
         s.sheenRoughness = c.sheenRoughness;
-        const glm::vec3 mirror = shadeReference(s, kFrontView.eye, lights, settings.ambient, true, settings.lightModel);
-        const float* p = naive.hdr.at(kWidth / 2, kHeight / 2);
-        for (int k = 0; k < 3; ++k) EXPECT_NEAR(p[k], mirror[k], 1e-4f + 1e-4f * mirror[k]) << c.name << " channel " << k;
-        // The sheen shows: the pixel is not what the same material shows without it.
-        SurfaceSample bare = s;
-        bare.sheenColor = glm::vec3(0.0f);
-        const glm::vec3 plain = shadeReference(bare, kFrontView.eye, lights, settings.ambient, true, settings.lightModel);
-        EXPECT_GT(glm::length(mirror - plain), 1e-3f) << c.name << ": the sheen changed nothing";
+        SurfaceSample plain = s;
+        plain.sheenColor = glm::vec3(0.0f);
+        expectMirrorPixelShowingTheExtension(naive, s, plain, lights, settings, c.name);
     }
 
     // sheenColorFactor 0 (with a map and a roughness) is no sheen: nothing compiles in, the frame is
     // the plain material's.
-    std::vector<float> pixels[2];
-    for (int withExtension = 0; withExtension < 2; ++withExtension) {
-        Gltf g;
-        json material = {{"pbrMetallicRoughness", {{"baseColorFactor", {base.r, base.g, base.b, 1.0}}, {"metallicFactor", 0.0}, {"roughnessFactor", 0.5}}}};
-        if (withExtension)
-            material["extensions"] = {{"KHR_materials_sheen", {{"sheenRoughnessFactor", 0.5},
-                                                               {"sheenColorTexture", {{"index", addFlatTexture(g, {255, 255, 255, 255})}}}}}};
-        const Scene scene = writeAndLoad(g, {square(g, 0.0f, 2.5f, g.add("materials", material))}, "no_sheen");
-        EXPECT_EQ(materialFeatures(scene) & (ML_FEATURE_SHEEN | ML_FEATURE_SHEEN_MAP), 0u);
-        FrameRenderer renderer(scene, testLights(), test::smallFrame(scene, kFrontView, kWidth, kHeight));
-        const test::ReferenceFrame naive = test::expectClusteredVariantsMatchNaive(renderer, "sheenColorFactor 0");
-        pixels[withExtension] = naive.hdr.pixels;
-    }
-    EXPECT_EQ(pixels[0], pixels[1]) << "a sheenColorFactor of 0 changed the frame";
+    expectSwitchedOffExtensionDrawsThePlainMaterial(
+        base,
+        [](Gltf& g) {
+            return json{{"KHR_materials_sheen", {{"sheenRoughnessFactor", 0.5},
+                                                 {"sheenColorTexture", {{"index", addFlatTexture(g, {255, 255, 255, 255})}}}}}};
+        },
+        ML_FEATURE_SHEEN | ML_FEATURE_SHEEN_MAP, "sheenColorFactor 0");
 }
 
 }  // namespace
