@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
 # Issue 65's H100 record (nvidia-h100-x1), one command: the binary before the material extensions
-# (.devbin-before, 921f644) and after (.devbin), tools/pack-for-gpu's output, .gl/ (Debian's GL
+# (.devbin-before, 921f644) and after (.devbin, 9d6c6e9), tools/pack-for-gpu's output, .gl/ (Debian's GL
 # dispatch, Embree and TBB packages) and .gpushared/ (../shared's corpus/amd/ and the khronos
-# ClearCoatTest and ToyCar folders, with -nocoat copies: KHR_materials_clearcoat stripped from
-# their materials) carried. ab.sweep.json with each binary, twice in turns (the SM clock dips on a
-# call's first points), then lobes.sweep.json with the new one. Every file lands in $OUT/materials.tgz
+# ClearCoatTest and ToyCar folders, with -nocoat and -nosheen copies: the extension stripped from
+# their materials) carried. ab.sweep.json with each binary in turn, lobes.sweep.json with the new
+# one, then ab.sweep.json again (the SM clock dips on a call's first points). Every file lands in $OUT/materials.tgz
 # after each step, so a call cut short still returns what it ran.
 set -u
 D=docs/bench/nvidia-h100/material-extensions
@@ -17,8 +17,8 @@ step() {  # binary folder, sweep, name, seconds
   echo "$3 rc $? $(date +%T) $(nvidia-smi --query-gpu=clocks.sm --format=csv,noheader)" >> $R/steps.txt
   pack
 }
-for run in a b; do
-  step .devbin-before ab before-$run 120
-  step .devbin ab after-$run 120
-done
-step .devbin lobes lobes 150
+step .devbin-before ab before-a 110
+step .devbin ab after-a 110
+step .devbin lobes lobes 200
+step .devbin-before ab before-b 110
+step .devbin ab after-b 110
