@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # Issue 65's H100 record (nvidia-h100-x1), one command: the binary before the material extensions
-# (.devbin-before, 921f644) and after (.devbin, 9d6c6e9), tools/pack-for-gpu's output, .gl/ (Debian's GL
+# (.devbin-before, 921f644) and after (.devbin), tools/pack-for-gpu's output, .gl/ (Debian's GL
 # dispatch, Embree and TBB packages) and .gpushared/ (../shared's corpus/amd/ and the khronos
-# ClearCoatTest and ToyCar folders, with -nocoat and -nosheen copies: the extension stripped from
-# their materials) carried. ab.sweep.json with each binary in turn, lobes.sweep.json with the new
+# ClearCoatTest, ToyCar, AnisotropyStrengthTest and IridescenceSuzanne folders, with -nocoat,
+# -nosheen, -noaniso and -noirid copies: the extension stripped from their materials) carried.
+# ab.sweep.json with each binary in turn, lobes.sweep.json and accuracy.sweep.json with the new
 # one, then ab.sweep.json again (the SM clock dips on a call's first points). Every file lands in $OUT/materials.tgz
 # after each step, so a call cut short still returns what it ran.
 set -u
@@ -17,8 +18,9 @@ step() {  # binary folder, sweep, name, seconds
   echo "$3 rc $? $(date +%T) $(nvidia-smi --query-gpu=clocks.sm --format=csv,noheader)" >> $R/steps.txt
   pack
 }
-step .devbin-before ab before-a 110
-step .devbin ab after-a 110
-step .devbin lobes lobes 200
-step .devbin-before ab before-b 110
-step .devbin ab after-b 110
+step .devbin-before ab before-a 80
+step .devbin ab after-a 80
+step .devbin lobes lobes 160
+step .devbin accuracy accuracy 140
+step .devbin-before ab before-b 60
+step .devbin ab after-b 60
