@@ -87,8 +87,12 @@ std::string describeMaterialFeatures(std::uint32_t features) {
         {ML_FEATURE_ANISOTROPY_MAP, "anisotropy maps"},
     };
     std::string text;
-    for (const auto& [bit, name] : kNames)
-        if (features & bit) text += std::string(text.empty() ? "" : ", ") + name;
+    for (const auto& [bit, name] : kNames) {
+        if (!(features & bit)) continue;
+        // An anisotropic lobe switches the tangent stream on as a normal map does (ML_FEATURE_NORMAL_MAP).
+        const bool tangentsOnly = bit == ML_FEATURE_NORMAL_MAP && (features & ML_FEATURE_ANISOTROPY);
+        text += std::string(text.empty() ? "" : ", ") + (tangentsOnly ? "tangents (normal maps or anisotropy)" : name);
+    }
     return text.empty() ? "none" : text;
 }
 
