@@ -22,8 +22,11 @@ layout(location = 3) out vec4 o_target3;
 #if ML_GBUFFER_FLOAT_TARGETS >= 5
 layout(location = 4) out vec4 o_target4;
 #endif
-#if ML_GBUFFER_FLOAT_TARGETS == 6
+#if ML_GBUFFER_FLOAT_TARGETS >= 6
 layout(location = 5) out vec4 o_target5;
+#endif
+#if ML_GBUFFER_FLOAT_TARGETS == 7
+layout(location = 6) out vec4 o_target6;
 #endif
 #endif
 
@@ -43,8 +46,11 @@ void main() {
 #if ML_GBUFFER_FLOAT_TARGETS >= 5
     o_target4 = t.target[4];
 #endif
-#if ML_GBUFFER_FLOAT_TARGETS == 6
+#if ML_GBUFFER_FLOAT_TARGETS >= 6
     o_target5 = t.target[5];
+#endif
+#if ML_GBUFFER_FLOAT_TARGETS == 7
+    o_target6 = t.target[6];
 #endif
 #endif
 }

@@ -66,9 +66,9 @@ MeshPlan planMesh(const std::string& path, const tinygltf::Model& model, std::si
             checkTexCoords(path, model, m);
             const bool readsTexcoord1 = usesTexCoord1(material);
             planned.readsTexcoord1 = planned.readsTexcoord1 || readsTexcoord1;
-            if (hasNormalTexture(material) && !normalSetChosen) {
+            if (needsTangents(material) && !normalSetChosen) {
                 planned.normalMapped = true;
-                planned.normalTexCoord = normalTextureTexCoord(material);
+                planned.normalTexCoord = tangentTexCoord(material);
                 normalSetChosen = true;
             }
             if (readsTexcoord1 && texcoord1 < 0) {

@@ -290,6 +290,18 @@ void MaterialConverter::convertMaterialExtensions(const tinygltf::Material& sour
             m.sheenRoughnessTexture =
                 extensionTextureRef(what + " KHR_materials_sheen sheenRoughnessTexture", sheen->Get("sheenRoughnessTexture"), false);
     }
+    if (const tinygltf::Value* aniso = extension("KHR_materials_anisotropy")) {
+        const double strength = extensionNumber(path_, what, *aniso, "KHR_materials_anisotropy", "anisotropyStrength", 0.0);
+        if (strength < 0.0 || strength > 1.0)
+            fail(path_, what + ": KHR_materials_anisotropy anisotropyStrength " + number(strength) + " is outside [0, 1]");
+        m.anisotropyStrength = static_cast<float>(strength);
+        // Any finite angle: a turn more or less is the same direction.
+        m.anisotropyRotation =
+            static_cast<float>(extensionNumber(path_, what, *aniso, "KHR_materials_anisotropy", "anisotropyRotation", 0.0));
+        if (aniso->Has("anisotropyTexture"))
+            m.anisotropyTexture =
+                extensionTextureRef(what + " KHR_materials_anisotropy anisotropyTexture", aniso->Get("anisotropyTexture"), false);
+    }
 }
 
 namespace {
@@ -547,6 +559,15 @@ std::optional<JsonTextureInfo> clearcoatNormalTexture(const tinygltf::Material& 
     return extensionTexture(material, "KHR_materials_clearcoat", "clearcoatNormalTexture");
 }
 
+// An anisotropic lobe needs tangents as a normal map does (KHR_materials_anisotropy: the file's
+// TANGENT, else generated), where the lobe is there at all (a strength of 0 is the isotropic lobe).
+bool anisotropic(const tinygltf::Material& material) {
+    const auto it = material.extensions.find("KHR_materials_anisotropy");
+    if (it == material.extensions.end() || !it->second.IsObject() || !it->second.Has("anisotropyStrength")) return false;
+    const tinygltf::Value& strength = it->second.Get("anisotropyStrength");
+    return (strength.IsNumber() || strength.IsInt()) && strength.GetNumberAsDouble() > 0.0;
+}
+
 }  // namespace
 
 std::vector<MaterialTexture> texturesOf(const tinygltf::Material& material) {
@@ -568,22 +589,26 @@ std::vector<MaterialTexture> texturesOf(const tinygltf::Material& material) {
         addExtensionTexture(out, material, kSpecularGlossiness, "specularGlossinessTexture");
         addExtensionTexture(out, material, "KHR_materials_sheen", "sheenColorTexture");
         addExtensionTexture(out, material, "KHR_materials_sheen", "sheenRoughnessTexture");
+        addExtensionTexture(out, material, "KHR_materials_anisotropy", "anisotropyTexture");
     }
     return out;
 }
 
-bool hasNormalTexture(const tinygltf::Material& material) {
-    return material.normalTexture.index >= 0 ||
-           (material.extensions.count("KHR_materials_unlit") == 0 && clearcoatNormalTexture(material).has_value());
+bool needsTangents(const tinygltf::Material& material) {
+    if (material.normalTexture.index >= 0) return true;
+    if (material.extensions.count("KHR_materials_unlit") != 0) return false;
+    return clearcoatNormalTexture(material).has_value() || anisotropic(material);
 }
 
-int normalTextureTexCoord(const tinygltf::Material& material) {
+int tangentTexCoord(const tinygltf::Material& material) {
     if (material.normalTexture.index >= 0)
         return effectiveTexCoord(material.normalTexture.texCoord, material.normalTexture.extensions) == 1.0 ? 1 : 0;
+    if (!needsTangents(material)) return 0;
     // The coat's map alone: the tangents follow its UV set (glTF asks both maps to share one).
-    if (!hasNormalTexture(material)) return 0;
-    const JsonTextureInfo info = *clearcoatNormalTexture(material);
-    return effectiveTexCoord(info.texCoord, info.extensions) == 1.0 ? 1 : 0;
+    std::optional<JsonTextureInfo> info = clearcoatNormalTexture(material);
+    // Else the anisotropy's map's (the extension asks it to share the normal map's), else TEXCOORD_0.
+    if (!info) info = extensionTexture(material, "KHR_materials_anisotropy", "anisotropyTexture");
+    return info && effectiveTexCoord(info->texCoord, info->extensions) == 1.0 ? 1 : 0;
 }
 
 bool usesTexCoord1(const tinygltf::Material& material) {

@@ -71,7 +71,7 @@ private:
 
 // --- What a material asks of the geometry --------------------------------------------------------
 // The vertex streams a primitive needs follow from its material: TEXCOORD_1 where a texture reads
-// UV set 1, tangents where there is a normal texture.
+// UV set 1, tangents where there is a normal texture or an anisotropic lobe.
 
 // A texture a material reads, and the UV set it reads it through.
 struct MaterialTexture {
@@ -82,9 +82,12 @@ struct MaterialTexture {
 // The textureInfos of a material that name a texture (index >= 0).
 std::vector<MaterialTexture> texturesOf(const tinygltf::Material& material);
 
-bool hasNormalTexture(const tinygltf::Material& material);
-// The UV set the normal texture reads (0 without a normal texture).
-int normalTextureTexCoord(const tinygltf::Material& material);
+// Does the material read the tangent stream: a normal texture (its own or its coat's), or an
+// anisotropic lobe (KHR_materials_anisotropy)?
+bool needsTangents(const tinygltf::Material& material);
+// The UV set generated tangents follow: the normal texture's, else the coat's normal texture's, else
+// the anisotropy texture's (0 where the material needs no tangents or its maps read TEXCOORD_0).
+int tangentTexCoord(const tinygltf::Material& material);
 bool usesTexCoord1(const tinygltf::Material& material);
 
 // Throws "<path>: materials[i] 'name': normalTexture reads texCoord 2 ..." for a texture that

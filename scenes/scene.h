@@ -118,6 +118,12 @@ struct Material {
     TextureRef sheenColorTexture;              // sRGB; RGB multiplies the colour
     float sheenRoughnessFactor = 0.0f;         // [0, 1]
     TextureRef sheenRoughnessTexture;          // linear; A multiplies the roughness
+    // KHR_materials_anisotropy: the GGX lobe stretched along a direction in the tangent frame, its
+    // alpha there mix(alpha, 1, strength^2) (docs/lights-and-shading.md). It needs the tangent
+    // stream, which the loader makes where the file has none. A strength of 0 (glTF's default) is none.
+    float anisotropyStrength = 0.0f;           // [0, 1]
+    float anisotropyRotation = 0.0f;           // radians, counter-clockwise from the tangent
+    TextureRef anisotropyTexture;              // linear; RG the direction in [-1, 1], B multiplies the strength
 
     bool alphaTested() const { return alphaMode == AlphaMode::Mask; }
     // Does the material ask for anything but glTF's default dielectric Fresnel?
@@ -129,6 +135,8 @@ struct Material {
     bool clearcoatModelled() const { return !unlit && clearcoatFactor > 0.0f; }
     // Is there a sheen? (glTF: a sheenColorFactor of 0 disables the layer, whatever its textures.)
     bool sheenModelled() const { return !unlit && sheenColorFactor != glm::vec3(0.0f); }
+    // Is the lobe anisotropic? (A strength of 0 is the isotropic lobe, whatever the texture.)
+    bool anisotropyModelled() const { return !unlit && anisotropyStrength > 0.0f; }
     bool blended() const { return alphaMode == AlphaMode::Blend; }
 };
 

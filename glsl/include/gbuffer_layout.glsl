@@ -30,8 +30,14 @@
 //                  Where the scene has KHR_materials_sheen, a target 5 RGBA32F: the sheen colour rgb
 //                  and roughness, written and read only at pixels with a sheen (the base colour red's
 //                  sign bit says which; it is never negative), targets 2 to 4 with it.           96 B
-// The lossy layouts hold neither specular, unlit, clearcoat nor sheen (the renderer warns where a
-// scene has them).
+//                  Where the scene has KHR_materials_anisotropy, a target 6 RGBA32F: the direction T
+//                  times the strength a in world space, and B_a's component along N's part across
+//                  T (u = T x normalize(N x T); B_a = sqrt(1 - w^2) normalize(N x T) + w u, B_a
+//                  on N's side: a normal map tilts N under 90 degrees from Ng), written and read only
+//                  at pixels with a > 0 (the base colour green's sign bit says which), targets 2 to 5
+//                  with it.                                                                    112 B
+// The lossy layouts hold neither specular, unlit, clearcoat, sheen nor anisotropy (the renderer
+// warns where a scene has them).
 // The lossy layouts lose what a bright many-light sum makes visible on glossy, normal-mapped
 // content (docs/accuracy-and-stability.md#g-buffer-precision-on-glossy-normal-mapped-surfaces).
 #include "include/material_features.glsl"
@@ -45,13 +51,18 @@
 // Its target 3 (specular, unlit) where the scene has either; target 2 then exists too.
 // Its target 4 (clearcoat) where the scene has a coat; targets 2 and 3 then exist too.
 // Its target 5 (sheen) where the scene has a sheen; targets 2 to 4 then exist too.
+// Its target 6 (anisotropy) where the scene has an anisotropic lobe; targets 2 to 5 then exist too.
 #define ML_GBUFFER_EXACT_CLEARCOAT ML_HAS(ML_FEATURE_CLEARCOAT)
 #define ML_GBUFFER_EXACT_SHEEN ML_HAS(ML_FEATURE_SHEEN)
-#define ML_GBUFFER_EXACT_MATERIAL_EXTENSIONS \
-    (ML_HAS(ML_FEATURE_SPECULAR) || ML_HAS(ML_FEATURE_UNLIT) || ML_GBUFFER_EXACT_CLEARCOAT || ML_GBUFFER_EXACT_SHEEN)
+#define ML_GBUFFER_EXACT_ANISOTROPY ML_HAS(ML_FEATURE_ANISOTROPY)
+#define ML_GBUFFER_EXACT_MATERIAL_EXTENSIONS                                                                   \
+    (ML_HAS(ML_FEATURE_SPECULAR) || ML_HAS(ML_FEATURE_UNLIT) || ML_GBUFFER_EXACT_CLEARCOAT || ML_GBUFFER_EXACT_SHEEN || \
+     ML_GBUFFER_EXACT_ANISOTROPY)
 #define ML_GBUFFER_EXACT_EXTRAS (ML_HAS(ML_FEATURE_EMISSIVE) || ML_HAS(ML_FEATURE_OCCLUSION_MAP) || ML_GBUFFER_EXACT_MATERIAL_EXTENSIONS)
 
-#if ML_GBUFFER_FORMAT == ML_GBUFFER_EXACT && ML_GBUFFER_EXACT_SHEEN
+#if ML_GBUFFER_FORMAT == ML_GBUFFER_EXACT && ML_GBUFFER_EXACT_ANISOTROPY
+#define ML_GBUFFER_FLOAT_TARGETS 7
+#elif ML_GBUFFER_FORMAT == ML_GBUFFER_EXACT && ML_GBUFFER_EXACT_SHEEN
 #define ML_GBUFFER_FLOAT_TARGETS 6
 #elif ML_GBUFFER_FORMAT == ML_GBUFFER_EXACT && ML_GBUFFER_EXACT_CLEARCOAT
 #define ML_GBUFFER_FLOAT_TARGETS 5
@@ -75,7 +86,7 @@
 
 // One pixel of the G-buffer as its targets hold it: float targets, or the one packed target.
 struct GBufferTexel {
-    vec4 target[6];
+    vec4 target[7];
     uvec4 bits;  // the packed layout's one RGBA32UI texel
 };
 
@@ -118,7 +129,8 @@ vec3 unpackRgb9e5(uint v) {
 // The exact layout flags a pixel whose optional targets hold something in the sign bit of a value
 // that is never negative, so that the pixels without (most of them) neither write nor read them:
 // target 2 (emissive, occlusion) in its roughness's, target 3 (specular, unlit) in its metallic's,
-// target 4 (clearcoat) in its distance's, target 5 (sheen) in its base colour red's.
+// target 4 (clearcoat) in its distance's, target 5 (sheen) in its base colour red's, target 6
+// (anisotropy) in its base colour green's.
 const uint kGBufferSignFlag = 0x80000000u;
 float withoutSignFlag(float v) { return uintBitsToFloat(floatBitsToUint(v) & ~kGBufferSignFlag); }
 bool signFlagged(float v) { return (floatBitsToUint(v) & kGBufferSignFlag) != 0u; }
@@ -161,9 +173,28 @@ bool gbufferUsesTarget5(GBufferTexel t) {
 #endif
 }
 
+// ...its target 6, known from target 1.
+bool gbufferUsesTarget6(GBufferTexel t) {
+#if ML_GBUFFER_FORMAT == ML_GBUFFER_EXACT && ML_GBUFFER_EXACT_ANISOTROPY
+    return signFlagged(t.target[1].g);
+#else
+    return false;
+#endif
+}
+
+#if ML_GBUFFER_FORMAT == ML_GBUFFER_EXACT && ML_GBUFFER_EXACT_ANISOTROPY
+// The frame target 6 holds B_a in: e = normalize(N x T) and u = T x e, both across T (zero where
+// N is along T, which no normal map under 90 degrees from Ng makes).
+void anisotropyStorageFrame(vec3 n, vec3 t, out vec3 e, out vec3 u) {
+    vec3 c = cross(n, t);
+    e = c * inversesqrt(max(dot(c, c), 1e-30));
+    u = cross(t, e);
+}
+#endif
+
 GBufferTexel encodeGBuffer(SurfacePoint s) {
     GBufferTexel t;
-    t.target[0] = t.target[1] = t.target[2] = t.target[3] = t.target[4] = t.target[5] = vec4(0.0);
+    t.target[0] = t.target[1] = t.target[2] = t.target[3] = t.target[4] = t.target[5] = t.target[6] = vec4(0.0);
     t.bits = uvec4(0u);
 #if ML_GBUFFER_FORMAT == ML_GBUFFER_EXACT
     uint roughnessBits = floatBitsToUint(s.roughness);
@@ -180,6 +211,15 @@ GBufferTexel encodeGBuffer(SurfacePoint s) {
 #if ML_GBUFFER_EXACT_SHEEN
     t.target[5] = vec4(s.sheenColor, s.sheenRoughness);
     if (s.sheenColor != vec3(0.0)) redBits |= kGBufferSignFlag;
+#endif
+    uint greenBits = floatBitsToUint(s.baseColor.g);
+#if ML_GBUFFER_EXACT_ANISOTROPY
+    if (s.anisotropyStrength > 0.0) {
+        vec3 e, u;
+        anisotropyStorageFrame(s.normal, s.anisotropyT, e, u);
+        t.target[6] = vec4(s.anisotropyT * s.anisotropyStrength, dot(s.anisotropyB, u));
+        greenBits |= kGBufferSignFlag;
+    }
 #endif
     uint metallicBits = floatBitsToUint(s.metallic);
 #if ML_GBUFFER_EXACT_MATERIAL_EXTENSIONS
@@ -199,7 +239,7 @@ GBufferTexel encodeGBuffer(SurfacePoint s) {
     if (extended) metallicBits |= kGBufferSignFlag;
 #endif
     t.target[0] = vec4(uintBitsToFloat(distanceBits), octEncode(s.normal), uintBitsToFloat(roughnessBits));
-    t.target[1] = vec4(uintBitsToFloat(redBits), s.baseColor.gb, uintBitsToFloat(metallicBits));
+    t.target[1] = vec4(uintBitsToFloat(redBits), uintBitsToFloat(greenBits), s.baseColor.b, uintBitsToFloat(metallicBits));
 #elif ML_GBUFFER_FORMAT == ML_GBUFFER_STANDARD
     t.target[0] = vec4(s.normal, s.occlusion);
     t.target[1] = vec4(s.baseColor, s.metallic);
@@ -223,7 +263,7 @@ void decodeGBuffer(GBufferTexel t, inout SurfacePoint s) {
 #if ML_GBUFFER_FORMAT == ML_GBUFFER_EXACT
     s.normal = octDecode(t.target[0].yz);
     s.roughness = withoutSignFlag(t.target[0].w);
-    s.baseColor = vec3(withoutSignFlag(t.target[1].r), t.target[1].gb);
+    s.baseColor = vec3(withoutSignFlag(t.target[1].r), withoutSignFlag(t.target[1].g), t.target[1].b);
     s.metallic = withoutSignFlag(t.target[1].w);
     s.occlusion = 1.0;
     if (gbufferUsesTarget2(t)) {
@@ -253,6 +293,21 @@ void decodeGBuffer(GBufferTexel t, inout SurfacePoint s) {
     vec4 sheen = gbufferUsesTarget5(t) ? t.target[5] : vec4(0.0);
     s.sheenColor = sheen.rgb;
     s.sheenRoughness = sheen.a;
+#endif
+#if ML_GBUFFER_EXACT_ANISOTROPY
+    // Unflagged pixels have the isotropic lobe (T and B_a then never read).
+    s.anisotropyT = vec3(1.0, 0.0, 0.0);
+    s.anisotropyB = vec3(0.0, 1.0, 0.0);
+    s.anisotropyStrength = 0.0;
+    if (gbufferUsesTarget6(t)) {
+        vec3 scaled = t.target[6].xyz;
+        s.anisotropyStrength = length(scaled);
+        s.anisotropyT = scaled / s.anisotropyStrength;
+        vec3 e, u;
+        anisotropyStorageFrame(s.normal, s.anisotropyT, e, u);
+        float w = t.target[6].w;
+        s.anisotropyB = sqrt(max(1.0 - w * w, 0.0)) * e + w * u;
+    }
 #endif
 #elif ML_GBUFFER_FORMAT == ML_GBUFFER_STANDARD
     s.normal = normalize(t.target[0].xyz);  // 16-bit storage: restore unit length
@@ -297,6 +352,11 @@ void decodeGBuffer(GBufferTexel t, inout SurfacePoint s) {
 #if ML_HAS(ML_FEATURE_SHEEN)
     s.sheenColor = vec3(0.0);
     s.sheenRoughness = 0.0;
+#endif
+#if ML_HAS(ML_FEATURE_ANISOTROPY)
+    s.anisotropyT = vec3(1.0, 0.0, 0.0);
+    s.anisotropyB = vec3(0.0, 1.0, 0.0);
+    s.anisotropyStrength = 0.0;
 #endif
 #endif
     deriveShadingTerms(s);

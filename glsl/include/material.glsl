@@ -28,6 +28,8 @@ struct Material {
     vec4 clearcoat;
     // KHR_materials_sheen: rgb colour factor, a roughness factor.
     vec4 sheen;
+    // KHR_materials_anisotropy: cos and sin of the rotation, the strength, 0.
+    vec4 anisotropy;
 #endif
 };
 layout(std430, binding = ML_SSBO_MATERIALS) readonly buffer MaterialBuffer { Material materials[]; };
@@ -49,6 +51,9 @@ layout(binding = ML_TEX_CLEARCOAT_NORMAL) uniform sampler2D u_clearcoatNormalTex
 #if ML_HAS(ML_FEATURE_SHEEN_MAP)
 layout(binding = ML_TEX_SHEEN_COLOR) uniform sampler2D u_sheenColorTexture;          // sRGB; RGB
 layout(binding = ML_TEX_SHEEN_ROUGHNESS) uniform sampler2D u_sheenRoughnessTexture;  // linear; A
+#endif
+#if ML_HAS(ML_FEATURE_ANISOTROPY_MAP)
+layout(binding = ML_TEX_ANISOTROPY) uniform sampler2D u_anisotropyTexture;  // linear; RG direction, B strength
 #endif
 
 // Where a point samples its material: its UV sets and their screen-space gradients, which every
@@ -112,6 +117,41 @@ vec3 perturbNormal(vec3 n, vec4 tangent, vec3 texel, float scale) {
     return mapped2 > 1e-16 ? mapped * inversesqrt(mapped2) : n;
 }
 
+#if ML_HAS(ML_FEATURE_ANISOTROPY)
+// KHR_materials_anisotropy at a point of geometric (interpolated) normal ng: the direction T, the
+// tangent frame's (T, B as perturbNormal builds them from ng) combination by the map's RG in
+// [-1, 1], normalized ((1, 0) without a map, or where it reads (0, 0)), turned by the rotation; its
+// strength, the factor times the map's B; and B_a = normalize(ng x T). A degenerate tangent leaves
+// the lobe isotropic (strength 0), as does a strength of 0 (no T then: the rotation's record is 0
+// for materials without the extension).
+void anisotropyFromMaterial(Material m, vec3 ng, vec4 tangent, MaterialCoords c, inout SurfacePoint s) {
+    vec2 direction = vec2(1.0, 0.0);
+    float strength = m.anisotropy.z;
+#if ML_HAS(ML_FEATURE_ANISOTROPY_MAP)
+    if (hasTexture(m, ML_SLOT_ANISOTROPY)) {
+        vec3 texel = sampleMaterialTexture(u_anisotropyTexture, m, ML_SLOT_ANISOTROPY, c).rgb;
+        vec2 mapped = texel.xy * 2.0 - 1.0;
+        float mapped2 = dot(mapped, mapped);
+        if (mapped2 > 1e-16) direction = mapped * inversesqrt(mapped2);
+        strength *= texel.z;
+    }
+#endif
+    s.anisotropyT = vec3(1.0, 0.0, 0.0);
+    s.anisotropyB = vec3(0.0, 1.0, 0.0);
+    s.anisotropyStrength = 0.0;
+    vec3 t = tangent.xyz - ng * dot(ng, tangent.xyz);
+    float length2 = dot(t, t);
+    // No lobe (the scene's other materials, a map's B of 0), or no frame to stretch it in.
+    if (!(strength > 0.0) || !(length2 > 1e-16)) return;
+    direction = mat2(m.anisotropy.x, m.anisotropy.y, -m.anisotropy.y, m.anisotropy.x) * direction;
+    t *= inversesqrt(length2);
+    vec3 b = cross(ng, t) * (tangent.w < 0.0 ? -1.0 : 1.0);
+    s.anisotropyT = normalize(t * direction.x + b * direction.y);
+    s.anisotropyB = normalize(cross(ng, s.anisotropyT));
+    s.anisotropyStrength = clamp(strength, 0.0, 1.0);
+}
+#endif
+
 // The shading inputs at a point of material m whose base colour (materialBaseColor) is known.
 SurfacePoint surfaceFromMaterial(Material m, vec3 worldPos, vec3 worldNormal, vec4 worldTangent, vec4 base, MaterialCoords c) {
     SurfacePoint s;
@@ -131,6 +171,9 @@ SurfacePoint surfaceFromMaterial(Material m, vec3 worldPos, vec3 worldNormal, ve
         s.clearcoatNormal = perturbNormal(s.normal, worldTangent,
                                           sampleMaterialTexture(u_clearcoatNormalTexture, m, ML_SLOT_CLEARCOAT_NORMAL, c).xyz, m.clearcoat.z);
 #endif
+#endif
+#if ML_HAS(ML_FEATURE_ANISOTROPY)
+    anisotropyFromMaterial(m, s.normal, worldTangent, c, s);  // from the normal before its map
 #endif
 #if ML_HAS(ML_FEATURE_NORMAL_MAP)
     if (hasTexture(m, ML_SLOT_NORMAL))

@@ -54,6 +54,16 @@
 //       ambient occlusion ((diffuse + f0) (1 - max(c_s) E(N.V)) + c_s E(N.V)) + emissive.
 //     Under Blinn-Phong the lobe is scaled by pi (that model's f is pi times a physical BRDF).
 //     --specular off leaves the sheen out, lobe and scaling both.
+//   KHR_materials_anisotropy: GGX's D and Vis stretched along a unit direction T in the surface
+//     (the tangent frame's T and B turned by anisotropyRotation, after the map's RG direction) of
+//     strength a (anisotropyStrength x the map's B), with B_a = normalize(Ng x T), Ng the
+//     interpolated normal before any normal map (the specification's normal_geometric):
+//       alpha_t = mix(alpha, 1, a^2),  alpha_b = alpha,
+//       D   = 1 / (pi alpha_t alpha_b ((T.H / alpha_t)^2 + (B_a.H / alpha_b)^2 + (N.H)^2)^2),
+//       Vis = min(0.5 / (N.L |(alpha_t T.V, alpha_b B_a.V, N.V)| + N.V |(alpha_t T.L, alpha_b B_a.L, N.L)|), 1)
+//     (the specification's and the Sample Viewer's height-correlated anisotropic Smith, clamped as
+//     they clamp it); F and the diffuse as above. Where a is 0 the isotropic D Vis above, to the
+//     bit. Under Blinn-Phong the lobe stays isotropic (the extension defines GGX's).
 
 #include "include/material_features.glsl"
 
@@ -142,6 +152,11 @@ struct SurfacePoint {
     vec3 sheenColor;       // KHR_materials_sheen: c_s, linear (0: no sheen)
     float sheenRoughness;  // r_s
 #endif
+#if ML_HAS(ML_FEATURE_ANISOTROPY)
+    vec3 anisotropyT;          // KHR_materials_anisotropy: T, world space, unit length
+    float anisotropyStrength;  // a in [0, 1] (0: the isotropic lobe)
+    vec3 anisotropyB;          // B_a = normalize(Ng x T)
+#endif
     // Derived by deriveShadingTerms: what the light loop reads, and the unlit term, worked out
     // before the loop so that the material's inputs need not stay in registers through it.
     vec3 diffuse;
@@ -163,6 +178,9 @@ struct SurfacePoint {
     float sheenAlpha;          // alpha_s
     float sheenAlbedoOffset;   // E's term in alpha_s alone: 1 / (4.16526551 + exp(...))
     float sheenMax;            // max(c_s)
+#endif
+#if ML_HAS(ML_FEATURE_ANISOTROPY)
+    float anisotropyAlphaT;    // GGX: alpha_t = mix(alpha, 1, a^2)
 #endif
 };
 
@@ -206,6 +224,9 @@ void deriveShadingTerms(inout SurfacePoint s) {
     s.sheenAlbedoOffset = 1.0 / (4.16526551 + exp(6.33516894 - 7.97291361 * sheenRoughness));
     s.sheenMax = max(s.sheenColor.r, max(s.sheenColor.g, s.sheenColor.b));
 #endif
+#if ML_HAS(ML_FEATURE_ANISOTROPY)
+    s.anisotropyAlphaT = mix(s.alpha, 1.0, s.anisotropyStrength * s.anisotropyStrength);
+#endif
 }
 
 // glTF's angular attenuation: linear in the cosine between the outer and inner cones, squared.
@@ -230,6 +251,21 @@ float ggxDistributionVisibility(float nDotH, vec3 nCrossH, float nDotL, float nD
     return (0.5 / kPi) * a2 / (dDenominator * dDenominator * visibilityDenominator);
 }
 
+#if ML_HAS(ML_FEATURE_ANISOTROPY)
+// KHR_materials_anisotropy's D * Vis (the formulas above) for unit l, v, h.
+float anisotropicGgxDistributionVisibility(SurfacePoint s, vec3 viewDir, vec3 l, vec3 h, float nDotH, float nDotL, float nDotV) {
+    float at = s.anisotropyAlphaT, ab = s.alpha;
+    vec3 t = s.anisotropyT, b = s.anisotropyB;
+    float a2 = at * ab;
+    vec3 f = vec3(ab * dot(t, h), at * dot(b, h), a2 * nDotH);
+    float w2 = a2 / dot(f, f);
+    float distribution = a2 * w2 * w2 * (1.0 / kPi);
+    float ggxV = nDotL * length(vec3(at * dot(t, viewDir), ab * dot(b, viewDir), nDotV));
+    float ggxL = nDotV * length(vec3(at * dot(t, l), ab * dot(b, l), nDotL));
+    return distribution * min(0.5 / (ggxV + ggxL), 1.0);
+}
+#endif
+
 vec3 ggxBrdf(SurfacePoint s, vec3 viewDir, vec3 l, float nDotL) {
     vec3 h = normalize(l + viewDir);
     float nDotV = abs(dot(s.normal, viewDir));
@@ -246,7 +282,13 @@ vec3 ggxBrdf(SurfacePoint s, vec3 viewDir, vec3 l, float nDotL) {
 #else
     vec3 fresnel = s.f0 + (1.0 - s.f0) * q5;
 #endif
+#if ML_HAS(ML_FEATURE_ANISOTROPY)
+    float distributionVisibility = s.anisotropyStrength > 0.0
+                                       ? anisotropicGgxDistributionVisibility(s, viewDir, l, h, nDotH, nDotL, nDotV)
+                                       : ggxDistributionVisibility(nDotH, nCrossH, nDotL, nDotV, a2);
+#else
     float distributionVisibility = ggxDistributionVisibility(nDotH, nCrossH, nDotL, nDotV, a2);
+#endif
     // (1 - F) diffuse / pi + F D Vis, as one multiply-add a channel.
 #if ML_HAS(ML_FEATURE_SPECULAR)
     // (1 - Fd) diffuse / pi + F D Vis: the last term is an exact zero where Fd is F.

@@ -21,6 +21,21 @@ float ggxDistributionVisibility(const glm::vec3& n, const glm::vec3& v, const gl
     return (0.5f / kPi) * a2 / (dDenominator * dDenominator * visibilityDenominator);
 }
 
+// KHR_materials_anisotropy's D * Vis (glsl/include/shading.glsl has the formulas).
+float anisotropicGgxDistributionVisibility(const ShadingTerms& t, const glm::vec3& n, const glm::vec3& v, const glm::vec3& l) {
+    const glm::vec3 h = glm::normalize(l + v);
+    const float nDotL = glm::dot(n, l);
+    const float nDotV = std::abs(glm::dot(n, v));
+    const float nDotH = std::max(glm::dot(n, h), 0.0f);
+    const float at = t.alphaT, ab = t.alpha, a2 = at * ab;
+    const glm::vec3 f(ab * glm::dot(t.anisotropyT, h), at * glm::dot(t.anisotropyB, h), a2 * nDotH);
+    const float w2 = a2 / glm::dot(f, f);
+    const float distribution = a2 * w2 * w2 * (1.0f / kPi);
+    const float ggxV = nDotL * glm::length(glm::vec3(at * glm::dot(t.anisotropyT, v), ab * glm::dot(t.anisotropyB, v), nDotV));
+    const float ggxL = nDotV * glm::length(glm::vec3(at * glm::dot(t.anisotropyT, l), ab * glm::dot(t.anisotropyB, l), nDotL));
+    return distribution * std::min(0.5f / (ggxV + ggxL), 1.0f);
+}
+
 float blinnPhongShininess(float alpha) { return std::clamp(2.0f / std::max(alpha * alpha, 1e-6f) - 2.0f, 1.0f, 8192.0f); }
 
 }  // namespace
@@ -75,9 +90,27 @@ ShadingTerms shadingTerms(const SurfaceSample& s) {
     t.f90 = s.specularWeight + m * (1.0f - s.specularWeight);
     t.f0Diffuse = glm::mix(glm::vec3(std::max({dielectricF0.r, dielectricF0.g, dielectricF0.b})), s.baseColor, m);
     t.specular = t.f0 * ((t.shininess + 8.0f) / 8.0f);
+    t.anisotropyStrength = std::clamp(s.anisotropyStrength, 0.0f, 1.0f);
+    t.alphaT = t.alpha + (1.0f - t.alpha) * (t.anisotropyStrength * t.anisotropyStrength);
+    t.anisotropyT = s.anisotropyT;
+    t.anisotropyB = s.anisotropyB;
     return t;
 }
 
+bool anisotropyDirections(const glm::vec3& ng, const glm::vec4& tangent, glm::vec2 mapDirection, float rotation, glm::vec3& t,
+                          glm::vec3& b) {
+    glm::vec2 direction(1.0f, 0.0f);
+    if (glm::dot(mapDirection, mapDirection) > 1e-16f) direction = glm::normalize(mapDirection);
+    const float c = std::cos(rotation), s = std::sin(rotation);
+    direction = glm::vec2(c * direction.x - s * direction.y, s * direction.x + c * direction.y);
+    glm::vec3 frameT = glm::vec3(tangent) - ng * glm::dot(ng, glm::vec3(tangent));
+    if (!(glm::dot(frameT, frameT) > 1e-16f)) return false;
+    frameT = glm::normalize(frameT);
+    const glm::vec3 frameB = glm::cross(ng, frameT) * (tangent.w < 0.0f ? -1.0f : 1.0f);
+    t = glm::normalize(frameT * direction.x + frameB * direction.y);
+    b = glm::normalize(glm::cross(ng, t));
+    return true;
+}
 
 glm::vec3 ggxBrdf(const ShadingTerms& t, const glm::vec3& n, const glm::vec3& v, const glm::vec3& l) {
     const glm::vec3 h = glm::normalize(l + v);
@@ -85,7 +118,8 @@ glm::vec3 ggxBrdf(const ShadingTerms& t, const glm::vec3& n, const glm::vec3& v,
     const float q5 = std::pow(1.0f - vDotH, 5.0f);
     const glm::vec3 fresnel = t.f0 + (t.f90 - t.f0) * q5;
     const glm::vec3 diffuseFresnel = t.f0Diffuse + (t.f90 - t.f0Diffuse) * q5;
-    const float distributionVisibility = ggxDistributionVisibility(n, v, l, t.alpha * t.alpha);
+    const float distributionVisibility = t.anisotropyStrength > 0.0f ? anisotropicGgxDistributionVisibility(t, n, v, l)
+                                                                      : ggxDistributionVisibility(n, v, l, t.alpha * t.alpha);
     const glm::vec3 diffuseOverPi = t.diffuse * (1.0f / kPi);
     return diffuseOverPi + fresnel * (distributionVisibility - diffuseOverPi) + (fresnel - diffuseFresnel) * diffuseOverPi;
 }

@@ -44,6 +44,11 @@ struct SurfaceSample {
     // KHR_materials_sheen: the sheen's linear colour (0: none) and roughness.
     glm::vec3 sheenColor{0.0f};
     float sheenRoughness = 0.0f;
+    // KHR_materials_anisotropy: the strength (0: the isotropic lobe), the unit direction T and
+    // B_a = normalize(Ng x T) (anisotropyDirections).
+    float anisotropyStrength = 0.0f;
+    glm::vec3 anisotropyT{1.0f, 0.0f, 0.0f};
+    glm::vec3 anisotropyB{0.0f, 1.0f, 0.0f};
 };
 
 // The metallic-roughness material's terms, shared by every method.
@@ -55,6 +60,11 @@ struct ShadingTerms {
     float shininess;     // Blinn-Phong: 2 / alpha^2 - 2, alpha = roughness^2, clamped to [1, 8192]
     float f90 = 1.0f;              // mix(specularWeight, 1, metallic)
     glm::vec3 f0Diffuse{0.04f};    // mix(specularWeight max(specularF0), baseColor, metallic): the diffuse's Fresnel
+    // KHR_materials_anisotropy: the strength (0: isotropic), alpha_t = mix(alpha, 1, strength^2), T, B_a.
+    float anisotropyStrength = 0.0f;
+    float alphaT = 0.0f;
+    glm::vec3 anisotropyT{1.0f, 0.0f, 0.0f};
+    glm::vec3 anisotropyB{0.0f, 1.0f, 0.0f};
 };
 ShadingTerms shadingTerms(const glm::vec3& baseColor, float metallic, float roughness);
 // The same with KHR_materials_ior / KHR_materials_specular (glsl/include/shading.glsl has the formulas).
@@ -64,6 +74,14 @@ ShadingTerms shadingTerms(const SurfaceSample& s);
 // (1 - Fd) diffuse / pi + F D Vis, Vis the height-correlated Smith term, Fd = F but where
 // KHR_materials_specular colours F0 (glsl/include/shading.glsl has the formulas).
 glm::vec3 ggxBrdf(const ShadingTerms& t, const glm::vec3& n, const glm::vec3& v, const glm::vec3& l);
+
+// KHR_materials_anisotropy's directions at a point of geometric normal ng (unit) and tangent
+// (xyz, w the bitangent's sign), as glsl/include/material.glsl makes them: the map's direction
+// (`mapDirection`, RG in [-1, 1]; (1, 0) without a map) normalized, turned by `rotation` radians
+// counter-clockwise in the tangent frame, T = normalize(t x + b y) and B_a = normalize(ng x T).
+// False (and nothing set) where the tangent lies along ng.
+bool anisotropyDirections(const glm::vec3& ng, const glm::vec4& tangent, glm::vec2 mapDirection, float rotation, glm::vec3& t,
+                          glm::vec3& b);
 
 // KHR_materials_clearcoat's layer weight k = clearcoat (0.04 + 0.96 (1 - |V.Nc|)^5) and its lobe
 // (GGX's D Vis at the coat's alpha and normal, no Fresnel) for unit v and l with Nc.L > 0.

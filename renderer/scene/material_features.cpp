@@ -47,6 +47,12 @@ std::uint32_t materialFeatures(const Scene& scene) {
             f |= ML_FEATURE_SHEEN;
             if (uses(m.sheenColorTexture) | uses(m.sheenRoughnessTexture)) f |= ML_FEATURE_SHEEN_MAP;
         }
+        // The anisotropic lobe reads the tangent stream, as a normal map does; a scene without one
+        // (which the loader always makes for it) shades the lobe isotropic, and prepareFrame says so.
+        if (m.anisotropyModelled() && !scene.tangents.empty()) {
+            f |= ML_FEATURE_ANISOTROPY | ML_FEATURE_NORMAL_MAP;
+            if (uses(m.anisotropyTexture)) f |= ML_FEATURE_ANISOTROPY_MAP;
+        }
         if (m.alphaTested()) f |= ML_FEATURE_ALPHA_TEST;
         if (m.blended()) f |= ML_FEATURE_BLEND;
     }
@@ -77,10 +83,16 @@ std::string describeMaterialFeatures(std::uint32_t features) {
         {ML_FEATURE_CLEARCOAT_MAP, "clearcoat maps"},
         {ML_FEATURE_SHEEN, "sheen"},
         {ML_FEATURE_SHEEN_MAP, "sheen maps"},
+        {ML_FEATURE_ANISOTROPY, "anisotropy"},
+        {ML_FEATURE_ANISOTROPY_MAP, "anisotropy maps"},
     };
     std::string text;
-    for (const auto& [bit, name] : kNames)
-        if (features & bit) text += std::string(text.empty() ? "" : ", ") + name;
+    for (const auto& [bit, name] : kNames) {
+        if (!(features & bit)) continue;
+        // An anisotropic lobe switches the tangent stream on as a normal map does (ML_FEATURE_NORMAL_MAP).
+        const bool tangentsOnly = bit == ML_FEATURE_NORMAL_MAP && (features & ML_FEATURE_ANISOTROPY);
+        text += std::string(text.empty() ? "" : ", ") + (tangentsOnly ? "tangents (normal maps or anisotropy)" : name);
+    }
     return text.empty() ? "none" : text;
 }
 

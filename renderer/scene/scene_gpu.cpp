@@ -1,6 +1,7 @@
 #include "renderer/scene/scene_gpu.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <cstring>
 #include <limits>
@@ -23,13 +24,15 @@ static_assert(sizeof(DrawElementsIndirectCommand) == 20, "GL's indirect command 
 constexpr GLuint kSlotUnits[ML_TEXTURE_SLOTS] = {ML_TEX_BASE_COLOR,       ML_TEX_METALLIC_ROUGHNESS,  ML_TEX_NORMAL,
                                                  ML_TEX_OCCLUSION,        ML_TEX_EMISSIVE,            ML_TEX_SPECULAR,
                                                  ML_TEX_SPECULAR_COLOR,   ML_TEX_CLEARCOAT,           ML_TEX_CLEARCOAT_ROUGHNESS,
-                                                 ML_TEX_CLEARCOAT_NORMAL, ML_TEX_SHEEN_COLOR,         ML_TEX_SHEEN_ROUGHNESS};
+                                                 ML_TEX_CLEARCOAT_NORMAL, ML_TEX_SHEEN_COLOR,         ML_TEX_SHEEN_ROUGHNESS,
+                                                 ML_TEX_ANISOTROPY};
 
 // Does the scene's material record hold every slot and the extensions' vec4s (bindings.h)?
 bool extendedRecord(std::uint32_t features) { return (features & ML_FEATURES_EXTENDED_RECORD) != 0; }
 
 // The slots a scene's material records and texture bindings hold: the extensions' only where some
-// material models one (KHR_materials_specular or ior, KHR_materials_clearcoat, KHR_materials_sheen).
+// material models one (KHR_materials_specular or ior, KHR_materials_clearcoat, KHR_materials_sheen,
+// KHR_materials_anisotropy).
 int materialSlots(std::uint32_t features) { return extendedRecord(features) ? ML_TEXTURE_SLOTS : ML_CORE_TEXTURE_SLOTS; }
 
 // The texture slots whose shader path this scene compiles in (a slot whose feature is off is never sampled).
@@ -53,6 +56,7 @@ std::array<const TextureRef*, ML_TEXTURE_SLOTS> sampledSlots(const Material& m, 
         slots[ML_SLOT_SHEEN_COLOR] = &m.sheenColorTexture;
         slots[ML_SLOT_SHEEN_ROUGHNESS] = &m.sheenRoughnessTexture;
     }
+    if ((features & ML_FEATURE_ANISOTROPY_MAP) && m.anisotropyModelled()) slots[ML_SLOT_ANISOTROPY] = &m.anisotropyTexture;
     return slots;
 }
 
@@ -90,8 +94,8 @@ SceneGpu::SceneGpu(const Scene& scene, TriangleOrder order) : features_(ml::mate
     const auto sized = [&](std::size_t n) { return n == scene.vertices.size(); };
     if ((features_ & ML_FEATURE_NORMAL_MAP) && sized(scene.tangents.size()))
         tangents_ = gl::Buffer::fromSpan<glm::vec4>("scene.tangents", scene.tangents, 0);
-    else
-        features_ &= ~std::uint32_t(ML_FEATURE_NORMAL_MAP);
+    else  // no tangents: no normal maps, and the anisotropic lobe isotropic
+        features_ &= ~std::uint32_t(ML_FEATURE_NORMAL_MAP | ML_FEATURE_ANISOTROPY | ML_FEATURE_ANISOTROPY_MAP);
     if ((features_ & ML_FEATURE_UV1) && sized(scene.uv1.size())) uv1_ = gl::Buffer::fromSpan<glm::vec2>("scene.uv1", scene.uv1, 0);
     else features_ &= ~std::uint32_t(ML_FEATURE_UV1);
     if ((features_ & ML_FEATURE_VERTEX_COLOR) && sized(scene.colors.size()))
@@ -127,6 +131,8 @@ SceneGpu::SceneGpu(const Scene& scene, TriangleOrder order) : features_(ml::mate
         g.specular = glm::vec4(dielectricF0(m.ior) * m.specularColorFactor, m.specularFactor);
         if (m.clearcoatModelled()) g.clearcoat = glm::vec4(m.clearcoatFactor, m.clearcoatRoughnessFactor, m.clearcoatNormalScale, 0.0f);
         if (m.sheenModelled()) g.sheen = glm::vec4(m.sheenColorFactor, m.sheenRoughnessFactor);
+        if (m.anisotropyModelled())
+            g.anisotropy = glm::vec4(std::cos(m.anisotropyRotation), std::sin(m.anisotropyRotation), m.anisotropyStrength, 0.0f);
         if (m.unlit) g.info.w |= ML_MATERIAL_UNLIT;
         TextureSet set{};
         bool textured = false;

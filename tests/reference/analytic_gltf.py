@@ -102,6 +102,10 @@ def write_gltf(scene, path, unused_before=None):
         index_type, component = (np.uint16, 5123) if len(positions) < 65536 else (np.uint32, 5125)
         attributes = {"POSITION": buf.add(positions.astype(np.float32), 5126, "VEC3", 34962, minmax=True),
                       "NORMAL": buf.add(normals.astype(np.float32), 5126, "VEC3", 34962)}
+        if isinstance(surface, ref.Rect) and "KHR_materials_anisotropy" in m.extensions:
+            # The anisotropic lobe's frame: the rectangle's t1, bitangent n x t1 = t2's direction (w 1).
+            tangent = np.append(ref.normalize(np.asarray(surface.t1, float)), 1.0)
+            attributes["TANGENT"] = buf.add(np.tile(tangent, (len(positions), 1)).astype(np.float32), 5126, "VEC4", 34962)
         index_accessor = buf.add(indices.astype(index_type), component, "SCALAR", 34963)
         meshes.append({"primitives": [{"attributes": attributes, "indices": index_accessor,
                                        "material": material_index[key]}]})

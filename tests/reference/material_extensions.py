@@ -26,10 +26,46 @@ with E the sheen BRDF's directional albedo, here integrated over the hemisphere 
 not fitted; clearcoat layers over sheen_material. Renderer conventions: sheenRoughness floored at
 0.07 (the specification's inv_r is infinite at 0), and the ambient fill dimmed by E(V.N) alone and
 reflected off the sheen (c E(V.N)).
+KHR_materials_anisotropy (its "Implementation" section), strength a, rotation r, the mesh's tangent
+t (w its bitangent sign, b = w Ng x t) and the map's direction d (RG in [-1, 1]; (1, 0) without):
+  direction      = [cos r  -sin r; sin r  cos r] normalize(d)
+  anisotropicT   = normalize(TBN (direction, 0)),   anisotropicB = normalize(Ng x anisotropicT)
+  alpha_t = mix(alpha, 1, a^2),  alpha_b = alpha
+  D = 1 / (pi alpha_t alpha_b ((T.H / alpha_t)^2 + (B.H / alpha_b)^2 + (N.H)^2)^2)
+  V = clamp(1 / (2 (N.L sqrt(alpha_t^2 (T.V)^2 + alpha_b^2 (B.V)^2 + (N.V)^2)
+                   + N.V sqrt(alpha_t^2 (T.L)^2 + alpha_b^2 (B.L)^2 + (N.L)^2))), 0, 1)
+in place of appendix B's D and Vis. Renderer convention: alpha floored at cpu_reference.MIN_ALPHA.
 """
 import numpy as np
 
 from cpu_reference import dot, ggx_distribution_visibility, normalize, schlick_weight
+
+
+def anisotropy_directions(ng, tangent, rotation, map_direction):
+    """(anisotropicT, anisotropicB) (N, 3) each, from the geometric normal ng, tangents (N, 4), the
+    rotation (N,) and the map's direction (N, 2), as the specification builds them."""
+    d = map_direction / np.linalg.norm(map_direction, axis=-1, keepdims=True)
+    c, s = np.cos(rotation), np.sin(rotation)
+    direction = np.stack([c * d[:, 0] - s * d[:, 1], s * d[:, 0] + c * d[:, 1]], axis=-1)
+    t = tangent[:, :3]
+    b = np.cross(ng, t) * tangent[:, 3:4]
+    anisotropic_t = normalize(t * direction[:, :1] + b * direction[:, 1:])
+    return anisotropic_t, normalize(np.cross(ng, anisotropic_t))
+
+
+def anisotropic_distribution_visibility(n, v, l, roughness, strength, t, b):
+    """The specification's anisotropic D x V (N,), N.L clamped at 0."""
+    from cpu_reference import MIN_ALPHA
+    nl = np.maximum(dot(n, l), 0.0)
+    nv = np.abs(dot(n, v))
+    h = normalize(l + v)
+    alpha_b = np.maximum(roughness * roughness, MIN_ALPHA)
+    alpha_t = alpha_b + (1.0 - alpha_b) * strength * strength
+    q = (dot(t, h) / alpha_t) ** 2 + (dot(b, h) / alpha_b) ** 2 + dot(n, h) ** 2
+    d = 1.0 / (np.pi * alpha_t * alpha_b * q * q)
+    g_v = nl * np.sqrt((alpha_t * dot(t, v)) ** 2 + (alpha_b * dot(b, v)) ** 2 + nv * nv)
+    g_l = nv * np.sqrt((alpha_t * dot(t, l)) ** 2 + (alpha_b * dot(b, l)) ** 2 + nl * nl)
+    return d * np.clip(1.0 / (2.0 * (g_v + g_l)), 0.0, 1.0)
 
 
 def dielectric_f0(ior, specular_color):
@@ -37,7 +73,7 @@ def dielectric_f0(ior, specular_color):
     return np.minimum(((ior - 1.0) / (ior + 1.0))[:, None] ** 2 * specular_color, 1.0)
 
 
-def brdf_times_cos(n, v, l, base, metallic, roughness, ior, specular, specular_color, convention=True):
+def brdf_times_cos(n, v, l, base, metallic, roughness, ior, specular, specular_color, convention=True, anisotropy=None):
     """The BRDF above times N.L (zero where N.L <= 0) for unit n, v, l (N, 3) and per-point factors.
 
     Renderer convention (`convention`, as glTF's appendix B implementation does): the diffuse is
@@ -51,7 +87,11 @@ def brdf_times_cos(n, v, l, base, metallic, roughness, ior, specular, specular_c
     f_dielectric = dielectric_f0(ior, specular_color)
     f_dielectric = f_dielectric + (1.0 - f_dielectric) * q5                 # F_schlick(dielectric_f0, 1)
     f_metal = base + (1.0 - base) * q5                                     # F_schlick(base, 1)
-    dv = ggx_distribution_visibility(n, v, l, roughness)[:, None]
+    dv = ggx_distribution_visibility(n, v, l, roughness)
+    if anisotropy is not None:                                             # (strength, T, B): KHR_materials_anisotropy
+        strength, t, b = anisotropy
+        dv = np.where(strength > 0.0, anisotropic_distribution_visibility(n, v, l, roughness, strength, t, b), dv)
+    dv = dv[:, None]
     diffuse_fresnel = w * f_dielectric.max(axis=-1, keepdims=True)         # max_value(): one weight for all channels
     if convention:
         diffuse_fresnel = (1.0 - m) * diffuse_fresnel + m * f_metal
@@ -74,7 +114,8 @@ def clearcoat_share(v, clearcoat, clearcoat_normal):
 
 
 def radiance(n, v, sun_l, sun_color, ambient, base, metallic, roughness, ior, specular, specular_color, unlit,
-             clearcoat, clearcoat_roughness, clearcoat_normal, sheen_color, sheen_roughness, sheen_albedo=None):
+             clearcoat, clearcoat_roughness, clearcoat_normal, sheen_color, sheen_roughness, sheen_albedo=None,
+             anisotropy=None):
     """A point's linear radiance under one directional light (towards it: sun_l) and the ambient
     fill; an unlit material's is its base colour (KHR_materials_unlit). Under a coat, the ambient
     fill (a renderer convention) is layered as the emission is, and the coat reflects the fill
@@ -82,7 +123,7 @@ def radiance(n, v, sun_l, sun_color, ambient, base, metallic, roughness, ior, sp
     k = clearcoat_share(v, clearcoat, clearcoat_normal)
     coat = ggx_distribution_visibility(clearcoat_normal, v, sun_l, clearcoat_roughness) * np.maximum(dot(clearcoat_normal, sun_l), 0.0)
     fill = ambient_fill(ambient, base, metallic, ior, specular, specular_color)
-    material = brdf_times_cos(n, v, sun_l, base, metallic, roughness, ior, specular, specular_color)
+    material = brdf_times_cos(n, v, sun_l, base, metallic, roughness, ior, specular, specular_color, anisotropy=anisotropy)
     material, fill = sheen_layer(n, v, sun_l, material, fill, ambient, sheen_color, sheen_roughness,
                                  SHEEN_ALBEDO if sheen_albedo is None else sheen_albedo)
     lit = (1.0 - k) * (fill + np.asarray(sun_color) * material) + k * (ambient + np.asarray(sun_color) * coat[:, None])

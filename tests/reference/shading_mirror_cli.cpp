@@ -3,7 +3,8 @@
 // line on stdin, as glTF states the material (the ior to F0 conversion is the renderer's):
 //   eye(3) position(3) normal(3) base(3) metallic roughness ior specularFactor specularColor(3)
 //   unlit clearcoat clearcoatRoughness clearcoatNormal(3) sheenColor(3) sheenRoughness ambient
-//   sunDirection(3) sunColor(3)
+//   sunDirection(3) sunColor(3) anisotropyStrength anisotropyRotation tangent(4) geometricNormal(3)
+//   anisotropyMapDirection(2)
 // and one line "r g b" of shadeReference's linear radiance on stdout, in float's shortest exact form.
 #include <algorithm>
 #include <cstdio>
@@ -16,14 +17,22 @@ int main() {
     using namespace ml;
     glm::vec3 eye, base, specularColor, sunDirection, sunColor;
     SurfaceSample s;
-    float ior, specularFactor, ambient;
+    float ior, specularFactor, ambient, rotation;
+    glm::vec4 tangent;
+    glm::vec3 ng;
+    glm::vec2 mapDirection;
     int unlit;
     while (std::cin >> eye.x >> eye.y >> eye.z >> s.position.x >> s.position.y >> s.position.z >> s.normal.x >>
            s.normal.y >> s.normal.z >> base.r >> base.g >> base.b >> s.metallic >> s.roughness >> ior >>
            specularFactor >> specularColor.r >> specularColor.g >> specularColor.b >> unlit >> s.clearcoat >>
            s.clearcoatRoughness >> s.clearcoatNormal.x >> s.clearcoatNormal.y >> s.clearcoatNormal.z >> s.sheenColor.r >>
            s.sheenColor.g >> s.sheenColor.b >> s.sheenRoughness >> ambient >>
-           sunDirection.x >> sunDirection.y >> sunDirection.z >> sunColor.r >> sunColor.g >> sunColor.b) {
+           sunDirection.x >> sunDirection.y >> sunDirection.z >> sunColor.r >> sunColor.g >> sunColor.b >>
+           s.anisotropyStrength >> rotation >> tangent.x >> tangent.y >> tangent.z >> tangent.w >> ng.x >> ng.y >> ng.z >>
+           mapDirection.x >> mapDirection.y) {
+        // KHR_materials_anisotropy's directions as glsl/include/material.glsl makes them.
+        if (s.anisotropyStrength > 0.0f && !anisotropyDirections(ng, tangent, mapDirection, rotation, s.anisotropyT, s.anisotropyB))
+            s.anisotropyStrength = 0.0f;
         s.baseColor = base;
         s.specularF0 = glm::min(dielectricF0(ior) * specularColor, glm::vec3(1.0f));  // as glsl/include/material.glsl
         s.specularWeight = specularFactor;

@@ -234,6 +234,36 @@ TEST(GltfMaterials, SheenIsRead) {
     EXPECT_FALSE(s.materials.at(0).sheenModelled()) << "glTF's default sheenColorFactor is 0";
 }
 
+// KHR_materials_anisotropy loads its strength, rotation and map, warns about nothing, and gets the
+// tangents a file without TANGENT leaves out (generated, as for a normal map); a strength of 0 is
+// the isotropic lobe whatever else the extension holds, and asks for no tangents.
+TEST(GltfMaterials, AnisotropyIsReadAndGetsTangents) {
+    const fs::path dir = testDir();
+    Gltf g = withMaterial({{"extensions", {{"KHR_materials_anisotropy", {{"anisotropyStrength", 0.6}, {"anisotropyRotation", -7.5},
+                                                                         {"anisotropyTexture", {{"index", 0}}}}}}}});
+    g.doc["extensionsUsed"] = {"KHR_materials_anisotropy"};
+    std::vector<std::string> warnings;
+    Scene s = load(g.writeGltf(dir, "anisotropy"), warnings);
+    const Material& m = s.materials.at(0);
+    EXPECT_FLOAT_EQ(m.anisotropyStrength, 0.6f);
+    EXPECT_FLOAT_EQ(m.anisotropyRotation, -7.5f) << "any finite angle";
+    EXPECT_TRUE(m.anisotropyTexture.present());
+    EXPECT_FALSE(s.images.at(static_cast<std::size_t>(m.anisotropyTexture.image)).srgb) << "a direction: linear";
+    EXPECT_TRUE(m.anisotropyModelled());
+    EXPECT_TRUE(warnings.empty()) << warnings.at(0);
+    ASSERT_EQ(s.tangents.size(), s.vertices.size()) << "no TANGENT in the file: generated";
+    for (const glm::vec4& t : s.tangents) {
+        EXPECT_NEAR(glm::length(glm::vec3(t)), 1.0f, 1e-5f);
+        EXPECT_EQ(std::abs(t.w), 1.0f);
+    }
+
+    Gltf off = withMaterial({{"extensions", {{"KHR_materials_anisotropy", {{"anisotropyRotation", 0.5}, {"anisotropyTexture", {{"index", 0}}}}}}}});
+    warnings.clear();
+    s = load(off.writeGltf(dir, "no_anisotropy"), warnings);
+    EXPECT_FALSE(s.materials.at(0).anisotropyModelled()) << "glTF's default anisotropyStrength is 0";
+    EXPECT_TRUE(s.tangents.empty()) << "an isotropic lobe needs no tangents";
+}
+
 TEST(GltfMaterials, BadValuesAreNamedInOneLine) {
     const fs::path dir = testDir();
     const auto refused = [&](const char* name, const json& material, std::initializer_list<const char*> keywords,
@@ -284,6 +314,16 @@ TEST(GltfMaterials, BadValuesAreNamedInOneLine) {
             {"materials[0]", "sheenRoughnessTexture", "index 9"});
     refused("sheen_texture_info", {{"extensions", {{"KHR_materials_sheen", {{"sheenColorTexture", {{"texCoord", 0}}}}}}}},
             {"materials[0]", "sheenColorTexture", "not a textureInfo"});
+    const auto aniso = [](const json& fields) { return json{{"extensions", {{"KHR_materials_anisotropy", fields}}}}; };
+    refused("anisotropy_negative", aniso({{"anisotropyStrength", -0.2}}),
+            {"materials[0]", "KHR_materials_anisotropy", "anisotropyStrength -0.2", "outside [0, 1]"});
+    refused("anisotropy_above_one", aniso({{"anisotropyStrength", 1.5}}), {"materials[0]", "anisotropyStrength 1.5", "outside [0, 1]"});
+    refused("anisotropy_rotation", aniso({{"anisotropyStrength", 0.5}, {"anisotropyRotation", "left"}}),
+            {"materials[0]", "anisotropyRotation", "not a finite number"});
+    refused("anisotropy_texture", aniso({{"anisotropyStrength", 0.5}, {"anisotropyTexture", {{"index", 9}}}}),
+            {"materials[0]", "anisotropyTexture", "index 9"});
+    refused("anisotropy_texture_info", aniso({{"anisotropyStrength", 0.5}, {"anisotropyTexture", 2}}),
+            {"materials[0]", "anisotropyTexture", "not a textureInfo"});
     refused("min_filter", {{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}, {"samplers[0]", "minFilter 1234"},
             {{"minFilter", 1234}});
     refused("wrap", {{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}, {"samplers[0]", "wrapT 5"}, {{"wrapT", 5}});
