@@ -356,10 +356,10 @@ PreparedFrame prepareFrame(const FrameOptions& o, const Scene* loaded) {
         f.warnings.push_back("--gbuffer two-component has no room for emissive: the scene's emissive surfaces stay dark "
                              "(standard and packed store it)");
     if (gbufferMethod && f.settings.method.gbuffer != GBufferFormat::Exact &&
-        (materialFeatures(f.scene) & (ML_FEATURE_SPECULAR | ML_FEATURE_UNLIT | ML_FEATURE_CLEARCOAT | ML_FEATURE_SHEEN)))
+        (materialFeatures(f.scene) & (ML_FEATURE_SPECULAR | ML_FEATURE_UNLIT | ML_FEATURE_CLEARCOAT | ML_FEATURE_SHEEN | ML_FEATURE_IRIDESCENCE)))
         f.warnings.push_back(std::string("--gbuffer ") + gbufferFormatName(f.settings.method.gbuffer) +
-                             " has no room for KHR_materials_specular, ior, unlit, clearcoat or sheen: those surfaces are "
-                             "lit as glTF's default material (exact stores them)");
+                             " has no room for KHR_materials_specular, ior, unlit, clearcoat, sheen or iridescence: those "
+                             "surfaces are lit as glTF's default material (exact stores them)");
 
     if (isOrbitSpec(o.camera)) f.orbit = orbitAround(parseOrbitSpec(o.camera), f.scene, aspectOf(f.settings));
     Camera camera;

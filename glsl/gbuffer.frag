@@ -22,8 +22,11 @@ layout(location = 3) out vec4 o_target3;
 #if ML_GBUFFER_FLOAT_TARGETS >= 5
 layout(location = 4) out vec4 o_target4;
 #endif
-#if ML_GBUFFER_FLOAT_TARGETS == 6
+#if ML_GBUFFER_FLOAT_TARGETS >= 6
 layout(location = 5) out vec4 o_target5;
+#endif
+#if ML_GBUFFER_FLOAT_TARGETS == 8
+layout(location = 7) out vec4 o_target7;  // location 6: KHR_materials_anisotropy's, not written here
 #endif
 #endif
 
@@ -43,8 +46,11 @@ void main() {
 #if ML_GBUFFER_FLOAT_TARGETS >= 5
     o_target4 = t.target[4];
 #endif
-#if ML_GBUFFER_FLOAT_TARGETS == 6
+#if ML_GBUFFER_FLOAT_TARGETS >= 6
     o_target5 = t.target[5];
+#endif
+#if ML_GBUFFER_FLOAT_TARGETS == 8
+    o_target7 = t.target[7];
 #endif
 #endif
 }

@@ -31,8 +31,11 @@ layout(binding = ML_IMG_GBUFFER3, ML_GBUFFER_FLOAT_IMAGE) uniform writeonly imag
 #if ML_GBUFFER_FLOAT_TARGETS >= 5
 layout(binding = ML_IMG_GBUFFER4, ML_GBUFFER_FLOAT_IMAGE) uniform writeonly image2D u_gTarget4Out;
 #endif
-#if ML_GBUFFER_FLOAT_TARGETS == 6
+#if ML_GBUFFER_FLOAT_TARGETS >= 6
 layout(binding = ML_IMG_GBUFFER5, ML_GBUFFER_FLOAT_IMAGE) uniform writeonly image2D u_gTarget5Out;
+#endif
+#if ML_GBUFFER_FLOAT_TARGETS == 8
+layout(binding = ML_IMG_GBUFFER7, ML_GBUFFER_FLOAT_IMAGE) uniform writeonly image2D u_gTarget7Out;
 #endif
 #endif
 uniform int u_textureSet;
@@ -62,8 +65,11 @@ void storeGBuffer(ivec2 p, GBufferTexel t) {
 #if ML_GBUFFER_FLOAT_TARGETS >= 5
     if (gbufferUsesTarget4(t)) imageStore(u_gTarget4Out, p, t.target[4]);
 #endif
-#if ML_GBUFFER_FLOAT_TARGETS == 6
+#if ML_GBUFFER_FLOAT_TARGETS >= 6
     if (gbufferUsesTarget5(t)) imageStore(u_gTarget5Out, p, t.target[5]);
+#endif
+#if ML_GBUFFER_FLOAT_TARGETS == 8
+    if (gbufferUsesTarget7(t)) imageStore(u_gTarget7Out, p, t.target[7]);
 #endif
 #endif
 }

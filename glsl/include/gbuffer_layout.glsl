@@ -30,8 +30,13 @@
 //                  Where the scene has KHR_materials_sheen, a target 5 RGBA32F: the sheen colour rgb
 //                  and roughness, written and read only at pixels with a sheen (the base colour red's
 //                  sign bit says which; it is never negative), targets 2 to 4 with it.           96 B
-// The lossy layouts hold neither specular, unlit, clearcoat nor sheen (the renderer warns where a
-// scene has them).
+//                  Target 6 is KHR_materials_anisotropy's: where the scene has iridescence alone it
+//                  exists and is never written nor read.
+//                  Where the scene has KHR_materials_iridescence, a target 7 RGBA32F: the film's
+//                  strength, thickness (nm) and IOR, written and read only at pixels with a film
+//                  (the base colour blue's sign bit says which), targets 2 to 6 with it.         128 B
+// The lossy layouts hold neither specular, unlit, clearcoat, sheen nor iridescence (the renderer
+// warns where a scene has them).
 // The lossy layouts lose what a bright many-light sum makes visible on glossy, normal-mapped
 // content (docs/accuracy-and-stability.md#g-buffer-precision-on-glossy-normal-mapped-surfaces).
 #include "include/material_features.glsl"
@@ -45,13 +50,18 @@
 // Its target 3 (specular, unlit) where the scene has either; target 2 then exists too.
 // Its target 4 (clearcoat) where the scene has a coat; targets 2 and 3 then exist too.
 // Its target 5 (sheen) where the scene has a sheen; targets 2 to 4 then exist too.
+// Its target 7 (iridescence) where the scene has a film; targets 2 to 6 then exist too.
 #define ML_GBUFFER_EXACT_CLEARCOAT ML_HAS(ML_FEATURE_CLEARCOAT)
 #define ML_GBUFFER_EXACT_SHEEN ML_HAS(ML_FEATURE_SHEEN)
-#define ML_GBUFFER_EXACT_MATERIAL_EXTENSIONS \
-    (ML_HAS(ML_FEATURE_SPECULAR) || ML_HAS(ML_FEATURE_UNLIT) || ML_GBUFFER_EXACT_CLEARCOAT || ML_GBUFFER_EXACT_SHEEN)
+#define ML_GBUFFER_EXACT_IRIDESCENCE ML_HAS(ML_FEATURE_IRIDESCENCE)
+#define ML_GBUFFER_EXACT_MATERIAL_EXTENSIONS                                                                         \
+    (ML_HAS(ML_FEATURE_SPECULAR) || ML_HAS(ML_FEATURE_UNLIT) || ML_GBUFFER_EXACT_CLEARCOAT || ML_GBUFFER_EXACT_SHEEN || \
+     ML_GBUFFER_EXACT_IRIDESCENCE)
 #define ML_GBUFFER_EXACT_EXTRAS (ML_HAS(ML_FEATURE_EMISSIVE) || ML_HAS(ML_FEATURE_OCCLUSION_MAP) || ML_GBUFFER_EXACT_MATERIAL_EXTENSIONS)
 
-#if ML_GBUFFER_FORMAT == ML_GBUFFER_EXACT && ML_GBUFFER_EXACT_SHEEN
+#if ML_GBUFFER_FORMAT == ML_GBUFFER_EXACT && ML_GBUFFER_EXACT_IRIDESCENCE
+#define ML_GBUFFER_FLOAT_TARGETS 8
+#elif ML_GBUFFER_FORMAT == ML_GBUFFER_EXACT && ML_GBUFFER_EXACT_SHEEN
 #define ML_GBUFFER_FLOAT_TARGETS 6
 #elif ML_GBUFFER_FORMAT == ML_GBUFFER_EXACT && ML_GBUFFER_EXACT_CLEARCOAT
 #define ML_GBUFFER_FLOAT_TARGETS 5
@@ -75,7 +85,7 @@
 
 // One pixel of the G-buffer as its targets hold it: float targets, or the one packed target.
 struct GBufferTexel {
-    vec4 target[6];
+    vec4 target[8];
     uvec4 bits;  // the packed layout's one RGBA32UI texel
 };
 
@@ -118,7 +128,8 @@ vec3 unpackRgb9e5(uint v) {
 // The exact layout flags a pixel whose optional targets hold something in the sign bit of a value
 // that is never negative, so that the pixels without (most of them) neither write nor read them:
 // target 2 (emissive, occlusion) in its roughness's, target 3 (specular, unlit) in its metallic's,
-// target 4 (clearcoat) in its distance's, target 5 (sheen) in its base colour red's.
+// target 4 (clearcoat) in its distance's, target 5 (sheen) in its base colour red's, target 7
+// (iridescence) in its base colour blue's.
 const uint kGBufferSignFlag = 0x80000000u;
 float withoutSignFlag(float v) { return uintBitsToFloat(floatBitsToUint(v) & ~kGBufferSignFlag); }
 bool signFlagged(float v) { return (floatBitsToUint(v) & kGBufferSignFlag) != 0u; }
@@ -152,6 +163,15 @@ bool gbufferUsesTarget4(GBufferTexel t) {
 #endif
 }
 
+// ...its target 7, known from target 1.
+bool gbufferUsesTarget7(GBufferTexel t) {
+#if ML_GBUFFER_FORMAT == ML_GBUFFER_EXACT && ML_GBUFFER_EXACT_IRIDESCENCE
+    return signFlagged(t.target[1].b);
+#else
+    return false;
+#endif
+}
+
 // ...its target 5, known from target 1.
 bool gbufferUsesTarget5(GBufferTexel t) {
 #if ML_GBUFFER_FORMAT == ML_GBUFFER_EXACT && ML_GBUFFER_EXACT_SHEEN
@@ -163,7 +183,7 @@ bool gbufferUsesTarget5(GBufferTexel t) {
 
 GBufferTexel encodeGBuffer(SurfacePoint s) {
     GBufferTexel t;
-    t.target[0] = t.target[1] = t.target[2] = t.target[3] = t.target[4] = t.target[5] = vec4(0.0);
+    t.target[0] = t.target[1] = t.target[2] = t.target[3] = t.target[4] = t.target[5] = t.target[6] = t.target[7] = vec4(0.0);
     t.bits = uvec4(0u);
 #if ML_GBUFFER_FORMAT == ML_GBUFFER_EXACT
     uint roughnessBits = floatBitsToUint(s.roughness);
@@ -180,6 +200,11 @@ GBufferTexel encodeGBuffer(SurfacePoint s) {
 #if ML_GBUFFER_EXACT_SHEEN
     t.target[5] = vec4(s.sheenColor, s.sheenRoughness);
     if (s.sheenColor != vec3(0.0)) redBits |= kGBufferSignFlag;
+#endif
+    uint blueBits = floatBitsToUint(s.baseColor.b);
+#if ML_GBUFFER_EXACT_IRIDESCENCE
+    t.target[7] = vec4(s.iridescence, s.iridescenceThickness, s.iridescenceIor, 0.0);
+    if (s.iridescence > 0.0) blueBits |= kGBufferSignFlag;
 #endif
     uint metallicBits = floatBitsToUint(s.metallic);
 #if ML_GBUFFER_EXACT_MATERIAL_EXTENSIONS
@@ -199,7 +224,7 @@ GBufferTexel encodeGBuffer(SurfacePoint s) {
     if (extended) metallicBits |= kGBufferSignFlag;
 #endif
     t.target[0] = vec4(uintBitsToFloat(distanceBits), octEncode(s.normal), uintBitsToFloat(roughnessBits));
-    t.target[1] = vec4(uintBitsToFloat(redBits), s.baseColor.gb, uintBitsToFloat(metallicBits));
+    t.target[1] = vec4(uintBitsToFloat(redBits), s.baseColor.g, uintBitsToFloat(blueBits), uintBitsToFloat(metallicBits));
 #elif ML_GBUFFER_FORMAT == ML_GBUFFER_STANDARD
     t.target[0] = vec4(s.normal, s.occlusion);
     t.target[1] = vec4(s.baseColor, s.metallic);
@@ -223,7 +248,7 @@ void decodeGBuffer(GBufferTexel t, inout SurfacePoint s) {
 #if ML_GBUFFER_FORMAT == ML_GBUFFER_EXACT
     s.normal = octDecode(t.target[0].yz);
     s.roughness = withoutSignFlag(t.target[0].w);
-    s.baseColor = vec3(withoutSignFlag(t.target[1].r), t.target[1].gb);
+    s.baseColor = vec3(withoutSignFlag(t.target[1].r), t.target[1].g, withoutSignFlag(t.target[1].b));
     s.metallic = withoutSignFlag(t.target[1].w);
     s.occlusion = 1.0;
     if (gbufferUsesTarget2(t)) {
@@ -253,6 +278,13 @@ void decodeGBuffer(GBufferTexel t, inout SurfacePoint s) {
     vec4 sheen = gbufferUsesTarget5(t) ? t.target[5] : vec4(0.0);
     s.sheenColor = sheen.rgb;
     s.sheenRoughness = sheen.a;
+#endif
+#if ML_GBUFFER_EXACT_IRIDESCENCE
+    // Unflagged pixels have no film.
+    vec4 film = gbufferUsesTarget7(t) ? t.target[7] : vec4(0.0, 0.0, 1.0, 0.0);
+    s.iridescence = film.x;
+    s.iridescenceThickness = film.y;
+    s.iridescenceIor = film.z;
 #endif
 #elif ML_GBUFFER_FORMAT == ML_GBUFFER_STANDARD
     s.normal = normalize(t.target[0].xyz);  // 16-bit storage: restore unit length
@@ -297,6 +329,11 @@ void decodeGBuffer(GBufferTexel t, inout SurfacePoint s) {
 #if ML_HAS(ML_FEATURE_SHEEN)
     s.sheenColor = vec3(0.0);
     s.sheenRoughness = 0.0;
+#endif
+#if ML_HAS(ML_FEATURE_IRIDESCENCE)
+    s.iridescence = 0.0;
+    s.iridescenceThickness = 0.0;
+    s.iridescenceIor = 1.0;
 #endif
 #endif
     deriveShadingTerms(s);

@@ -47,6 +47,10 @@ std::uint32_t materialFeatures(const Scene& scene) {
             f |= ML_FEATURE_SHEEN;
             if (uses(m.sheenColorTexture) | uses(m.sheenRoughnessTexture)) f |= ML_FEATURE_SHEEN_MAP;
         }
+        if (m.iridescenceModelled()) {
+            f |= ML_FEATURE_IRIDESCENCE;
+            if (uses(m.iridescenceTexture) | uses(m.iridescenceThicknessTexture)) f |= ML_FEATURE_IRIDESCENCE_MAP;
+        }
         if (m.alphaTested()) f |= ML_FEATURE_ALPHA_TEST;
         if (m.blended()) f |= ML_FEATURE_BLEND;
     }
@@ -77,6 +81,8 @@ std::string describeMaterialFeatures(std::uint32_t features) {
         {ML_FEATURE_CLEARCOAT_MAP, "clearcoat maps"},
         {ML_FEATURE_SHEEN, "sheen"},
         {ML_FEATURE_SHEEN_MAP, "sheen maps"},
+        {ML_FEATURE_IRIDESCENCE, "iridescence"},
+        {ML_FEATURE_IRIDESCENCE_MAP, "iridescence maps"},
     };
     std::string text;
     for (const auto& [bit, name] : kNames)

@@ -23,13 +23,15 @@ static_assert(sizeof(DrawElementsIndirectCommand) == 20, "GL's indirect command 
 constexpr GLuint kSlotUnits[ML_TEXTURE_SLOTS] = {ML_TEX_BASE_COLOR,       ML_TEX_METALLIC_ROUGHNESS,  ML_TEX_NORMAL,
                                                  ML_TEX_OCCLUSION,        ML_TEX_EMISSIVE,            ML_TEX_SPECULAR,
                                                  ML_TEX_SPECULAR_COLOR,   ML_TEX_CLEARCOAT,           ML_TEX_CLEARCOAT_ROUGHNESS,
-                                                 ML_TEX_CLEARCOAT_NORMAL, ML_TEX_SHEEN_COLOR,         ML_TEX_SHEEN_ROUGHNESS};
+                                                 ML_TEX_CLEARCOAT_NORMAL, ML_TEX_SHEEN_COLOR,         ML_TEX_SHEEN_ROUGHNESS,
+                                                 0 /* slot 12: KHR_materials_anisotropy's, never set here */,
+                                                 ML_TEX_IRIDESCENCE,      ML_TEX_IRIDESCENCE};
 
 // Does the scene's material record hold every slot and the extensions' vec4s (bindings.h)?
 bool extendedRecord(std::uint32_t features) { return (features & ML_FEATURES_EXTENDED_RECORD) != 0; }
 
 // The slots a scene's material records and texture bindings hold: the extensions' only where some
-// material models one (KHR_materials_specular or ior, KHR_materials_clearcoat, KHR_materials_sheen).
+// material models one (KHR_materials_specular or ior, clearcoat, sheen, iridescence).
 int materialSlots(std::uint32_t features) { return extendedRecord(features) ? ML_TEXTURE_SLOTS : ML_CORE_TEXTURE_SLOTS; }
 
 // The texture slots whose shader path this scene compiles in (a slot whose feature is off is never sampled).
@@ -52,6 +54,10 @@ std::array<const TextureRef*, ML_TEXTURE_SLOTS> sampledSlots(const Material& m, 
     if ((features & ML_FEATURE_SHEEN_MAP) && m.sheenModelled()) {
         slots[ML_SLOT_SHEEN_COLOR] = &m.sheenColorTexture;
         slots[ML_SLOT_SHEEN_ROUGHNESS] = &m.sheenRoughnessTexture;
+    }
+    if ((features & ML_FEATURE_IRIDESCENCE_MAP) && m.iridescenceModelled()) {
+        slots[ML_SLOT_IRIDESCENCE] = &m.iridescenceTexture;  // both on one unit: the loader made them one texture
+        slots[ML_SLOT_IRIDESCENCE_THICKNESS] = &m.iridescenceThicknessTexture;
     }
     return slots;
 }
@@ -127,6 +133,8 @@ SceneGpu::SceneGpu(const Scene& scene, TriangleOrder order) : features_(ml::mate
         g.specular = glm::vec4(dielectricF0(m.ior) * m.specularColorFactor, m.specularFactor);
         if (m.clearcoatModelled()) g.clearcoat = glm::vec4(m.clearcoatFactor, m.clearcoatRoughnessFactor, m.clearcoatNormalScale, 0.0f);
         if (m.sheenModelled()) g.sheen = glm::vec4(m.sheenColorFactor, m.sheenRoughnessFactor);
+        if (m.iridescenceModelled())
+            g.iridescence = glm::vec4(m.iridescenceFactor, m.iridescenceIor, m.iridescenceThicknessMinimum, m.iridescenceThicknessMaximum);
         if (m.unlit) g.info.w |= ML_MATERIAL_UNLIT;
         TextureSet set{};
         bool textured = false;

@@ -1,6 +1,7 @@
 // glTF's material extensions on files the tests write: KHR_materials_unlit, KHR_materials_ior,
 // KHR_materials_specular (factors and both maps), KHR_materials_clearcoat (factors, its three maps,
 // the emissive under it), KHR_materials_sheen (factors, both maps, under a coat),
+// KHR_materials_iridescence (a fixed thickness, a metal, one image for both maps, over a higher ior),
 // KHR_materials_pbrSpecularGlossiness (held to its conversion by hand) and KHR_materials_variants
 // (each variant drawn with its material). Every clustered method (both deferred resolves, the
 // visibility buffer, all in the exact G-buffer) is held to naive on each; the frame's pixel is
@@ -449,6 +450,87 @@ TEST_F(GltfMaterialExtensions, SheenMatchesNaiveAndTheCpuMirror) {
                                                  {"sheenColorTexture", {{"index", addFlatTexture(g, {255, 255, 255, 255})}}}}}};
         },
         ML_FEATURE_SHEEN | ML_FEATURE_SHEEN_MAP, "sheenColorFactor 0");
+}
+
+struct IridescenceCase {
+    const char* name;
+    float factor, ior, thicknessMinimum, thicknessMaximum;
+    std::array<std::uint8_t, 4> texel;  // {0,0,0,0}: no maps; else one image for both (R strength, G thickness)
+    float metallic, baseIor;            // baseIor 0: no KHR_materials_ior
+    float iridescence, thickness;       // what the mirror takes: factor x R, mix(minimum, maximum, G)
+};
+
+// Quads under KHR_materials_iridescence (a fixed thickness, a metal, both maps from one image, over
+// a base of ior 2): every method holds to naive with a point, a spot and a directional light, and
+// the middle pixel to the CPU mirror; an iridescenceFactor of 0 compiles nothing in and leaves the
+// frame as it was without the extension.
+TEST_F(GltfMaterialExtensions, IridescenceMatchesNaiveAndTheCpuMirror) {
+    const std::array<std::uint8_t, 4> none{0, 0, 0, 0}, texel{200, 128, 0, 255};
+    const std::vector<IridescenceCase> cases = {
+        {"factor 1, thickness 400", 1.0f, 1.3f, 100.0f, 400.0f, none, 0.0f, 0.0f, 1.0f, 400.0f},
+        {"metal, film ior 1.8", 1.0f, 1.8f, 100.0f, 300.0f, none, 1.0f, 0.0f, 1.0f, 300.0f},
+        {"both maps, one image", 0.8f, 1.33f, 200.0f, 600.0f, texel, 0.0f, 0.0f, 0.8f * 200.0f / 255.0f,
+         200.0f + (600.0f - 200.0f) * (128.0f / 255.0f)},
+        {"over ior 2", 1.0f, 1.33f, 100.0f, 250.0f, none, 0.0f, 2.0f, 1.0f, 250.0f},
+    };
+    const glm::vec3 base(0.2f, 0.3f, 0.6f);
+    for (const IridescenceCase& c : cases) {
+        Gltf g;
+        json film = {{"iridescenceFactor", c.factor}, {"iridescenceIor", c.ior}, {"iridescenceThicknessMinimum", c.thicknessMinimum},
+                     {"iridescenceThicknessMaximum", c.thicknessMaximum}};
+        if (c.texel != none) {
+            const int texture = addFlatTexture(g, c.texel);
+            film["iridescenceTexture"] = {{"index", texture}};
+            film["iridescenceThicknessTexture"] = {{"index", texture}};
+        }
+        json extensions = {{"KHR_materials_iridescence", film}};
+        if (c.baseIor > 0.0f) extensions["KHR_materials_ior"] = {{"ior", c.baseIor}};
+        const int material = g.add("materials", {{"pbrMetallicRoughness", {{"baseColorFactor", {base.r, base.g, base.b, 1.0}},
+                                                                           {"metallicFactor", c.metallic}, {"roughnessFactor", 0.3}}},
+                                                 {"extensions", extensions}});
+        g.doc["extensionsUsed"] = {"KHR_materials_iridescence", "KHR_materials_ior"};
+        const Scene scene = writeAndLoad(g, {square(g, 0.0f, 2.5f, material)}, "iridescence");
+        ASSERT_TRUE(materialFeatures(scene) & ML_FEATURE_IRIDESCENCE) << c.name;
+        EXPECT_EQ((materialFeatures(scene) & ML_FEATURE_IRIDESCENCE_MAP) != 0, c.texel != none) << c.name;
+        // A spot over the quad too: every light type goes through the film.
+        std::vector<Light> lights = testLights();
+        Light spot{{-0.5f, -0.3f, 1.5f}, 8.0f, {3.0f, 2.5f, 2.0f}};
+        spot.type = LightType::Spot;
+        spot.direction = glm::vec3(0.2f, 0.1f, -1.0f);
+        spot.innerConeAngle = 0.3f;
+        spot.outerConeAngle = 0.9f;
+        lights.push_back(spot);
+        const FrameSettings settings = test::smallFrame(scene, kFrontView, kWidth, kHeight);
+        FrameRenderer renderer(scene, lights, settings);
+        const test::ReferenceFrame naive = test::expectClusteredVariantsMatchNaive(renderer, c.name);
+
+        SurfaceSample s;
+        s.position = middlePixelPoint();
+        s.normal = glm::vec3(0.0f, 0.0f, 1.0f);
+        s.baseColor = base;
+        s.metallic = c.metallic;
+        s.roughness = 0.3f;
+        if (c.baseIor > 0.0f) s.specularF0 = glm::vec3(dielectricF0(c.baseIor));
+        s.iridescence = c.iridescence;
+        s.iridescenceThickness = c.thickness;
+        s.iridescenceIor = c.ior;
+        SurfaceSample plain = s;
+        plain.iridescence = 0.0f;
+        expectMirrorPixelShowingTheExtension(naive, s, plain, lights, settings, c.name);
+    }
+
+    // iridescenceFactor 0 (with maps, a thickness and an ior) is no film: nothing compiles in, the
+    // frame is the plain material's to the bit.
+    expectSwitchedOffExtensionDrawsThePlainMaterial(
+        base,
+        [](Gltf& g) {
+            const int texture = addFlatTexture(g, {255, 255, 255, 255});
+            return json{{"KHR_materials_iridescence", {{"iridescenceIor", 1.8},
+                                                       {"iridescenceThicknessMaximum", 500.0},
+                                                       {"iridescenceTexture", {{"index", texture}}},
+                                                       {"iridescenceThicknessTexture", {{"index", texture}}}}}};
+        },
+        ML_FEATURE_IRIDESCENCE | ML_FEATURE_IRIDESCENCE_MAP, "iridescenceFactor 0");
 }
 
 }  // namespace

@@ -3,11 +3,15 @@
 // line on stdin, as glTF states the material (the ior to F0 conversion is the renderer's):
 //   eye(3) position(3) normal(3) base(3) metallic roughness ior specularFactor specularColor(3)
 //   unlit clearcoat clearcoatRoughness clearcoatNormal(3) sheenColor(3) sheenRoughness ambient
-//   sunDirection(3) sunColor(3)
+//   sunDirection(3) sunColor(3) [iridescence iridescenceThickness iridescenceIor]
+// (the last three optional: KHR_materials_iridescence's strength, thickness in nm and film IOR;
+// tests/reference/check_iridescence.py gives them)
 // and one line "r g b" of shadeReference's linear radiance on stdout, in float's shortest exact form.
 #include <algorithm>
 #include <cstdio>
 #include <iostream>
+#include <sstream>
+#include <string>
 
 #include "renderer/reference/shading_reference.h"
 #include "renderer/scene/material_features.h"
@@ -18,12 +22,16 @@ int main() {
     SurfaceSample s;
     float ior, specularFactor, ambient;
     int unlit;
-    while (std::cin >> eye.x >> eye.y >> eye.z >> s.position.x >> s.position.y >> s.position.z >> s.normal.x >>
+    for (std::string line; std::getline(std::cin, line);) {
+        std::istringstream in(line);
+        if (!(in >> eye.x >> eye.y >> eye.z >> s.position.x >> s.position.y >> s.position.z >> s.normal.x >>
            s.normal.y >> s.normal.z >> base.r >> base.g >> base.b >> s.metallic >> s.roughness >> ior >>
            specularFactor >> specularColor.r >> specularColor.g >> specularColor.b >> unlit >> s.clearcoat >>
            s.clearcoatRoughness >> s.clearcoatNormal.x >> s.clearcoatNormal.y >> s.clearcoatNormal.z >> s.sheenColor.r >>
            s.sheenColor.g >> s.sheenColor.b >> s.sheenRoughness >> ambient >>
-           sunDirection.x >> sunDirection.y >> sunDirection.z >> sunColor.r >> sunColor.g >> sunColor.b) {
+           sunDirection.x >> sunDirection.y >> sunDirection.z >> sunColor.r >> sunColor.g >> sunColor.b))
+            continue;
+        if (!(in >> s.iridescence >> s.iridescenceThickness >> s.iridescenceIor)) s.iridescence = 0.0f;
         s.baseColor = base;
         s.specularF0 = glm::min(dielectricF0(ior) * specularColor, glm::vec3(1.0f));  // as glsl/include/material.glsl
         s.specularWeight = specularFactor;
