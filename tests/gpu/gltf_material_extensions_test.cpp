@@ -64,6 +64,18 @@ glm::vec3 middlePixelPoint() {
     return {x, y, 0.0f};
 }
 
+// The CPU mirror's sample of the quad under the middle pixel: facing the camera (+z), of this
+// base colour, metallic and roughness.
+SurfaceSample middlePixelSample(glm::vec3 base, float metallic, float roughness) {
+    SurfaceSample s;
+    s.position = middlePixelPoint();
+    s.normal = glm::vec3(0.0f, 0.0f, 1.0f);
+    s.baseColor = base;
+    s.metallic = metallic;
+    s.roughness = roughness;
+    return s;
+}
+
 // The middle pixel against the CPU mirror's `s`, and the extension visible there: the mirror's
 // `without` (s less the extension) is not the same.
 void expectMirrorPixelShowingTheExtension(const test::ReferenceFrame& naive, const SurfaceSample& s, const SurfaceSample& without,
@@ -171,12 +183,7 @@ TEST_F(GltfMaterialExtensions, SpecularAndIorMatchNaiveAndTheCpuMirror) {
         FrameRenderer renderer(scene, lights, settings);
         const test::ReferenceFrame naive = test::expectClusteredVariantsMatchNaive(renderer, c.name);
 
-        SurfaceSample s;
-        s.position = middlePixelPoint();
-        s.normal = {0.0f, 0.0f, 1.0f};
-        s.baseColor = base;
-        s.metallic = c.metallic;
-        s.roughness = 0.35f;
+        SurfaceSample s = middlePixelSample(base, c.metallic, 0.35f);
         s.specularF0 = c.specularF0;
         s.specularWeight = c.specularWeight;
         const glm::vec3 mirror = shadeReference(s, kFrontView.eye, lights, settings.ambient, true, settings.lightModel);
@@ -236,11 +243,7 @@ TEST_F(GltfMaterialExtensions, ClearcoatMatchesNaiveAndTheCpuMirror) {
         FrameRenderer renderer(scene, lights, settings);
         const test::ReferenceFrame naive = test::expectClusteredVariantsMatchNaive(renderer, c.name);
 
-        SurfaceSample s;
-        s.position = middlePixelPoint();
-        s.normal = up;
-        s.baseColor = base;
-        s.roughness = 0.5f;
+        SurfaceSample s = middlePixelSample(base, 0.0f, 0.5f);
         s.emissive = c.emissive;
         s.clearcoat = c.clearcoat;
         s.clearcoatRoughness = c.clearcoatRoughness;
@@ -322,12 +325,7 @@ TEST_F(GltfMaterialExtensions, SpecularGlossinessMatchesItsConversionByHand) {
         // it. (With a metallic-roughness map the GPU's highlight is ~1e-3 off the mirror on
         // llvmpipe whichever file feeds it, so the maps are held to the conversion by hand only.)
         if (maps) continue;
-        SurfaceSample s;
-        s.position = middlePixelPoint();
-        s.normal = {0.0f, 0.0f, 1.0f};
-        s.baseColor = glm::vec3(diffuse);
-        s.metallic = 0.0f;
-        s.roughness = 1.0f - glossiness;
+        SurfaceSample s = middlePixelSample(glm::vec3(diffuse), 0.0f, 1.0f - glossiness);
         s.specularF0 = specular;
         s.specularWeight = 1.0f;
         const glm::vec3 mirror = shadeReference(s, kFrontView.eye, lights, settings.ambient, true, settings.lightModel);
@@ -426,11 +424,7 @@ TEST_F(GltfMaterialExtensions, SheenMatchesNaiveAndTheCpuMirror) {
         FrameRenderer renderer(scene, lights, settings);
         const test::ReferenceFrame naive = test::expectClusteredVariantsMatchNaive(renderer, c.name);
 
-        SurfaceSample s;
-        s.position = middlePixelPoint();
-        s.normal = glm::vec3(0.0f, 0.0f, 1.0f);
-        s.baseColor = base;
-        s.roughness = 0.5f;
+        SurfaceSample s = middlePixelSample(base, 0.0f, 0.5f);
         s.clearcoat = c.clearcoat;
         s.clearcoatRoughness = 0.2f;
         s.clearcoatNormal = s.normal;
@@ -504,12 +498,7 @@ TEST_F(GltfMaterialExtensions, IridescenceMatchesNaiveAndTheCpuMirror) {
         FrameRenderer renderer(scene, lights, settings);
         const test::ReferenceFrame naive = test::expectClusteredVariantsMatchNaive(renderer, c.name);
 
-        SurfaceSample s;
-        s.position = middlePixelPoint();
-        s.normal = glm::vec3(0.0f, 0.0f, 1.0f);
-        s.baseColor = base;
-        s.metallic = c.metallic;
-        s.roughness = 0.3f;
+        SurfaceSample s = middlePixelSample(base, c.metallic, 0.3f);
         if (c.baseIor > 0.0f) s.specularF0 = glm::vec3(dielectricF0(c.baseIor));
         s.iridescence = c.iridescence;
         s.iridescenceThickness = c.thickness;
