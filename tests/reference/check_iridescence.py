@@ -21,7 +21,10 @@ ambient (diffuse + mix(f0, F_i(|N.V|), k)). A thickness of 0 is no film.
 
 The check prints the largest relative difference over the cases and fails above MIRROR_TOLERANCE;
 it also prints how far F_i's hue swings (its channels' spread) so that a film that changed
-nothing cannot pass.
+nothing cannot pass. It then checks the specification's spectral integration itself: each order's
+closed-form sensitivity against the integral over wavenumber done numerically with the colour
+matching functions' Gaussians (fails above FORM_TOLERANCE), and prints how much the sum's
+truncation at two orders leaves out against 40.
 
   check_iridescence.py --mirror build-test/tests/ml_shading_mirror
 """
@@ -33,7 +36,8 @@ import sys
 import numpy as np
 
 MIN_ALPHA = 0.002         # renderer convention: GGX's alpha floor (ML_GGX_MIN_ALPHA)
-MIRROR_TOLERANCE = 2e-4   # relative, float32 (the mirror) against float64, plus 1e-6 absolute
+MIRROR_TOLERANCE = 2e-4
+FORM_TOLERANCE = 1e-4     # the closed form against the numerical spectral integral   # relative, float32 (the mirror) against float64, plus 1e-6 absolute
 XYZ_TO_REC709 = np.array([[3.2404542, -1.5371385, -0.4985314],
                           [-0.9692660, 1.8760108, 0.0415560],
                           [0.0556434, -0.2040259, 1.0572252]])
@@ -75,6 +79,59 @@ def iridescent_fresnel(cos1, eta, d, f0):
     for m in (1, 2):
         i = i + (rs - t121) * r123 ** (m / 2.0) * 2.0 * sensitivity(m * opd, m * phi)
     return np.maximum(i, 0.0)
+
+
+def airy_terms(cos1, eta, d, f0):
+    """The Airy sum's terms as the specification sets them up: C0, the m >= 1 amplitude (Rs - T121),
+    sqrt(R123), the phase shift phi and the OPD (nm), for one case (f0 (3,))."""
+    cos2 = math.sqrt(1.0 - (1.0 - cos1 ** 2) / eta ** 2)
+    r12 = schlick(((eta - 1.0) / (eta + 1.0)) ** 2, cos1)
+    sqrt_f0 = np.sqrt(f0 + 1e-4)
+    base_ior = (1.0 + sqrt_f0) / (1.0 - sqrt_f0)
+    r23 = schlick(((base_ior - eta) / (base_ior + eta)) ** 2, cos2)
+    r123 = np.clip(r12 * r23, 1e-5, 0.9999)
+    rs = (1.0 - r12) ** 2 * r23 / (1.0 - r123)
+    return r12 + rs, rs - (1.0 - r12), np.sqrt(r123), math.pi + np.where(base_ior < eta, math.pi, 0.0), 2.0 * eta * d * cos2
+
+
+def numeric_sensitivity(opd_nm, shift, k, g):
+    """evalSensitivity by numerical integration: each colour matching function, the Gaussian in
+    wavenumber k (1/m) whose Fourier transform the specification's closed form is,
+    g(k) = val / sqrt(2) exp(-(k - pos)^2 / (4 var)), times cos(2 pi k OPD + shift), over k,
+    normalised by 1.0685e-7, XYZ to Rec. 709."""
+    xyz = np.zeros(3)
+    for lobe, channel in ((0, 0), (1, 1), (2, 2), (3, 0)):
+        xyz[channel] += np.trapz(g[lobe] * np.cos(2.0 * math.pi * k * opd_nm * 1e-9 + shift[channel]), k) / 1.0685e-7
+    return XYZ_TO_REC709 @ xyz
+
+
+def spectral_sum(cos1, eta, d, f0, orders):
+    """F_i with every order's sensitivity integrated numerically, the Airy sum to `orders` orders."""
+    k = np.linspace(0.2e6, 4.5e6, 20001)
+    val = np.array([5.4856e-13, 4.4201e-13, 5.2481e-13, 9.7470e-14])
+    pos = np.array([1.6810e+06, 1.7953e+06, 2.2084e+06, 2.2399e+06])
+    var = np.array([4.3278e+09, 9.3046e+09, 6.6121e+09, 4.5282e+09])
+    g = val[:, None] / math.sqrt(2.0) * np.exp(-(k[None, :] - pos[:, None]) ** 2 / (4.0 * var[:, None]))
+    c0, cm, ratio, phi, opd = airy_terms(cos1, eta, d, f0)
+    total = c0.copy()
+    for m in range(1, orders + 1):
+        cm = cm * ratio
+        total = total + cm * 2.0 * numeric_sensitivity(m * opd, m * phi, k, g)
+    return np.maximum(total, 0.0)
+
+
+def check_spectral_integration(rng, cases=30):
+    """The specification's closed form against its spectral integral done numerically (two orders),
+    and the Airy sum's truncation at two orders against 40."""
+    worst_form, worst_truncation = 0.0, 0.0
+    for _ in range(cases):
+        cos1, eta, d = rng.uniform(0.05, 1.0), rng.uniform(1.05, 2.3), rng.uniform(100.0, 1200.0)
+        f0 = rng.uniform(0.02, 0.9, size=3)
+        closed = iridescent_fresnel(np.array([cos1]), np.array([eta]), np.array([d]), f0[None, :])[0]
+        two = spectral_sum(cos1, eta, d, f0, 2)
+        worst_form = max(worst_form, np.abs(two - closed).max())
+        worst_truncation = max(worst_truncation, np.abs(spectral_sum(cos1, eta, d, f0, 40) - two).max())
+    return worst_form, worst_truncation
 
 
 def dot(a, b):
@@ -163,6 +220,12 @@ def main():
           f"{int(metallic.sum())} metals): max relative difference {rel.max():.2e} (film {rel[film].max():.2e}, none "
           f"{rel[~film].max():.2e})")
     print(f"iridescence: F_i's channel spread up to {np.ptp(fi, axis=1).max():.3f} (F_i from {fi.min():.3f} to {fi.max():.3f})")
+    form, truncation = check_spectral_integration(rng)
+    print(f"iridescence: the specification's closed-form sensitivity against the spectral integral done numerically: "
+          f"max {form:.2e}; the Airy sum's two orders against 40: up to {truncation:.3f} (the specification's truncation)")
+    if form > FORM_TOLERANCE:
+        print(f"FAIL: the closed form is {form:.2e} off the numerical integral")
+        return 1
     if rel.max() > MIRROR_TOLERANCE:
         print(f"FAIL: case {worst}: numpy {expected[worst]}, mirror {got[worst]}, k {k[worst]}, d {d[worst]}, eta {eta[worst]}, "
               f"metallic {metallic[worst]}, ior {ior[worst]}")
