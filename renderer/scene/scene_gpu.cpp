@@ -20,11 +20,13 @@ struct DrawElementsIndirectCommand {
 };
 static_assert(sizeof(DrawElementsIndirectCommand) == 20, "GL's indirect command layout");
 
+// A slot with no unit of its own on this branch: never bound.
+constexpr GLuint kNoUnit = ~0u;
 constexpr GLuint kSlotUnits[ML_TEXTURE_SLOTS] = {ML_TEX_BASE_COLOR,       ML_TEX_METALLIC_ROUGHNESS,  ML_TEX_NORMAL,
                                                  ML_TEX_OCCLUSION,        ML_TEX_EMISSIVE,            ML_TEX_SPECULAR,
                                                  ML_TEX_SPECULAR_COLOR,   ML_TEX_CLEARCOAT,           ML_TEX_CLEARCOAT_ROUGHNESS,
                                                  ML_TEX_CLEARCOAT_NORMAL, ML_TEX_SHEEN_COLOR,         ML_TEX_SHEEN_ROUGHNESS,
-                                                 0 /* slot 12: KHR_materials_anisotropy's, never set here */,
+                                                 kNoUnit /* slot 12: KHR_materials_anisotropy's */,
                                                  ML_TEX_IRIDESCENCE,      ML_TEX_IRIDESCENCE};
 
 // Does the scene's material record hold every slot and the extensions' vec4s (bindings.h)?
@@ -273,9 +275,15 @@ const char* drawSubmissionName(DrawSubmission submission) {
 }
 
 void SceneGpu::bindTextureSet(int set) const {
+    // Slots that share a unit (KHR_materials_iridescence's two maps) bind the one with a texture:
+    // the loader made them one texture where both have one.
+    std::array<bool, 16> unitTextured{};
     for (int slot = 0; slot < materialSlots(features_); ++slot) {
+        if (kSlotUnits[slot] == kNoUnit) continue;
         const SlotBinding b = set >= 0 && set < static_cast<int>(textureSets_.size()) ? textureSets_[static_cast<std::size_t>(set)][slot]
                                                                                      : SlotBinding{};
+        if (b.texture < 0 && unitTextured[kSlotUnits[slot]]) continue;
+        unitTextured[kSlotUnits[slot]] = b.texture >= 0;
         glBindTextureUnit(kSlotUnits[slot], b.texture >= 0 ? textures_[static_cast<std::size_t>(b.texture)].id() : white_.id());
         glBindSampler(kSlotUnits[slot], b.sampler >= 0 ? samplers_[static_cast<std::size_t>(b.sampler)].id() : defaultSampler_.id());
     }
@@ -417,7 +425,8 @@ std::optional<glm::ivec4> SceneGpu::transparentScreenRect(const glm::mat4& viewP
 }
 
 void SceneGpu::unbindSamplers() const {
-    for (GLuint unit : kSlotUnits) glBindSampler(unit, 0);
+    for (GLuint unit : kSlotUnits)
+        if (unit != kNoUnit) glBindSampler(unit, 0);
 }
 
 void SceneGpu::refitTransparentBounds(const std::function<glm::vec3(std::uint32_t, const glm::vec3&)>& posed) {

@@ -449,7 +449,9 @@ TEST_F(GltfMaterialExtensions, SheenMatchesNaiveAndTheCpuMirror) {
 struct IridescenceCase {
     const char* name;
     float factor, ior, thicknessMinimum, thicknessMaximum;
-    std::array<std::uint8_t, 4> texel;  // {0,0,0,0}: no maps; else one image for both (R strength, G thickness)
+    std::array<std::uint8_t, 4> texel;  // {0,0,0,0}: no maps; else the strength map (R), and the thickness map (G)
+    bool thicknessMap;                  // ...from the same image
+    std::array<std::uint8_t, 4> baseTexel;  // {0,0,0,0}: no base colour map
     float metallic, baseIor;            // baseIor 0: no KHR_materials_ior
     float iridescence, thickness;       // what the mirror takes: factor x R, mix(minimum, maximum, G)
 };
@@ -459,13 +461,18 @@ struct IridescenceCase {
 // the middle pixel to the CPU mirror; an iridescenceFactor of 0 compiles nothing in and leaves the
 // frame as it was without the extension.
 TEST_F(GltfMaterialExtensions, IridescenceMatchesNaiveAndTheCpuMirror) {
-    const std::array<std::uint8_t, 4> none{0, 0, 0, 0}, texel{200, 128, 0, 255};
+    const std::array<std::uint8_t, 4> none{0, 0, 0, 0}, texel{200, 128, 0, 255}, baseTexel{255, 0, 255, 255};
     const std::vector<IridescenceCase> cases = {
-        {"factor 1, thickness 400", 1.0f, 1.3f, 100.0f, 400.0f, none, 0.0f, 0.0f, 1.0f, 400.0f},
-        {"metal, film ior 1.8", 1.0f, 1.8f, 100.0f, 300.0f, none, 1.0f, 0.0f, 1.0f, 300.0f},
-        {"both maps, one image", 0.8f, 1.33f, 200.0f, 600.0f, texel, 0.0f, 0.0f, 0.8f * 200.0f / 255.0f,
+        {"factor 1, thickness 400", 1.0f, 1.3f, 100.0f, 400.0f, none, false, none, 0.0f, 0.0f, 1.0f, 400.0f},
+        {"metal, film ior 1.8", 1.0f, 1.8f, 100.0f, 300.0f, none, false, none, 1.0f, 0.0f, 1.0f, 300.0f},
+        {"both maps, one image", 0.8f, 1.33f, 200.0f, 600.0f, texel, true, none, 0.0f, 0.0f, 0.8f * 200.0f / 255.0f,
          200.0f + (600.0f - 200.0f) * (128.0f / 255.0f)},
-        {"over ior 2", 1.0f, 1.33f, 100.0f, 250.0f, none, 0.0f, 2.0f, 1.0f, 250.0f},
+        {"over ior 2", 1.0f, 1.33f, 100.0f, 250.0f, none, false, none, 0.0f, 2.0f, 1.0f, 250.0f},
+        // The strength map alone (its unit's other slot empty) beside a base colour map (unit 0,
+        // which the extended record's slots must leave alone; 0 and 255, which every sRGB decode
+        // gives exactly, so that the white a lost binding falls back to shows): the thickness is
+        // the maximum.
+        {"strength map, base colour map", 1.0f, 1.5f, 100.0f, 350.0f, texel, false, baseTexel, 0.0f, 0.0f, 200.0f / 255.0f, 350.0f},
     };
     const glm::vec3 base(0.2f, 0.3f, 0.6f);
     for (const IridescenceCase& c : cases) {
@@ -475,13 +482,13 @@ TEST_F(GltfMaterialExtensions, IridescenceMatchesNaiveAndTheCpuMirror) {
         if (c.texel != none) {
             const int texture = addFlatTexture(g, c.texel);
             film["iridescenceTexture"] = {{"index", texture}};
-            film["iridescenceThicknessTexture"] = {{"index", texture}};
+            if (c.thicknessMap) film["iridescenceThicknessTexture"] = {{"index", texture}};
         }
         json extensions = {{"KHR_materials_iridescence", film}};
         if (c.baseIor > 0.0f) extensions["KHR_materials_ior"] = {{"ior", c.baseIor}};
-        const int material = g.add("materials", {{"pbrMetallicRoughness", {{"baseColorFactor", {base.r, base.g, base.b, 1.0}},
-                                                                           {"metallicFactor", c.metallic}, {"roughnessFactor", 0.3}}},
-                                                 {"extensions", extensions}});
+        json pbr = {{"baseColorFactor", {base.r, base.g, base.b, 1.0}}, {"metallicFactor", c.metallic}, {"roughnessFactor", 0.3}};
+        if (c.baseTexel != none) pbr["baseColorTexture"] = {{"index", addFlatTexture(g, c.baseTexel)}};
+        const int material = g.add("materials", {{"pbrMetallicRoughness", pbr}, {"extensions", extensions}});
         g.doc["extensionsUsed"] = {"KHR_materials_iridescence", "KHR_materials_ior"};
         const Scene scene = writeAndLoad(g, {square(g, 0.0f, 2.5f, material)}, "iridescence");
         ASSERT_TRUE(materialFeatures(scene) & ML_FEATURE_IRIDESCENCE) << c.name;
@@ -498,7 +505,10 @@ TEST_F(GltfMaterialExtensions, IridescenceMatchesNaiveAndTheCpuMirror) {
         FrameRenderer renderer(scene, lights, settings);
         const test::ReferenceFrame naive = test::expectClusteredVariantsMatchNaive(renderer, c.name);
 
-        SurfaceSample s = middlePixelSample(base, c.metallic, 0.3f);
+        const glm::vec3 mappedBase =
+            c.baseTexel == none ? base
+                                : base * glm::vec3(srgbToLinear(c.baseTexel[0]), srgbToLinear(c.baseTexel[1]), srgbToLinear(c.baseTexel[2]));
+        SurfaceSample s = middlePixelSample(mappedBase, c.metallic, 0.3f);
         if (c.baseIor > 0.0f) s.specularF0 = glm::vec3(dielectricF0(c.baseIor));
         s.iridescence = c.iridescence;
         s.iridescenceThickness = c.thickness;
