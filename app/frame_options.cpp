@@ -357,9 +357,10 @@ PreparedFrame prepareFrame(const FrameOptions& o, const Scene* loaded) {
                              "(standard and packed store it)");
     if (gbufferMethod && f.settings.method.gbuffer != GBufferFormat::Exact &&
         (materialFeatures(f.scene) &
-         (ML_FEATURE_SPECULAR | ML_FEATURE_UNLIT | ML_FEATURE_CLEARCOAT | ML_FEATURE_SHEEN | ML_FEATURE_ANISOTROPY)))
+         (ML_FEATURE_SPECULAR | ML_FEATURE_UNLIT | ML_FEATURE_CLEARCOAT | ML_FEATURE_SHEEN | ML_FEATURE_ANISOTROPY |
+          ML_FEATURE_IRIDESCENCE)))
         f.warnings.push_back(std::string("--gbuffer ") + gbufferFormatName(f.settings.method.gbuffer) +
-                             " has no room for KHR_materials_specular, ior, unlit, clearcoat, sheen or anisotropy: those "
+                             " has no room for KHR_materials_specular, ior, unlit, clearcoat, sheen, anisotropy or iridescence: those "
                              "surfaces are lit as glTF's default material (exact stores them)");
     // The loader makes tangents for every anisotropic material; a scene built without them cannot
     // stretch the lobe (materialFeatures leaves ML_FEATURE_ANISOTROPY off).

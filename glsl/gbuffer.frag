@@ -25,8 +25,11 @@ layout(location = 4) out vec4 o_target4;
 #if ML_GBUFFER_FLOAT_TARGETS >= 6
 layout(location = 5) out vec4 o_target5;
 #endif
-#if ML_GBUFFER_FLOAT_TARGETS == 7
+#if ML_GBUFFER_FLOAT_TARGETS >= 7
 layout(location = 6) out vec4 o_target6;
+#endif
+#if ML_GBUFFER_FLOAT_TARGETS == 8
+layout(location = 7) out vec4 o_target7;
 #endif
 #endif
 
@@ -49,8 +52,11 @@ void main() {
 #if ML_GBUFFER_FLOAT_TARGETS >= 6
     o_target5 = t.target[5];
 #endif
-#if ML_GBUFFER_FLOAT_TARGETS == 7
+#if ML_GBUFFER_FLOAT_TARGETS >= 7
     o_target6 = t.target[6];
+#endif
+#if ML_GBUFFER_FLOAT_TARGETS == 8
+    o_target7 = t.target[7];
 #endif
 #endif
 }

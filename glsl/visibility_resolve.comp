@@ -34,8 +34,11 @@ layout(binding = ML_IMG_GBUFFER4, ML_GBUFFER_FLOAT_IMAGE) uniform writeonly imag
 #if ML_GBUFFER_FLOAT_TARGETS >= 6
 layout(binding = ML_IMG_GBUFFER5, ML_GBUFFER_FLOAT_IMAGE) uniform writeonly image2D u_gTarget5Out;
 #endif
-#if ML_GBUFFER_FLOAT_TARGETS == 7
+#if ML_GBUFFER_FLOAT_TARGETS >= 7
 layout(binding = ML_IMG_GBUFFER6, ML_GBUFFER_FLOAT_IMAGE) uniform writeonly image2D u_gTarget6Out;
+#endif
+#if ML_GBUFFER_FLOAT_TARGETS == 8
+layout(binding = ML_IMG_GBUFFER7, ML_GBUFFER_FLOAT_IMAGE) uniform writeonly image2D u_gTarget7Out;
 #endif
 #endif
 uniform int u_textureSet;
@@ -68,8 +71,11 @@ void storeGBuffer(ivec2 p, GBufferTexel t) {
 #if ML_GBUFFER_FLOAT_TARGETS >= 6
     if (gbufferUsesTarget5(t)) imageStore(u_gTarget5Out, p, t.target[5]);
 #endif
-#if ML_GBUFFER_FLOAT_TARGETS == 7
+#if ML_GBUFFER_FLOAT_TARGETS >= 7
     if (gbufferUsesTarget6(t)) imageStore(u_gTarget6Out, p, t.target[6]);
+#endif
+#if ML_GBUFFER_FLOAT_TARGETS == 8
+    if (gbufferUsesTarget7(t)) imageStore(u_gTarget7Out, p, t.target[7]);
 #endif
 #endif
 }

@@ -42,7 +42,7 @@ const gl::Framebuffer& GBuffer::prepare(const FrameTargets& frame) {
             // The optional targets only where the scene's materials need them (gbuffer_layout.glsl).
             static const char* const kNames[] = {"gbuffer.distance-normal-roughness", "gbuffer.albedo",
                                                  "gbuffer.emissive-occlusion", "gbuffer.specular-unlit", "gbuffer.clearcoat",
-                                                 "gbuffer.sheen", "gbuffer.anisotropy"};
+                                                 "gbuffer.sheen", "gbuffer.anisotropy", "gbuffer.iridescence"};
             const int count = gbufferExactTargets(materialFeatures_);
             targets_.reserve(count);
             for (int i = 0; i < count; ++i) targets_.emplace_back(kNames[i], GL_RGBA32F, width_, height_);
@@ -66,15 +66,16 @@ const gl::Framebuffer& GBuffer::prepare(const FrameTargets& frame) {
 }
 
 namespace {
-// Targets 0 to 2 have consecutive units; the exact layout's fourth to seventh share units (bindings.h).
+// Targets 0 to 2 have consecutive units; the exact layout's fourth to eighth share units (bindings.h).
 constexpr GLuint kTextureUnits[] = {ML_TEX_GBUFFER0, ML_TEX_GBUFFER1, ML_TEX_GBUFFER2, ML_TEX_GBUFFER3,
-                                    ML_TEX_GBUFFER4, ML_TEX_GBUFFER5, ML_TEX_GBUFFER6};
+                                    ML_TEX_GBUFFER4, ML_TEX_GBUFFER5, ML_TEX_GBUFFER6, ML_TEX_GBUFFER7};
 constexpr GLuint kImageUnits[] = {ML_IMG_GBUFFER0, ML_IMG_GBUFFER1, ML_IMG_GBUFFER2, ML_IMG_GBUFFER3,
-                                  ML_IMG_GBUFFER4, ML_IMG_GBUFFER5, ML_IMG_GBUFFER6};
+                                  ML_IMG_GBUFFER4, ML_IMG_GBUFFER5, ML_IMG_GBUFFER6, ML_IMG_GBUFFER7};
 }  // namespace
 
 void GBuffer::bindForReading() const {
-    for (std::size_t i = 0; i < targets_.size(); ++i) glBindTextureUnit(kTextureUnits[i], targets_[i].id());
+    for (std::size_t i = 0; i < targets_.size(); ++i)
+        glBindTextureUnit(kTextureUnits[i], targets_[i].id());
 }
 
 void GBuffer::bindForWriting() const {

@@ -44,6 +44,7 @@ GBufferFormat parseGBufferFormat(const std::string& text) {
 const char* gbufferFormatName(GBufferFormat format) { return entry(format).name; }
 
 int gbufferExactTargets(std::uint32_t materialFeatures) {
+    if (materialFeatures & ML_FEATURE_IRIDESCENCE) return 8;
     if (materialFeatures & ML_FEATURE_ANISOTROPY) return 7;
     if (materialFeatures & ML_FEATURE_SHEEN) return 6;
     if (materialFeatures & ML_FEATURE_CLEARCOAT) return 5;

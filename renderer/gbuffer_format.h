@@ -26,7 +26,8 @@ std::size_t gbufferBytesPerPixel(GBufferFormat format, std::uint32_t materialFea
 // The exact layout's targets for these materials (gbuffer_layout.glsl): 2, a third where the scene
 // has emissive or occlusion maps, a fourth (and the third) where it has KHR_materials_specular, ior
 // or unlit, a fifth (and the others) where it has KHR_materials_clearcoat, a sixth (and the others)
-// where it has KHR_materials_sheen, a seventh (and the others) where it has KHR_materials_anisotropy.
+// where it has KHR_materials_sheen, a seventh (and the others) where it has KHR_materials_anisotropy,
+// eight where it has KHR_materials_iridescence.
 int gbufferExactTargets(std::uint32_t materialFeatures);
 
 }  // namespace ml

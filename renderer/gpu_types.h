@@ -54,6 +54,9 @@ struct alignas(16) GpuMaterial {
     glm::vec4 sheen;
     // KHR_materials_anisotropy: cos and sin of anisotropyRotation, anisotropyStrength, 0.
     glm::vec4 anisotropy;
+    // KHR_materials_iridescence: iridescenceFactor, iridescenceIor, the thickness's minimum and
+    // maximum (nm).
+    glm::vec4 iridescence;
 };
 static_assert(sizeof(GpuMaterial) == 16 * ML_GPU_MATERIAL_VEC4S(true));
 static_assert(offsetof(GpuMaterial, uvTransforms) + 32 * ML_CORE_TEXTURE_SLOTS == 16 * ML_GPU_MATERIAL_VEC4S(false));

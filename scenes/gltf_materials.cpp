@@ -302,6 +302,39 @@ void MaterialConverter::convertMaterialExtensions(const tinygltf::Material& sour
             m.anisotropyTexture =
                 extensionTextureRef(what + " KHR_materials_anisotropy anisotropyTexture", aniso->Get("anisotropyTexture"), false);
     }
+    if (const tinygltf::Value* film = extension("KHR_materials_iridescence")) {
+        const auto value = [&](const char* field, double fallback) {
+            return extensionNumber(path_, what, *film, "KHR_materials_iridescence", field, fallback);
+        };
+        const double factor = value("iridescenceFactor", 0.0);
+        if (factor < 0.0 || factor > 1.0)
+            fail(path_, what + ": KHR_materials_iridescence iridescenceFactor " + number(factor) + " is outside [0, 1]");
+        const double ior = value("iridescenceIor", 1.3);
+        if (!(ior >= 1.0)) fail(path_, what + ": KHR_materials_iridescence iridescenceIor " + number(ior) + " is below 1");
+        const double minimum = value("iridescenceThicknessMinimum", 100.0);
+        const double maximum = value("iridescenceThicknessMaximum", 400.0);
+        if (minimum < 0.0 || maximum < 0.0)
+            fail(path_, what + ": KHR_materials_iridescence thickness " + number(minimum < 0.0 ? minimum : maximum) +
+                            " nm is negative");
+        if (minimum > maximum)
+            fail(path_, what + ": KHR_materials_iridescence iridescenceThicknessMinimum " + number(minimum) +
+                            " nm is above iridescenceThicknessMaximum " + number(maximum) + " nm");
+        m.iridescenceFactor = static_cast<float>(factor);
+        m.iridescenceIor = static_cast<float>(ior);
+        m.iridescenceThicknessMinimum = static_cast<float>(minimum);
+        m.iridescenceThicknessMaximum = static_cast<float>(maximum);
+        if (film->Has("iridescenceTexture"))
+            m.iridescenceTexture = extensionTextureRef(what + " KHR_materials_iridescence iridescenceTexture", film->Get("iridescenceTexture"), false);
+        if (film->Has("iridescenceThicknessTexture"))
+            m.iridescenceThicknessTexture = extensionTextureRef(what + " KHR_materials_iridescence iridescenceThicknessTexture",
+                                                                film->Get("iridescenceThicknessTexture"), false);
+        // The two maps share one texture unit (bindings.h, ML_TEX_IRIDESCENCE): one image and sampler.
+        const TextureRef& a = m.iridescenceTexture;
+        const TextureRef& b = m.iridescenceThicknessTexture;
+        if (m.iridescenceModelled() && a.present() && b.present() && (a.image != b.image || a.sampler != b.sampler))
+            fail(path_, what + ": KHR_materials_iridescence iridescenceTexture and iridescenceThicknessTexture are different "
+                               "textures; this renderer samples both from one (free texture units run out): use one image");
+    }
 }
 
 namespace {
@@ -590,6 +623,8 @@ std::vector<MaterialTexture> texturesOf(const tinygltf::Material& material) {
         addExtensionTexture(out, material, "KHR_materials_sheen", "sheenColorTexture");
         addExtensionTexture(out, material, "KHR_materials_sheen", "sheenRoughnessTexture");
         addExtensionTexture(out, material, "KHR_materials_anisotropy", "anisotropyTexture");
+        addExtensionTexture(out, material, "KHR_materials_iridescence", "iridescenceTexture");
+        addExtensionTexture(out, material, "KHR_materials_iridescence", "iridescenceThicknessTexture");
     }
     return out;
 }

@@ -124,6 +124,15 @@ struct Material {
     float anisotropyStrength = 0.0f;           // [0, 1]
     float anisotropyRotation = 0.0f;           // radians, counter-clockwise from the tangent
     TextureRef anisotropyTexture;              // linear; RG the direction in [-1, 1], B multiplies the strength
+    // KHR_materials_iridescence: a thin film whose Fresnel (Belcour and Barla 2017) is mixed into
+    // F by its strength (docs/lights-and-shading.md). A factor of 0 (glTF's default) is no film.
+    float iridescenceFactor = 0.0f;            // [0, 1]
+    TextureRef iridescenceTexture;             // linear; R multiplies the factor
+    float iridescenceIor = 1.3f;               // >= 1
+    float iridescenceThicknessMinimum = 100.0f;  // nm, >= 0, <= the maximum
+    float iridescenceThicknessMaximum = 400.0f;  // nm, >= 0; the thickness where there is no map
+    TextureRef iridescenceThicknessTexture;    // linear; G mixes minimum to maximum (the same image
+                                               // as iridescenceTexture where both are set: bindings.h)
 
     bool alphaTested() const { return alphaMode == AlphaMode::Mask; }
     // Does the material ask for anything but glTF's default dielectric Fresnel?
@@ -137,6 +146,8 @@ struct Material {
     bool sheenModelled() const { return !unlit && sheenColorFactor != glm::vec3(0.0f); }
     // Is the lobe anisotropic? (A strength of 0 is the isotropic lobe, whatever the texture.)
     bool anisotropyModelled() const { return !unlit && anisotropyStrength > 0.0f; }
+    // Is there a film? (glTF: an iridescenceFactor of 0 has no effect, whatever its textures.)
+    bool iridescenceModelled() const { return !unlit && iridescenceFactor > 0.0f; }
     bool blended() const { return alphaMode == AlphaMode::Blend; }
 };
 

@@ -124,11 +124,11 @@
 #define ML_MATERIAL_UNLIT 2u  // KHR_materials_unlit: the base colour, no lighting
 // vec4s in a material (glsl/include/material.glsl, GpuMaterial); info is the fourth. A scene whose
 // materials use an extension with maps of its own (ML_FEATURES_EXTENDED_RECORD: KHR_materials_specular
-// or ior, KHR_materials_clearcoat, KHR_materials_sheen, KHR_materials_anisotropy) has every slot's
-// transforms and the extensions' vec4s (GpuMaterial::specular, clearcoat, sheen, anisotropy); every
-// other scene's records keep the five core slots, so its shaders read what they read without the
-// extensions.
-#define ML_GPU_MATERIAL_VEC4S(extended) (4 + 2 * ((extended) ? ML_TEXTURE_SLOTS : ML_CORE_TEXTURE_SLOTS) + ((extended) ? 4 : 0))
+// or ior, KHR_materials_clearcoat, KHR_materials_sheen, KHR_materials_anisotropy,
+// KHR_materials_iridescence) has every slot's transforms and the extensions' vec4s
+// (GpuMaterial::specular, clearcoat, sheen, anisotropy, iridescence); every other scene's records
+// keep the five core slots, so its shaders read what they read without the extensions.
+#define ML_GPU_MATERIAL_VEC4S(extended) (4 + 2 * ((extended) ? ML_TEXTURE_SLOTS : ML_CORE_TEXTURE_SLOTS) + ((extended) ? 5 : 0))
 // Radix sort (glsl/radix_sort.comp) and z-binning (--assign zbin, glsl/zbin_assign.comp). Kept
 // below 32: llvmpipe offers 32 storage-buffer bindings.
 #define ML_SSBO_RADIX_KEYS_IN 20       // keys to sort (one pass reads these...)
@@ -194,6 +194,14 @@
 // KHR_materials_anisotropy's map shares the MSAA and supersampling resolve's unit: the resolve
 // samples no material, and every pass that does binds its units before it runs.
 #define ML_TEX_ANISOTROPY 10
+// KHR_materials_iridescence's two maps share one unit, the depth's: the passes that read a depth
+// texture (the deferred lighting, the clustering's depth passes, the compute raster's depth copy,
+// the glass capture's depth test) sample no material. Every other unit below 16 is taken where a
+// material is sampled (11, the only other candidate, holds --shadows rays' alpha layers in the same
+// passes), so a material whose iridescence and thickness textures differ is refused by the loader
+// (scenes/gltf_materials.cpp); where they are one image, as in glTF's samples, each slot samples it
+// with its own transform and texture coordinates.
+#define ML_TEX_IRIDESCENCE 1
 
 #define ML_TEX_DEPTH 1
 #define ML_TEX_GBUFFER0 2
@@ -209,6 +217,9 @@
 #define ML_TEX_GBUFFER5 7
 // Its seventh (anisotropy), read by the same lighting: it samples no occlusion map either.
 #define ML_TEX_GBUFFER6 8
+// Its eighth (iridescence), read by the same lighting:
+// it samples no emissive map either.
+#define ML_TEX_GBUFFER7 9
 #define ML_TEX_RESOLVE_SOURCE 10  // the methods' colour (multisampled or supersampled), read by the resolve
 #define ML_TEX_SHADOW_ALPHA 11    // --shadows rays: the MASK images' alpha, a layer each (renderer/raytracing/shadow_alpha.h)
 // --shadows sampled (renderer/raytracing/sampled_shadows.h): what the lighting pass left, read by
@@ -239,6 +250,8 @@
 // And its seventh: the resolve writes no HDR image (the lighting, the resolve of samples, the
 // transparent pass and the post passes write that, none of them with the visibility resolve).
 #define ML_IMG_GBUFFER6 0
+// And its eighth: the resolve writes no LDR image (the tonemap, after the lighting, does).
+#define ML_IMG_GBUFFER7 1
 // --shadows sampled: the rays the compute lighting drew, traced by glsl/shadow_trace.comp; rows of
 // the frame's height a layer: the rays' origin, then each draw's target (sampled_shadow_lighting.glsl).
 // Shares its unit with the history: the reuse pass, which writes that, reads no rays.
@@ -258,7 +271,9 @@
 #define ML_SLOT_SHEEN_COLOR 10          // KHR_materials_sheen sheenColorTexture (RGB, sRGB)
 #define ML_SLOT_SHEEN_ROUGHNESS 11      // KHR_materials_sheen sheenRoughnessTexture (A)
 #define ML_SLOT_ANISOTROPY 12          // KHR_materials_anisotropy anisotropyTexture (RG direction, B strength)
-#define ML_TEXTURE_SLOTS 13
+#define ML_SLOT_IRIDESCENCE 13            // KHR_materials_iridescence iridescenceTexture (R)
+#define ML_SLOT_IRIDESCENCE_THICKNESS 14  // KHR_materials_iridescence iridescenceThicknessTexture (G)
+#define ML_TEXTURE_SLOTS 15
 #define ML_CORE_TEXTURE_SLOTS 5   // the slots every material record holds (the rest: ML_FEATURES_EXTENDED_RECORD)
 
 // What a scene's materials use (ML_MATERIAL_FEATURES, a bit mask): every shader that samples a
@@ -283,8 +298,10 @@
 #define ML_FEATURE_ANISOTROPY 131072       // some material has KHR_materials_anisotropy with a strength above 0
                                            // (and the tangent stream: ML_FEATURE_NORMAL_MAP with it)
 #define ML_FEATURE_ANISOTROPY_MAP 262144   // ...with an anisotropy texture
+#define ML_FEATURE_IRIDESCENCE 524288      // some material has KHR_materials_iridescence with a factor above 0
+#define ML_FEATURE_IRIDESCENCE_MAP 1048576 // ...with an iridescence or thickness texture
 // The features whose materials need the whole record (every slot, the extensions' vec4s).
-#define ML_FEATURES_EXTENDED_RECORD (ML_FEATURE_SPECULAR | ML_FEATURE_CLEARCOAT | ML_FEATURE_SHEEN | ML_FEATURE_ANISOTROPY)
+#define ML_FEATURES_EXTENDED_RECORD (ML_FEATURE_SPECULAR | ML_FEATURE_CLEARCOAT | ML_FEATURE_SHEEN | ML_FEATURE_ANISOTROPY | ML_FEATURE_IRIDESCENCE)
 
 // Light types (docs/lights-and-shading.md). A point light stores this as its cone cosines: below
 // any cosine, so the spot test passes everywhere and the cone tests never reject it.

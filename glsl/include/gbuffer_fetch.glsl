@@ -20,14 +20,17 @@ layout(binding = ML_TEX_GBUFFER4) uniform sampler2D u_gTarget4;
 #if ML_GBUFFER_FLOAT_TARGETS >= 6
 layout(binding = ML_TEX_GBUFFER5) uniform sampler2D u_gTarget5;
 #endif
-#if ML_GBUFFER_FLOAT_TARGETS == 7
+#if ML_GBUFFER_FLOAT_TARGETS >= 7
 layout(binding = ML_TEX_GBUFFER6) uniform sampler2D u_gTarget6;
+#endif
+#if ML_GBUFFER_FLOAT_TARGETS == 8
+layout(binding = ML_TEX_GBUFFER7) uniform sampler2D u_gTarget7;
 #endif
 #endif
 
 GBufferTexel fetchGBuffer(ivec2 p) {
     GBufferTexel t;
-    t.target[0] = t.target[1] = t.target[2] = t.target[3] = t.target[4] = t.target[5] = t.target[6] = vec4(0.0);
+    t.target[0] = t.target[1] = t.target[2] = t.target[3] = t.target[4] = t.target[5] = t.target[6] = t.target[7] = vec4(0.0);
     t.bits = uvec4(0u);
 #if ML_GBUFFER_FLOAT_TARGETS == 0
     t.bits = texelFetch(u_gPacked, p, 0);
@@ -46,8 +49,11 @@ GBufferTexel fetchGBuffer(ivec2 p) {
 #if ML_GBUFFER_FLOAT_TARGETS >= 6
     if (gbufferUsesTarget5(t)) t.target[5] = texelFetch(u_gTarget5, p, 0);
 #endif
-#if ML_GBUFFER_FLOAT_TARGETS == 7
+#if ML_GBUFFER_FLOAT_TARGETS >= 7
     if (gbufferUsesTarget6(t)) t.target[6] = texelFetch(u_gTarget6, p, 0);
+#endif
+#if ML_GBUFFER_FLOAT_TARGETS == 8
+    if (gbufferUsesTarget7(t)) t.target[7] = texelFetch(u_gTarget7, p, 0);
 #endif
 #endif
     return t;

@@ -36,7 +36,11 @@
 //                  on N's side: a normal map tilts N under 90 degrees from Ng), written and read only
 //                  at pixels with a > 0 (the base colour green's sign bit says which), targets 2 to 5
 //                  with it.                                                                    112 B
-// The lossy layouts hold neither specular, unlit, clearcoat, sheen nor anisotropy (the renderer
+//                  Where the scene has KHR_materials_iridescence, a target 7 RGBA32F: the film's
+//                  strength, thickness (nm) and IOR, written and read only at pixels with a film
+//                  (the base colour blue's sign bit says which), targets 2 to 6 with it (target 6
+//                  never written nor read where the scene has no anisotropy).                  128 B
+// The lossy layouts hold neither specular, unlit, clearcoat, sheen, anisotropy nor iridescence (the renderer
 // warns where a scene has them).
 // The lossy layouts lose what a bright many-light sum makes visible on glossy, normal-mapped
 // content (docs/accuracy-and-stability.md#g-buffer-precision-on-glossy-normal-mapped-surfaces).
@@ -52,15 +56,19 @@
 // Its target 4 (clearcoat) where the scene has a coat; targets 2 and 3 then exist too.
 // Its target 5 (sheen) where the scene has a sheen; targets 2 to 4 then exist too.
 // Its target 6 (anisotropy) where the scene has an anisotropic lobe; targets 2 to 5 then exist too.
+// Its target 7 (iridescence) where the scene has a film; targets 2 to 6 then exist too.
 #define ML_GBUFFER_EXACT_CLEARCOAT ML_HAS(ML_FEATURE_CLEARCOAT)
 #define ML_GBUFFER_EXACT_SHEEN ML_HAS(ML_FEATURE_SHEEN)
 #define ML_GBUFFER_EXACT_ANISOTROPY ML_HAS(ML_FEATURE_ANISOTROPY)
+#define ML_GBUFFER_EXACT_IRIDESCENCE ML_HAS(ML_FEATURE_IRIDESCENCE)
 #define ML_GBUFFER_EXACT_MATERIAL_EXTENSIONS                                                                   \
     (ML_HAS(ML_FEATURE_SPECULAR) || ML_HAS(ML_FEATURE_UNLIT) || ML_GBUFFER_EXACT_CLEARCOAT || ML_GBUFFER_EXACT_SHEEN || \
-     ML_GBUFFER_EXACT_ANISOTROPY)
+     ML_GBUFFER_EXACT_ANISOTROPY || ML_GBUFFER_EXACT_IRIDESCENCE)
 #define ML_GBUFFER_EXACT_EXTRAS (ML_HAS(ML_FEATURE_EMISSIVE) || ML_HAS(ML_FEATURE_OCCLUSION_MAP) || ML_GBUFFER_EXACT_MATERIAL_EXTENSIONS)
 
-#if ML_GBUFFER_FORMAT == ML_GBUFFER_EXACT && ML_GBUFFER_EXACT_ANISOTROPY
+#if ML_GBUFFER_FORMAT == ML_GBUFFER_EXACT && ML_GBUFFER_EXACT_IRIDESCENCE
+#define ML_GBUFFER_FLOAT_TARGETS 8
+#elif ML_GBUFFER_FORMAT == ML_GBUFFER_EXACT && ML_GBUFFER_EXACT_ANISOTROPY
 #define ML_GBUFFER_FLOAT_TARGETS 7
 #elif ML_GBUFFER_FORMAT == ML_GBUFFER_EXACT && ML_GBUFFER_EXACT_SHEEN
 #define ML_GBUFFER_FLOAT_TARGETS 6
@@ -86,7 +94,7 @@
 
 // One pixel of the G-buffer as its targets hold it: float targets, or the one packed target.
 struct GBufferTexel {
-    vec4 target[7];
+    vec4 target[8];
     uvec4 bits;  // the packed layout's one RGBA32UI texel
 };
 
@@ -130,7 +138,7 @@ vec3 unpackRgb9e5(uint v) {
 // that is never negative, so that the pixels without (most of them) neither write nor read them:
 // target 2 (emissive, occlusion) in its roughness's, target 3 (specular, unlit) in its metallic's,
 // target 4 (clearcoat) in its distance's, target 5 (sheen) in its base colour red's, target 6
-// (anisotropy) in its base colour green's.
+// (anisotropy) in its base colour green's, target 7 (iridescence) in its base colour blue's.
 const uint kGBufferSignFlag = 0x80000000u;
 float withoutSignFlag(float v) { return uintBitsToFloat(floatBitsToUint(v) & ~kGBufferSignFlag); }
 bool signFlagged(float v) { return (floatBitsToUint(v) & kGBufferSignFlag) != 0u; }
@@ -159,6 +167,15 @@ bool gbufferUsesTarget3(GBufferTexel t) {
 bool gbufferUsesTarget4(GBufferTexel t) {
 #if ML_GBUFFER_FORMAT == ML_GBUFFER_EXACT && ML_GBUFFER_EXACT_CLEARCOAT
     return signFlagged(t.target[0].x);
+#else
+    return false;
+#endif
+}
+
+// ...its target 7, known from target 1.
+bool gbufferUsesTarget7(GBufferTexel t) {
+#if ML_GBUFFER_FORMAT == ML_GBUFFER_EXACT && ML_GBUFFER_EXACT_IRIDESCENCE
+    return signFlagged(t.target[1].b);
 #else
     return false;
 #endif
@@ -194,7 +211,7 @@ void anisotropyStorageFrame(vec3 n, vec3 t, out vec3 e, out vec3 u) {
 
 GBufferTexel encodeGBuffer(SurfacePoint s) {
     GBufferTexel t;
-    t.target[0] = t.target[1] = t.target[2] = t.target[3] = t.target[4] = t.target[5] = t.target[6] = vec4(0.0);
+    t.target[0] = t.target[1] = t.target[2] = t.target[3] = t.target[4] = t.target[5] = t.target[6] = t.target[7] = vec4(0.0);
     t.bits = uvec4(0u);
 #if ML_GBUFFER_FORMAT == ML_GBUFFER_EXACT
     uint roughnessBits = floatBitsToUint(s.roughness);
@@ -221,6 +238,11 @@ GBufferTexel encodeGBuffer(SurfacePoint s) {
         greenBits |= kGBufferSignFlag;
     }
 #endif
+    uint blueBits = floatBitsToUint(s.baseColor.b);
+#if ML_GBUFFER_EXACT_IRIDESCENCE
+    t.target[7] = vec4(s.iridescence, s.iridescenceThickness, s.iridescenceIor, 0.0);
+    if (s.iridescence > 0.0) blueBits |= kGBufferSignFlag;
+#endif
     uint metallicBits = floatBitsToUint(s.metallic);
 #if ML_GBUFFER_EXACT_MATERIAL_EXTENSIONS
     bool extended = false;
@@ -239,7 +261,7 @@ GBufferTexel encodeGBuffer(SurfacePoint s) {
     if (extended) metallicBits |= kGBufferSignFlag;
 #endif
     t.target[0] = vec4(uintBitsToFloat(distanceBits), octEncode(s.normal), uintBitsToFloat(roughnessBits));
-    t.target[1] = vec4(uintBitsToFloat(redBits), uintBitsToFloat(greenBits), s.baseColor.b, uintBitsToFloat(metallicBits));
+    t.target[1] = vec4(uintBitsToFloat(redBits), uintBitsToFloat(greenBits), uintBitsToFloat(blueBits), uintBitsToFloat(metallicBits));
 #elif ML_GBUFFER_FORMAT == ML_GBUFFER_STANDARD
     t.target[0] = vec4(s.normal, s.occlusion);
     t.target[1] = vec4(s.baseColor, s.metallic);
@@ -263,7 +285,7 @@ void decodeGBuffer(GBufferTexel t, inout SurfacePoint s) {
 #if ML_GBUFFER_FORMAT == ML_GBUFFER_EXACT
     s.normal = octDecode(t.target[0].yz);
     s.roughness = withoutSignFlag(t.target[0].w);
-    s.baseColor = vec3(withoutSignFlag(t.target[1].r), withoutSignFlag(t.target[1].g), t.target[1].b);
+    s.baseColor = vec3(withoutSignFlag(t.target[1].r), withoutSignFlag(t.target[1].g), withoutSignFlag(t.target[1].b));
     s.metallic = withoutSignFlag(t.target[1].w);
     s.occlusion = 1.0;
     if (gbufferUsesTarget2(t)) {
@@ -308,6 +330,13 @@ void decodeGBuffer(GBufferTexel t, inout SurfacePoint s) {
         float w = t.target[6].w;
         s.anisotropyB = sqrt(max(1.0 - w * w, 0.0)) * e + w * u;
     }
+#endif
+#if ML_GBUFFER_EXACT_IRIDESCENCE
+    // Unflagged pixels have no film.
+    vec4 film = gbufferUsesTarget7(t) ? t.target[7] : vec4(0.0, 0.0, 1.0, 0.0);
+    s.iridescence = film.x;
+    s.iridescenceThickness = film.y;
+    s.iridescenceIor = film.z;
 #endif
 #elif ML_GBUFFER_FORMAT == ML_GBUFFER_STANDARD
     s.normal = normalize(t.target[0].xyz);  // 16-bit storage: restore unit length
@@ -357,6 +386,11 @@ void decodeGBuffer(GBufferTexel t, inout SurfacePoint s) {
     s.anisotropyT = vec3(1.0, 0.0, 0.0);
     s.anisotropyB = vec3(0.0, 1.0, 0.0);
     s.anisotropyStrength = 0.0;
+#endif
+#if ML_HAS(ML_FEATURE_IRIDESCENCE)
+    s.iridescence = 0.0;
+    s.iridescenceThickness = 0.0;
+    s.iridescenceIor = 1.0;
 #endif
 #endif
     deriveShadingTerms(s);

@@ -30,6 +30,8 @@ struct Material {
     vec4 sheen;
     // KHR_materials_anisotropy: cos and sin of the rotation, the strength, 0.
     vec4 anisotropy;
+    // KHR_materials_iridescence: factor, the film's IOR, its thickness's minimum and maximum (nm).
+    vec4 iridescence;
 #endif
 };
 layout(std430, binding = ML_SSBO_MATERIALS) readonly buffer MaterialBuffer { Material materials[]; };
@@ -54,6 +56,11 @@ layout(binding = ML_TEX_SHEEN_ROUGHNESS) uniform sampler2D u_sheenRoughnessTextu
 #endif
 #if ML_HAS(ML_FEATURE_ANISOTROPY_MAP)
 layout(binding = ML_TEX_ANISOTROPY) uniform sampler2D u_anisotropyTexture;  // linear; RG direction, B strength
+#endif
+#if ML_HAS(ML_FEATURE_IRIDESCENCE_MAP)
+// Both of KHR_materials_iridescence's maps: one image on one unit (bindings.h), each slot with its
+// own transform and texture coordinates.
+layout(binding = ML_TEX_IRIDESCENCE) uniform sampler2D u_iridescenceTexture;  // linear; R strength, G thickness
 #endif
 
 // Where a point samples its material: its UV sets and their screen-space gradients, which every
@@ -222,6 +229,18 @@ SurfacePoint surfaceFromMaterial(Material m, vec3 worldPos, vec3 worldNormal, ve
     if (hasTexture(m, ML_SLOT_SHEEN_COLOR)) s.sheenColor *= sampleMaterialTexture(u_sheenColorTexture, m, ML_SLOT_SHEEN_COLOR, c).rgb;
     if (hasTexture(m, ML_SLOT_SHEEN_ROUGHNESS))
         s.sheenRoughness *= sampleMaterialTexture(u_sheenRoughnessTexture, m, ML_SLOT_SHEEN_ROUGHNESS, c).a;
+#endif
+#endif
+#if ML_HAS(ML_FEATURE_IRIDESCENCE)
+    // KHR_materials_iridescence: the thickness is the maximum where there is no thickness map.
+    s.iridescence = m.iridescence.x;
+    s.iridescenceIor = m.iridescence.y;
+    s.iridescenceThickness = m.iridescence.w;
+#if ML_HAS(ML_FEATURE_IRIDESCENCE_MAP)
+    if (hasTexture(m, ML_SLOT_IRIDESCENCE)) s.iridescence *= sampleMaterialTexture(u_iridescenceTexture, m, ML_SLOT_IRIDESCENCE, c).r;
+    if (hasTexture(m, ML_SLOT_IRIDESCENCE_THICKNESS))
+        s.iridescenceThickness =
+            mix(m.iridescence.z, m.iridescence.w, sampleMaterialTexture(u_iridescenceTexture, m, ML_SLOT_IRIDESCENCE_THICKNESS, c).g);
 #endif
 #endif
     deriveShadingTerms(s);

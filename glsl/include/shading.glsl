@@ -64,6 +64,15 @@
 //     (the specification's and the Sample Viewer's height-correlated anisotropic Smith, clamped as
 //     they clamp it); F and the diffuse as above. Where a is 0 the isotropic D Vis above, to the
 //     bit. Under Blinn-Phong the lobe stays isotropic (the extension defines GGX's).
+//   KHR_materials_iridescence: a thin film of IOR eta_f >= 1 and thickness d (nm) over the
+//     material (under any coat or sheen), of strength k_i. Its Fresnel F_i (Belcour and Barla 2017,
+//     as the extension writes it: iridescentFresnel below) replaces F by mix(F, F_i, k_i) in GGX's
+//     specular term and the diffuse's weight by 1 - mix(Fd, max(F_i), k_i) (the extension's
+//     rgb_mix), F_i taken at |V.H| for each light, with F0 the material's f0 (metals: the base
+//     colour; KHR_materials_specular's w c for dielectrics) as the film's base. Under Blinn-Phong F0
+//     becomes mix(f0, F_i(|V.H|), k_i). The unlit terms reflect the ambient off the film at |N.V|:
+//     f0 becomes mix(f0, F_i(|N.V|), k_i). A thickness of 0 is no film (F_i = F). --specular off
+//     leaves it out (a specular layer).
 
 #include "include/material_features.glsl"
 
@@ -157,6 +166,11 @@ struct SurfacePoint {
     float anisotropyStrength;  // a in [0, 1] (0: the isotropic lobe)
     vec3 anisotropyB;          // B_a = normalize(Ng x T)
 #endif
+#if ML_HAS(ML_FEATURE_IRIDESCENCE)
+    float iridescence;           // KHR_materials_iridescence: the film's strength k_i (0: no film)
+    float iridescenceIor;        // eta_f
+    float iridescenceThickness;  // d, nm (0: no film)
+#endif
     // Derived by deriveShadingTerms: what the light loop reads, and the unlit term, worked out
     // before the loop so that the material's inputs need not stay in registers through it.
     vec3 diffuse;
@@ -239,6 +253,68 @@ float spotAttenuation(float cosToAxis, float cosInner, float cosOuter) {
     return t * t;
 }
 
+#if ML_HAS(ML_FEATURE_IRIDESCENCE)
+// Does the film take part? Not where there is none (no strength or no thickness), nor under
+// --specular off (a specular layer).
+bool iridescent(SurfacePoint s) { return s.iridescence > 0.0 && s.iridescenceThickness > 0.0 && specularEnabled(); }
+
+// The CIE XYZ colour matching functions' Fourier transform at phase `phase` (2 pi OPD / nm), by
+// Belcour and Barla's Gaussian fit, shifted by `shift`, in linear Rec. 709 (the extension's
+// evalSensitivity).
+vec3 filmSensitivity(float phase, vec3 shift) {
+    const vec3 amplitude = vec3(5.4856e-13, 4.4201e-13, 5.2481e-13);
+    const vec3 centre = vec3(1.6810e+06, 1.7953e+06, 2.2084e+06);
+    const vec3 variance = vec3(4.3278e+09, 9.3046e+09, 6.6121e+09);
+    vec3 xyz = amplitude * sqrt(2.0 * kPi * variance) * cos(centre * phase + shift) * exp(-phase * phase * variance);
+    xyz.x += 9.7470e-14 * sqrt(2.0 * kPi * 4.5282e+09) * cos(2.2399e+06 * phase + shift.x) * exp(-4.5282e+09 * phase * phase);
+    xyz /= 1.0685e-7;
+    return mat3(3.2404542, -0.9692660, 0.0556434, -1.5371385, 1.8760108, -0.2040259, -0.4985314, 0.0415560, 1.0572252) * xyz;
+}
+
+// F_i: the film's reflectance at cosine cosTheta1 from the outside (air), over a base of
+// reflectance f0 at normal incidence (the extension's iridescent_fresnel; Schlick at both
+// interfaces, the Airy sum's first two orders integrated over the spectrum).
+vec3 iridescentFresnel(SurfacePoint s, float cosTheta1) {
+    float eta = s.iridescenceIor;
+    float sinTheta2Sq = (1.0 - cosTheta1 * cosTheta1) / (eta * eta);
+    float cosTheta2 = sqrt(1.0 - sinTheta2Sq);  // never total reflection: eta >= 1 (the loader's rule)
+    // Outside to film: R12 by Schlick; its phase is 0 (the film is denser), the way back pi.
+    float r0 = (eta - 1.0) / (eta + 1.0);
+    float q1 = 1.0 - cosTheta1;
+    float q1Sq = q1 * q1;
+    float r12 = r0 * r0 + (1.0 - r0 * r0) * (q1Sq * q1Sq * q1);
+    float t121 = 1.0 - r12;
+    // Film to base: the base's IOR from its F0 (guarded against F0 = 1), R23 by Schlick at theta2.
+    vec3 sqrtF0 = sqrt(min(s.f0 + 1e-4, vec3(0.9999)));
+    vec3 baseIor = (1.0 + sqrtF0) / (1.0 - sqrtF0);
+    vec3 r1 = (baseIor - eta) / (baseIor + eta);
+    float q2 = 1.0 - cosTheta2;
+    float q2Sq = q2 * q2;
+    vec3 r23 = r1 * r1 + (1.0 - r1 * r1) * (q2Sq * q2Sq * q2);
+    vec3 phi = vec3(kPi) + mix(vec3(0.0), vec3(kPi), lessThan(baseIor, vec3(eta)));
+    // The optical path difference (nm) and the Airy sum: its mean, then two orders.
+    float opd = 2.0 * eta * s.iridescenceThickness * cosTheta2;
+    vec3 r123 = clamp(r12 * r23, 1e-5, 0.9999);
+    vec3 rs = t121 * t121 * r23 / (1.0 - r123);
+    vec3 reflectance = r12 + rs;
+    vec3 cm = rs - t121;
+    vec3 sqrtR123 = sqrt(r123);
+    for (int m = 1; m <= 2; ++m) {
+        cm *= sqrtR123;
+        reflectance += cm * 2.0 * filmSensitivity(float(m) * 2.0 * kPi * opd * 1e-9, float(m) * phi);
+    }
+    return max(reflectance, vec3(0.0));
+}
+#endif
+
+// The F0 the unlit terms reflect the ambient with: the film's, at N.V, mixed in where there is one.
+vec3 unlitF0(SurfacePoint s, vec3 viewDir) {
+#if ML_HAS(ML_FEATURE_IRIDESCENCE)
+    if (iridescent(s)) return mix(s.f0, iridescentFresnel(s, abs(dot(s.normal, viewDir))), s.iridescence);
+#endif
+    return s.f0;
+}
+
 // glTF's BRDF (appendix B) for unit l, v, n with N.L > 0, with the height-correlated Smith
 // visibility of Khronos' Sample Viewer, Filament and Bevy (the appendix writes the separable one;
 // they differ at grazing angles). 1 - (N.H)^2 as |N x H|^2: near the peak of a small alpha, the
@@ -289,6 +365,20 @@ vec3 ggxBrdf(SurfacePoint s, vec3 viewDir, vec3 l, float nDotL) {
 #else
     float distributionVisibility = ggxDistributionVisibility(nDotH, nCrossH, nDotL, nDotV, a2);
 #endif
+#if ML_HAS(ML_FEATURE_IRIDESCENCE)
+    if (iridescent(s)) {
+        // The film's Fresnel mixed into F, and its largest channel into the diffuse's weight.
+        vec3 film = iridescentFresnel(s, vDotH);
+#if ML_HAS(ML_FEATURE_SPECULAR)
+        vec3 plainDiffuseFresnel = diffuseFresnel;
+#else
+        vec3 plainDiffuseFresnel = fresnel;
+#endif
+        vec3 filmFresnel = mix(fresnel, film, s.iridescence);
+        vec3 filmDiffuseFresnel = mix(plainDiffuseFresnel, vec3(max(film.r, max(film.g, film.b))), s.iridescence);
+        return (1.0 - filmDiffuseFresnel) * s.diffuseOverPi + filmFresnel * distributionVisibility;
+    }
+#endif
     // (1 - F) diffuse / pi + F D Vis, as one multiply-add a channel.
 #if ML_HAS(ML_FEATURE_SPECULAR)
     // (1 - Fd) diffuse / pi + F D Vis: the last term is an exact zero where Fd is F.
@@ -304,6 +394,10 @@ vec3 surfaceBrdf(SurfacePoint s, vec3 viewDir, vec3 l, float nDotL) {
     if (!specularEnabled()) return s.diffuse;
     vec3 h = normalize(l + viewDir);
     float spec = pow(max(dot(s.normal, h), 0.0), s.shininess);
+#if ML_HAS(ML_FEATURE_IRIDESCENCE)
+    if (iridescent(s))
+        return s.diffuse + mix(s.f0, iridescentFresnel(s, abs(dot(viewDir, h))), s.iridescence) * ((s.shininess + 8.0) / 8.0) * spec;
+#endif
     return s.diffuse + s.specular * spec;
 }
 
@@ -353,7 +447,7 @@ vec3 sheenReflected(SurfacePoint s, vec3 viewDir, vec3 l, float nDotL) {
 // The unlit terms under the sheen: the ambient dimmed by E(N.V), and reflected off the sheen.
 vec3 sheenUnlit(SurfacePoint s, vec3 viewDir) {
     float albedo = sheenAlbedo(s, max(abs(dot(s.normal, viewDir)), 1e-4));
-    return ambientStrength() * s.occlusion * ((s.diffuse + s.f0) * (1.0 - s.sheenMax * albedo) + s.sheenColor * albedo) + s.emissive;
+    return ambientStrength() * s.occlusion * ((s.diffuse + unlitF0(s, viewDir)) * (1.0 - s.sheenMax * albedo) + s.sheenColor * albedo) + s.emissive;
 }
 #endif
 
@@ -449,6 +543,9 @@ vec3 shadeDirectionalLight(SurfacePoint s, vec3 viewDir, vec3 direction, vec3 co
 // the ambient's reflection off the coat).
 vec3 shadeUnlit(SurfacePoint s, vec3 viewDir) {
     vec3 unlit = s.unlit;
+#if ML_HAS(ML_FEATURE_IRIDESCENCE)
+    if (iridescent(s)) unlit = ambientStrength() * s.occlusion * (s.diffuse + unlitF0(s, viewDir)) + s.emissive;
+#endif
 #if ML_HAS(ML_FEATURE_SHEEN)
     if (sheened(s)) unlit = sheenUnlit(s, viewDir);
 #endif

@@ -124,6 +124,42 @@ glm::vec3 ggxBrdf(const ShadingTerms& t, const glm::vec3& n, const glm::vec3& v,
     return diffuseOverPi + fresnel * (distributionVisibility - diffuseOverPi) + (fresnel - diffuseFresnel) * diffuseOverPi;
 }
 
+glm::vec3 iridescentFresnel(float cosTheta1, float filmIor, float thicknessNm, const glm::vec3& f0) {
+    const float eta = filmIor;
+    const float cosTheta2 = std::sqrt(1.0f - (1.0f - cosTheta1 * cosTheta1) / (eta * eta));
+    const float r0 = (eta - 1.0f) / (eta + 1.0f);
+    const float r12 = r0 * r0 + (1.0f - r0 * r0) * std::pow(1.0f - cosTheta1, 5.0f);
+    const float t121 = 1.0f - r12;
+    const glm::vec3 sqrtF0 = glm::sqrt(glm::min(f0 + 1e-4f, glm::vec3(0.9999f)));
+    const glm::vec3 baseIor = (1.0f + sqrtF0) / (1.0f - sqrtF0);
+    const glm::vec3 r1 = (baseIor - eta) / (baseIor + eta);
+    const glm::vec3 r23 = r1 * r1 + (1.0f - r1 * r1) * std::pow(1.0f - cosTheta2, 5.0f);
+    glm::vec3 phi(kPi);
+    for (int c = 0; c < 3; ++c)
+        if (baseIor[c] < eta) phi[c] += kPi;
+    const float opd = 2.0f * eta * thicknessNm * cosTheta2;
+    const glm::vec3 r123 = glm::clamp(r12 * r23, 1e-5f, 0.9999f);
+    const glm::vec3 rs = t121 * t121 * r23 / (1.0f - r123);
+    glm::vec3 reflectance = r12 + rs;
+    glm::vec3 cm = rs - t121;
+    // The sensitivity's Gaussian fit (Belcour and Barla), XYZ to linear Rec. 709.
+    const glm::vec3 amplitude(5.4856e-13f, 4.4201e-13f, 5.2481e-13f), centre(1.6810e+06f, 1.7953e+06f, 2.2084e+06f),
+        variance(4.3278e+09f, 9.3046e+09f, 6.6121e+09f);
+    const glm::mat3 xyzToRec709(3.2404542f, -0.9692660f, 0.0556434f, -1.5371385f, 1.8760108f, -0.2040259f, -0.4985314f, 0.0415560f,
+                                1.0572252f);
+    for (int m = 1; m <= 2; ++m) {
+        cm *= glm::sqrt(r123);
+        const float phase = static_cast<float>(m) * 2.0f * kPi * opd * 1e-9f;
+        const glm::vec3 shift = static_cast<float>(m) * phi;
+        glm::vec3 xyz = amplitude * glm::sqrt(2.0f * kPi * variance) * glm::cos(centre * phase + shift) * glm::exp(-phase * phase * variance);
+        xyz.x += 9.7470e-14f * std::sqrt(2.0f * kPi * 4.5282e+09f) * std::cos(2.2399e+06f * phase + shift.x) *
+                 std::exp(-4.5282e+09f * phase * phase);
+        xyz /= 1.0685e-7f;
+        reflectance += cm * 2.0f * (xyzToRec709 * xyz);
+    }
+    return glm::max(reflectance, glm::vec3(0.0f));
+}
+
 float clearcoatLayerWeight(const SurfaceSample& s, const glm::vec3& v) {
     return s.clearcoat * (0.04f + 0.96f * std::pow(1.0f - std::abs(glm::dot(s.clearcoatNormal, v)), 5.0f));
 }
@@ -182,9 +218,14 @@ glm::vec3 shadeReference(const SurfaceSample& s, const glm::vec3& eye, const std
     const bool sheen = specular && sheenMax > 0.0f;
     const float nDotV = std::max(std::abs(glm::dot(s.normal, v)), kSheenMinCos);
     const float viewAlbedo = sheen ? sheenAlbedo(nDotV, s.sheenRoughness) : 0.0f;
+    // KHR_materials_iridescence (none under --specular off either): the film's Fresnel at a cosine,
+    // over the material's f0; the ambient reflects off it at N.V.
+    const bool film = specular && s.iridescence > 0.0f && s.iridescenceThickness > 0.0f;
+    const auto filmFresnel = [&](float cosTheta) { return iridescentFresnel(cosTheta, s.iridescenceIor, s.iridescenceThickness, t.f0); };
+    const glm::vec3 unlitF0 = film ? glm::mix(t.f0, filmFresnel(std::abs(glm::dot(s.normal, v))), s.iridescence) : t.f0;
     const glm::vec3 unlit =
-        sheen ? ambient * s.occlusion * ((t.diffuse + t.f0) * (1.0f - sheenMax * viewAlbedo) + s.sheenColor * viewAlbedo) + s.emissive
-              : ambient * s.occlusion * (t.diffuse + t.f0) + s.emissive;
+        sheen ? ambient * s.occlusion * ((t.diffuse + unlitF0) * (1.0f - sheenMax * viewAlbedo) + s.sheenColor * viewAlbedo) + s.emissive
+              : ambient * s.occlusion * (t.diffuse + unlitF0) + s.emissive;
     glm::vec3 color = unlit * (1.0f - k) + ambient * s.occlusion * k;
     // The material's BRDF times N.L for a light from unit direction `dir`.
     const auto baseReflected = [&](const glm::vec3& dir) {
@@ -192,11 +233,23 @@ glm::vec3 shadeReference(const SurfaceSample& s, const glm::vec3& eye, const std
         if (nDotL <= 0.0f) return glm::vec3(0.0f);
         if (model.brdf == Brdf::Ggx) {
             if (!specular) return nDotL * (t.diffuse * (1.0f / kPi));
-            return nDotL * ggxBrdf(t, s.normal, v, dir);
+            if (!film) return nDotL * ggxBrdf(t, s.normal, v, dir);
+            // F and the diffuse's Fd with the film's Fresnel (and its largest channel) mixed in.
+            const glm::vec3 h = glm::normalize(dir + v);
+            const float q5 = std::pow(1.0f - std::abs(glm::dot(v, h)), 5.0f);
+            const glm::vec3 iridescent = filmFresnel(std::abs(glm::dot(v, h)));
+            const glm::vec3 fresnel = glm::mix(t.f0 + (t.f90 - t.f0) * q5, iridescent, s.iridescence);
+            const glm::vec3 diffuseFresnel = glm::mix(t.f0Diffuse + (t.f90 - t.f0Diffuse) * q5,
+                                                      glm::vec3(std::max({iridescent.r, iridescent.g, iridescent.b})), s.iridescence);
+            const float distributionVisibility = ggxDistributionVisibility(s.normal, v, dir, t.alpha * t.alpha);
+            return nDotL * ((1.0f - diffuseFresnel) * t.diffuse * (1.0f / kPi) + fresnel * distributionVisibility);
         }
         if (!specular) return nDotL * t.diffuse;
         const glm::vec3 h = glm::normalize(dir + v);
         const float spec = std::pow(std::max(glm::dot(s.normal, h), 0.0f), t.shininess);
+        if (film)
+            return nDotL * (t.diffuse + glm::mix(t.f0, filmFresnel(std::abs(glm::dot(v, h))), s.iridescence) *
+                                            ((t.shininess + 8.0f) / 8.0f) * spec);
         return nDotL * (t.diffuse + t.specular * spec);
     };
     // ...under the sheen, where there is one: its lobe (pi times it under Blinn-Phong, whose f is

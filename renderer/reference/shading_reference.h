@@ -49,6 +49,10 @@ struct SurfaceSample {
     float anisotropyStrength = 0.0f;
     glm::vec3 anisotropyT{1.0f, 0.0f, 0.0f};
     glm::vec3 anisotropyB{0.0f, 1.0f, 0.0f};
+    // KHR_materials_iridescence: the film's strength (0: none), thickness (nm; 0: none) and IOR.
+    float iridescence = 0.0f;
+    float iridescenceThickness = 0.0f;
+    float iridescenceIor = 1.3f;
 };
 
 // The metallic-roughness material's terms, shared by every method.
@@ -94,6 +98,10 @@ float clearcoatGgx(const SurfaceSample& s, const glm::vec3& v, const glm::vec3& 
 float sheenAlbedo(float mu, float sheenRoughness);
 float sheenCharlieTimesNDotL(const glm::vec3& n, const glm::vec3& v, const glm::vec3& l, float nDotL, float nDotV,
                              float sheenRoughness);
+
+// KHR_materials_iridescence (glsl/include/shading.glsl has the formulas): the film's Fresnel F_i at
+// cosine cosTheta1 from air, over a base of normal-incidence reflectance f0.
+glm::vec3 iridescentFresnel(float cosTheta1, float filmIor, float thicknessNm, const glm::vec3& f0);
 
 // The linear radiance the shaders compute for a surface point seen from `eye`, from lights of
 // every type (glsl/include/shading.glsl and sun_lights.glsl), in the given light model; without

@@ -53,6 +53,10 @@ std::uint32_t materialFeatures(const Scene& scene) {
             f |= ML_FEATURE_ANISOTROPY | ML_FEATURE_NORMAL_MAP;
             if (uses(m.anisotropyTexture)) f |= ML_FEATURE_ANISOTROPY_MAP;
         }
+        if (m.iridescenceModelled()) {
+            f |= ML_FEATURE_IRIDESCENCE;
+            if (uses(m.iridescenceTexture) | uses(m.iridescenceThicknessTexture)) f |= ML_FEATURE_IRIDESCENCE_MAP;
+        }
         if (m.alphaTested()) f |= ML_FEATURE_ALPHA_TEST;
         if (m.blended()) f |= ML_FEATURE_BLEND;
     }
@@ -85,6 +89,8 @@ std::string describeMaterialFeatures(std::uint32_t features) {
         {ML_FEATURE_SHEEN_MAP, "sheen maps"},
         {ML_FEATURE_ANISOTROPY, "anisotropy"},
         {ML_FEATURE_ANISOTROPY_MAP, "anisotropy maps"},
+        {ML_FEATURE_IRIDESCENCE, "iridescence"},
+        {ML_FEATURE_IRIDESCENCE_MAP, "iridescence maps"},
     };
     std::string text;
     for (const auto& [bit, name] : kNames) {

@@ -25,14 +25,14 @@ constexpr GLuint kSlotUnits[ML_TEXTURE_SLOTS] = {ML_TEX_BASE_COLOR,       ML_TEX
                                                  ML_TEX_OCCLUSION,        ML_TEX_EMISSIVE,            ML_TEX_SPECULAR,
                                                  ML_TEX_SPECULAR_COLOR,   ML_TEX_CLEARCOAT,           ML_TEX_CLEARCOAT_ROUGHNESS,
                                                  ML_TEX_CLEARCOAT_NORMAL, ML_TEX_SHEEN_COLOR,         ML_TEX_SHEEN_ROUGHNESS,
-                                                 ML_TEX_ANISOTROPY};
+                                                 ML_TEX_ANISOTROPY,       ML_TEX_IRIDESCENCE,         ML_TEX_IRIDESCENCE};
 
 // Does the scene's material record hold every slot and the extensions' vec4s (bindings.h)?
 bool extendedRecord(std::uint32_t features) { return (features & ML_FEATURES_EXTENDED_RECORD) != 0; }
 
 // The slots a scene's material records and texture bindings hold: the extensions' only where some
 // material models one (KHR_materials_specular or ior, KHR_materials_clearcoat, KHR_materials_sheen,
-// KHR_materials_anisotropy).
+// KHR_materials_anisotropy, KHR_materials_iridescence).
 int materialSlots(std::uint32_t features) { return extendedRecord(features) ? ML_TEXTURE_SLOTS : ML_CORE_TEXTURE_SLOTS; }
 
 // The texture slots whose shader path this scene compiles in (a slot whose feature is off is never sampled).
@@ -57,6 +57,10 @@ std::array<const TextureRef*, ML_TEXTURE_SLOTS> sampledSlots(const Material& m, 
         slots[ML_SLOT_SHEEN_ROUGHNESS] = &m.sheenRoughnessTexture;
     }
     if ((features & ML_FEATURE_ANISOTROPY_MAP) && m.anisotropyModelled()) slots[ML_SLOT_ANISOTROPY] = &m.anisotropyTexture;
+    if ((features & ML_FEATURE_IRIDESCENCE_MAP) && m.iridescenceModelled()) {
+        slots[ML_SLOT_IRIDESCENCE] = &m.iridescenceTexture;  // both on one unit: the loader made them one texture
+        slots[ML_SLOT_IRIDESCENCE_THICKNESS] = &m.iridescenceThicknessTexture;
+    }
     return slots;
 }
 
@@ -133,6 +137,8 @@ SceneGpu::SceneGpu(const Scene& scene, TriangleOrder order) : features_(ml::mate
         if (m.sheenModelled()) g.sheen = glm::vec4(m.sheenColorFactor, m.sheenRoughnessFactor);
         if (m.anisotropyModelled())
             g.anisotropy = glm::vec4(std::cos(m.anisotropyRotation), std::sin(m.anisotropyRotation), m.anisotropyStrength, 0.0f);
+        if (m.iridescenceModelled())
+            g.iridescence = glm::vec4(m.iridescenceFactor, m.iridescenceIor, m.iridescenceThicknessMinimum, m.iridescenceThicknessMaximum);
         if (m.unlit) g.info.w |= ML_MATERIAL_UNLIT;
         TextureSet set{};
         bool textured = false;
@@ -271,9 +277,14 @@ const char* drawSubmissionName(DrawSubmission submission) {
 }
 
 void SceneGpu::bindTextureSet(int set) const {
+    // Slots that share a unit (KHR_materials_iridescence's two maps) bind the one with a texture:
+    // the loader made them one texture where both have one.
+    std::array<bool, 16> unitTextured{};
     for (int slot = 0; slot < materialSlots(features_); ++slot) {
         const SlotBinding b = set >= 0 && set < static_cast<int>(textureSets_.size()) ? textureSets_[static_cast<std::size_t>(set)][slot]
                                                                                      : SlotBinding{};
+        if (b.texture < 0 && unitTextured[kSlotUnits[slot]]) continue;
+        unitTextured[kSlotUnits[slot]] = b.texture >= 0;
         glBindTextureUnit(kSlotUnits[slot], b.texture >= 0 ? textures_[static_cast<std::size_t>(b.texture)].id() : white_.id());
         glBindSampler(kSlotUnits[slot], b.sampler >= 0 ? samplers_[static_cast<std::size_t>(b.sampler)].id() : defaultSampler_.id());
     }

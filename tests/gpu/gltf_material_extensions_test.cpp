@@ -2,6 +2,7 @@
 // KHR_materials_specular (factors and both maps), KHR_materials_clearcoat (factors, its three maps,
 // the emissive under it), KHR_materials_sheen (factors, both maps, under a coat),
 // KHR_materials_anisotropy (strength and rotation, its map, under a normal map, every light type),
+// KHR_materials_iridescence (a fixed thickness, a metal, one image for both maps, over a higher ior),
 // KHR_materials_pbrSpecularGlossiness (held to its conversion by hand) and KHR_materials_variants
 // (each variant drawn with its material). Every clustered method (both deferred resolves, the
 // visibility buffer, all in the exact G-buffer) is held to naive on each; the frame's pixel is
@@ -17,6 +18,7 @@
 
 #include "app/frame_options.h"
 #include "glsl/include/bindings.h"
+#include "renderer/gbuffer_format.h"
 #include "renderer/image/image.h"
 #include "renderer/reference/shading_reference.h"
 #include "renderer/scene/material_features.h"
@@ -63,6 +65,18 @@ glm::vec3 middlePixelPoint() {
     const float x = ((kWidth / 2 + 0.5f) / kWidth * 2.0f - 1.0f) * t * float(kWidth) / float(kHeight);
     const float y = (1.0f - (kHeight / 2 + 0.5f) / kHeight * 2.0f) * t;
     return {x, y, 0.0f};
+}
+
+// The CPU mirror's sample of the quad under the middle pixel: facing the camera (+z), of this
+// base colour, metallic and roughness.
+SurfaceSample middlePixelSample(glm::vec3 base, float metallic, float roughness) {
+    SurfaceSample s;
+    s.position = middlePixelPoint();
+    s.normal = glm::vec3(0.0f, 0.0f, 1.0f);
+    s.baseColor = base;
+    s.metallic = metallic;
+    s.roughness = roughness;
+    return s;
 }
 
 // The middle pixel against the CPU mirror's `s`, and the extension visible there: the mirror's
@@ -172,12 +186,7 @@ TEST_F(GltfMaterialExtensions, SpecularAndIorMatchNaiveAndTheCpuMirror) {
         FrameRenderer renderer(scene, lights, settings);
         const test::ReferenceFrame naive = test::expectClusteredVariantsMatchNaive(renderer, c.name);
 
-        SurfaceSample s;
-        s.position = middlePixelPoint();
-        s.normal = {0.0f, 0.0f, 1.0f};
-        s.baseColor = base;
-        s.metallic = c.metallic;
-        s.roughness = 0.35f;
+        SurfaceSample s = middlePixelSample(base, c.metallic, 0.35f);
         s.specularF0 = c.specularF0;
         s.specularWeight = c.specularWeight;
         const glm::vec3 mirror = shadeReference(s, kFrontView.eye, lights, settings.ambient, true, settings.lightModel);
@@ -237,11 +246,7 @@ TEST_F(GltfMaterialExtensions, ClearcoatMatchesNaiveAndTheCpuMirror) {
         FrameRenderer renderer(scene, lights, settings);
         const test::ReferenceFrame naive = test::expectClusteredVariantsMatchNaive(renderer, c.name);
 
-        SurfaceSample s;
-        s.position = middlePixelPoint();
-        s.normal = up;
-        s.baseColor = base;
-        s.roughness = 0.5f;
+        SurfaceSample s = middlePixelSample(base, 0.0f, 0.5f);
         s.emissive = c.emissive;
         s.clearcoat = c.clearcoat;
         s.clearcoatRoughness = c.clearcoatRoughness;
@@ -323,12 +328,7 @@ TEST_F(GltfMaterialExtensions, SpecularGlossinessMatchesItsConversionByHand) {
         // it. (With a metallic-roughness map the GPU's highlight is ~1e-3 off the mirror on
         // llvmpipe whichever file feeds it, so the maps are held to the conversion by hand only.)
         if (maps) continue;
-        SurfaceSample s;
-        s.position = middlePixelPoint();
-        s.normal = {0.0f, 0.0f, 1.0f};
-        s.baseColor = glm::vec3(diffuse);
-        s.metallic = 0.0f;
-        s.roughness = 1.0f - glossiness;
+        SurfaceSample s = middlePixelSample(glm::vec3(diffuse), 0.0f, 1.0f - glossiness);
         s.specularF0 = specular;
         s.specularWeight = 1.0f;
         const glm::vec3 mirror = shadeReference(s, kFrontView.eye, lights, settings.ambient, true, settings.lightModel);
@@ -427,11 +427,7 @@ TEST_F(GltfMaterialExtensions, SheenMatchesNaiveAndTheCpuMirror) {
         FrameRenderer renderer(scene, lights, settings);
         const test::ReferenceFrame naive = test::expectClusteredVariantsMatchNaive(renderer, c.name);
 
-        SurfaceSample s;
-        s.position = middlePixelPoint();
-        s.normal = glm::vec3(0.0f, 0.0f, 1.0f);
-        s.baseColor = base;
-        s.roughness = 0.5f;
+        SurfaceSample s = middlePixelSample(base, 0.0f, 0.5f);
         s.clearcoat = c.clearcoat;
         s.clearcoatRoughness = 0.2f;
         s.clearcoatNormal = s.normal;
@@ -587,6 +583,141 @@ TEST_F(GltfMaterialExtensions, AnisotropyWithoutTangentsIsLitIsotropicWithAWarni
         frames[withExtension] = test::expectClusteredVariantsMatchNaive(renderer, "no tangents").hdr.pixels;
     }
     EXPECT_EQ(frames[0], frames[1]) << "without tangents the lobe is not the plain material's";
+}
+
+struct IridescenceCase {
+    const char* name;
+    float factor, ior, thicknessMinimum, thicknessMaximum;
+    std::array<std::uint8_t, 4> texel;  // {0,0,0,0}: no maps; else the strength map (R), and the thickness map (G)
+    bool thicknessMap;                  // ...from the same image
+    std::array<std::uint8_t, 4> baseTexel;  // {0,0,0,0}: no base colour map
+    float metallic, baseIor;            // baseIor 0: no KHR_materials_ior
+    float iridescence, thickness;       // what the mirror takes: factor x R, mix(minimum, maximum, G)
+};
+
+// Quads under KHR_materials_iridescence (a fixed thickness, a metal, both maps from one image, over
+// a base of ior 2): every method holds to naive with a point, a spot and a directional light, and
+// the middle pixel to the CPU mirror; an iridescenceFactor of 0 compiles nothing in and leaves the
+// frame as it was without the extension.
+TEST_F(GltfMaterialExtensions, IridescenceMatchesNaiveAndTheCpuMirror) {
+    const std::array<std::uint8_t, 4> none{0, 0, 0, 0}, texel{200, 128, 0, 255}, baseTexel{255, 0, 255, 255};
+    const std::vector<IridescenceCase> cases = {
+        {"factor 1, thickness 400", 1.0f, 1.3f, 100.0f, 400.0f, none, false, none, 0.0f, 0.0f, 1.0f, 400.0f},
+        {"metal, film ior 1.8", 1.0f, 1.8f, 100.0f, 300.0f, none, false, none, 1.0f, 0.0f, 1.0f, 300.0f},
+        {"both maps, one image", 0.8f, 1.33f, 200.0f, 600.0f, texel, true, none, 0.0f, 0.0f, 0.8f * 200.0f / 255.0f,
+         200.0f + (600.0f - 200.0f) * (128.0f / 255.0f)},
+        {"over ior 2", 1.0f, 1.33f, 100.0f, 250.0f, none, false, none, 0.0f, 2.0f, 1.0f, 250.0f},
+        // The strength map alone (its unit's other slot empty) beside a base colour map (unit 0,
+        // which the extended record's slots must leave alone; 0 and 255, which every sRGB decode
+        // gives exactly, so that the white a lost binding falls back to shows): the thickness is
+        // the maximum.
+        {"strength map, base colour map", 1.0f, 1.5f, 100.0f, 350.0f, texel, false, baseTexel, 0.0f, 0.0f, 200.0f / 255.0f, 350.0f},
+    };
+    const glm::vec3 base(0.2f, 0.3f, 0.6f);
+    for (const IridescenceCase& c : cases) {
+        Gltf g;
+        json film = {{"iridescenceFactor", c.factor}, {"iridescenceIor", c.ior}, {"iridescenceThicknessMinimum", c.thicknessMinimum},
+                     {"iridescenceThicknessMaximum", c.thicknessMaximum}};
+        if (c.texel != none) {
+            const int texture = addFlatTexture(g, c.texel);
+            film["iridescenceTexture"] = {{"index", texture}};
+            if (c.thicknessMap) film["iridescenceThicknessTexture"] = {{"index", texture}};
+        }
+        json extensions = {{"KHR_materials_iridescence", film}};
+        if (c.baseIor > 0.0f) extensions["KHR_materials_ior"] = {{"ior", c.baseIor}};
+        json pbr = {{"baseColorFactor", {base.r, base.g, base.b, 1.0}}, {"metallicFactor", c.metallic}, {"roughnessFactor", 0.3}};
+        if (c.baseTexel != none) pbr["baseColorTexture"] = {{"index", addFlatTexture(g, c.baseTexel)}};
+        const int material = g.add("materials", {{"pbrMetallicRoughness", pbr}, {"extensions", extensions}});
+        g.doc["extensionsUsed"] = {"KHR_materials_iridescence", "KHR_materials_ior"};
+        const Scene scene = writeAndLoad(g, {square(g, 0.0f, 2.5f, material)}, "iridescence");
+        ASSERT_TRUE(materialFeatures(scene) & ML_FEATURE_IRIDESCENCE) << c.name;
+        EXPECT_EQ((materialFeatures(scene) & ML_FEATURE_IRIDESCENCE_MAP) != 0, c.texel != none) << c.name;
+        // A spot over the quad too: every light type goes through the film.
+        std::vector<Light> lights = testLights();
+        Light spot{{-0.5f, -0.3f, 1.5f}, 8.0f, {3.0f, 2.5f, 2.0f}};
+        spot.type = LightType::Spot;
+        spot.direction = glm::vec3(0.2f, 0.1f, -1.0f);
+        spot.innerConeAngle = 0.3f;
+        spot.outerConeAngle = 0.9f;
+        lights.push_back(spot);
+        const FrameSettings settings = test::smallFrame(scene, kFrontView, kWidth, kHeight);
+        FrameRenderer renderer(scene, lights, settings);
+        const test::ReferenceFrame naive = test::expectClusteredVariantsMatchNaive(renderer, c.name);
+
+        const glm::vec3 mappedBase =
+            c.baseTexel == none ? base
+                                : base * glm::vec3(srgbToLinear(c.baseTexel[0]), srgbToLinear(c.baseTexel[1]), srgbToLinear(c.baseTexel[2]));
+        SurfaceSample s = middlePixelSample(mappedBase, c.metallic, 0.3f);
+        if (c.baseIor > 0.0f) s.specularF0 = glm::vec3(dielectricF0(c.baseIor));
+        s.iridescence = c.iridescence;
+        s.iridescenceThickness = c.thickness;
+        s.iridescenceIor = c.ior;
+        SurfaceSample plain = s;
+        plain.iridescence = 0.0f;
+        expectMirrorPixelShowingTheExtension(naive, s, plain, lights, settings, c.name);
+    }
+
+    // iridescenceFactor 0 (with maps, a thickness and an ior) is no film: nothing compiles in, the
+    // frame is the plain material's to the bit.
+    expectSwitchedOffExtensionDrawsThePlainMaterial(
+        base,
+        [](Gltf& g) {
+            const int texture = addFlatTexture(g, {255, 255, 255, 255});
+            return json{{"KHR_materials_iridescence", {{"iridescenceIor", 1.8},
+                                                       {"iridescenceThicknessMaximum", 500.0},
+                                                       {"iridescenceTexture", {{"index", texture}}},
+                                                       {"iridescenceThicknessTexture", {{"index", texture}}}}}};
+        },
+        ML_FEATURE_IRIDESCENCE | ML_FEATURE_IRIDESCENCE_MAP, "iridescenceFactor 0");
+}
+
+// Every extension's lobe in one scene (a tile each: clear coat, sheen, anisotropy, iridescence,
+// specular, and a plain one): the exact G-buffer holds all eight targets at once, each tile flagged
+// in its own sign bit, and every method draws naive's frame.
+TEST_F(GltfMaterialExtensions, EveryLobeInOneSceneMatchesNaive) {
+    Gltf g;
+    const auto material = [&](const json& extensions) {
+        json m = {{"pbrMetallicRoughness", {{"baseColorFactor", {0.6, 0.4, 0.3, 1.0}}, {"metallicFactor", 0.0}, {"roughnessFactor", 0.4}}}};
+        if (!extensions.empty()) m["extensions"] = extensions;
+        return g.add("materials", m);
+    };
+    const std::vector<int> materials = {
+        material({{"KHR_materials_clearcoat", {{"clearcoatFactor", 1.0}, {"clearcoatRoughnessFactor", 0.1}}}}),
+        material({{"KHR_materials_sheen", {{"sheenColorFactor", {0.9, 0.2, 0.2}}, {"sheenRoughnessFactor", 0.5}}}}),
+        material({{"KHR_materials_anisotropy", {{"anisotropyStrength", 0.7}, {"anisotropyRotation", 0.5}}}}),
+        material({{"KHR_materials_iridescence", {{"iridescenceFactor", 1.0}, {"iridescenceThicknessMaximum", 400.0}}}}),
+        material({{"KHR_materials_ior", {{"ior", 2.0}}}}),
+        material(json::object()),
+    };
+    g.doc["extensionsUsed"] = {"KHR_materials_clearcoat", "KHR_materials_sheen", "KHR_materials_anisotropy",
+                               "KHR_materials_iridescence", "KHR_materials_ior"};
+    // A 3 x 2 grid of tiles facing the camera, 1.2 across.
+    std::vector<json> tiles;
+    for (std::size_t i = 0; i < materials.size(); ++i) {
+        const float x = -1.4f + 1.4f * float(i % 3), y = i < 3 ? 0.7f : -0.7f, h = 0.6f;
+        const json attributes = {{"POSITION", g.vec3({{x - h, y - h, 0}, {x + h, y - h, 0}, {x + h, y + h, 0}, {x - h, y + h, 0}})},
+                                 {"NORMAL", g.vec3({{0, 0, 1}, {0, 0, 1}, {0, 0, 1}, {0, 0, 1}})},
+                                 {"TEXCOORD_0", g.vec2({{0, 1}, {1, 1}, {1, 0}, {0, 0}})}};
+        tiles.push_back(primitive(attributes, g.indices({0, 1, 2, 0, 2, 3}), materials[i]));
+    }
+    const Scene scene = writeAndLoad(g, tiles, "every_lobe");
+    const std::uint32_t lobes = ML_FEATURE_CLEARCOAT | ML_FEATURE_SHEEN | ML_FEATURE_ANISOTROPY | ML_FEATURE_IRIDESCENCE | ML_FEATURE_SPECULAR;
+    ASSERT_EQ(materialFeatures(scene) & lobes, lobes);
+    EXPECT_EQ(gbufferExactTargets(materialFeatures(scene)), 8);
+    FrameRenderer renderer(scene, testLights(), test::smallFrame(scene, kFrontView, kWidth, kHeight));
+    const test::ReferenceFrame naive = test::expectClusteredVariantsMatchNaive(renderer, "every lobe");
+    // Each tile is lit and differs from the plain one (the lobes are there, not dropped alike).
+    const auto tilePixel = [&](std::size_t i) {
+        const glm::vec3 centre(-1.4f + 1.4f * float(i % 3), i < 3 ? 0.7f : -0.7f, 0.0f);
+        const float t = std::tan(glm::radians(30.0f)) * 4.0f;
+        const int px = int((centre.x / (t * float(kWidth) / float(kHeight)) + 1.0f) * 0.5f * kWidth);
+        const int py = int((1.0f - centre.y / t) * 0.5f * kHeight);
+        const float* p = naive.hdr.at(px, py);
+        return glm::vec3(p[0], p[1], p[2]);
+    };
+    const glm::vec3 plain = tilePixel(5);
+    EXPECT_GT(plain.r, 0.0f);
+    for (std::size_t i = 0; i + 1 < materials.size(); ++i) EXPECT_GT(glm::length(tilePixel(i) - plain), 1e-3f) << "tile " << i;
 }
 
 }  // namespace

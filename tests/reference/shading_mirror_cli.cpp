@@ -4,11 +4,15 @@
 //   eye(3) position(3) normal(3) base(3) metallic roughness ior specularFactor specularColor(3)
 //   unlit clearcoat clearcoatRoughness clearcoatNormal(3) sheenColor(3) sheenRoughness ambient
 //   sunDirection(3) sunColor(3) anisotropyStrength anisotropyRotation tangent(4) geometricNormal(3)
-//   anisotropyMapDirection(2)
+//   anisotropyMapDirection(2) [iridescence iridescenceThickness iridescenceIor]
+// (the last three optional: KHR_materials_iridescence's strength, thickness in nm and film IOR;
+// tests/reference/check_iridescence.py gives them)
 // and one line "r g b" of shadeReference's linear radiance on stdout, in float's shortest exact form.
 #include <algorithm>
 #include <cstdio>
 #include <iostream>
+#include <sstream>
+#include <string>
 
 #include "renderer/reference/shading_reference.h"
 #include "renderer/scene/material_features.h"
@@ -22,17 +26,21 @@ int main() {
     glm::vec3 ng;
     glm::vec2 mapDirection;
     int unlit;
-    while (std::cin >> eye.x >> eye.y >> eye.z >> s.position.x >> s.position.y >> s.position.z >> s.normal.x >>
+    for (std::string line; std::getline(std::cin, line);) {
+        std::istringstream in(line);
+        if (!(in >> eye.x >> eye.y >> eye.z >> s.position.x >> s.position.y >> s.position.z >> s.normal.x >>
            s.normal.y >> s.normal.z >> base.r >> base.g >> base.b >> s.metallic >> s.roughness >> ior >>
            specularFactor >> specularColor.r >> specularColor.g >> specularColor.b >> unlit >> s.clearcoat >>
            s.clearcoatRoughness >> s.clearcoatNormal.x >> s.clearcoatNormal.y >> s.clearcoatNormal.z >> s.sheenColor.r >>
            s.sheenColor.g >> s.sheenColor.b >> s.sheenRoughness >> ambient >>
            sunDirection.x >> sunDirection.y >> sunDirection.z >> sunColor.r >> sunColor.g >> sunColor.b >>
            s.anisotropyStrength >> rotation >> tangent.x >> tangent.y >> tangent.z >> tangent.w >> ng.x >> ng.y >> ng.z >>
-           mapDirection.x >> mapDirection.y) {
+           mapDirection.x >> mapDirection.y))
+            continue;
         // KHR_materials_anisotropy's directions as glsl/include/material.glsl makes them.
         if (s.anisotropyStrength > 0.0f && !anisotropyDirections(ng, tangent, mapDirection, rotation, s.anisotropyT, s.anisotropyB))
             s.anisotropyStrength = 0.0f;
+        if (!(in >> s.iridescence >> s.iridescenceThickness >> s.iridescenceIor)) s.iridescence = 0.0f;
         s.baseColor = base;
         s.specularF0 = glm::min(dielectricF0(ior) * specularColor, glm::vec3(1.0f));  // as glsl/include/material.glsl
         s.specularWeight = specularFactor;

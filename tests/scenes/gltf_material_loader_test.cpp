@@ -264,6 +264,42 @@ TEST(GltfMaterials, AnisotropyIsReadAndGetsTangents) {
     EXPECT_TRUE(s.tangents.empty()) << "an isotropic lobe needs no tangents";
 }
 
+// KHR_materials_iridescence loads its factors and maps with glTF's defaults (ior 1.3, 100 to 400 nm),
+// warns about nothing, and a factor of 0 is no film whatever else the extension holds.
+TEST(GltfMaterials, IridescenceIsRead) {
+    const fs::path dir = testDir();
+    Gltf g = withMaterial({{"extensions", {{"KHR_materials_iridescence", {{"iridescenceFactor", 0.75}, {"iridescenceIor", 1.8},
+                                                                          {"iridescenceThicknessMinimum", 200.0},
+                                                                          {"iridescenceThicknessMaximum", 600.0},
+                                                                          {"iridescenceTexture", {{"index", 0}}},
+                                                                          {"iridescenceThicknessTexture", {{"index", 0}}}}}}}});
+    g.doc["extensionsUsed"] = {"KHR_materials_iridescence"};
+    std::vector<std::string> warnings;
+    Scene s = load(g.writeGltf(dir, "iridescence"), warnings);
+    const Material& m = s.materials.at(0);
+    EXPECT_FLOAT_EQ(m.iridescenceFactor, 0.75f);
+    EXPECT_FLOAT_EQ(m.iridescenceIor, 1.8f);
+    EXPECT_FLOAT_EQ(m.iridescenceThicknessMinimum, 200.0f);
+    EXPECT_FLOAT_EQ(m.iridescenceThicknessMaximum, 600.0f);
+    EXPECT_TRUE(m.iridescenceTexture.present());
+    EXPECT_TRUE(m.iridescenceThicknessTexture.present());
+    EXPECT_EQ(m.iridescenceTexture.image, m.iridescenceThicknessTexture.image) << "both linear: one image";
+    EXPECT_TRUE(m.iridescenceModelled());
+    EXPECT_TRUE(warnings.empty()) << warnings.at(0);
+
+    Gltf defaults = withMaterial({{"extensions", {{"KHR_materials_iridescence", {{"iridescenceFactor", 1.0}}}}}});
+    warnings.clear();
+    s = load(defaults.writeGltf(dir, "iridescence_defaults"), warnings);
+    EXPECT_FLOAT_EQ(s.materials.at(0).iridescenceIor, 1.3f);
+    EXPECT_FLOAT_EQ(s.materials.at(0).iridescenceThicknessMinimum, 100.0f);
+    EXPECT_FLOAT_EQ(s.materials.at(0).iridescenceThicknessMaximum, 400.0f);
+
+    Gltf off = withMaterial({{"extensions", {{"KHR_materials_iridescence", {{"iridescenceTexture", {{"index", 0}}}}}}}});
+    warnings.clear();
+    s = load(off.writeGltf(dir, "no_iridescence"), warnings);
+    EXPECT_FALSE(s.materials.at(0).iridescenceModelled()) << "glTF's default iridescenceFactor is 0";
+}
+
 TEST(GltfMaterials, BadValuesAreNamedInOneLine) {
     const fs::path dir = testDir();
     const auto refused = [&](const char* name, const json& material, std::initializer_list<const char*> keywords,
@@ -324,6 +360,25 @@ TEST(GltfMaterials, BadValuesAreNamedInOneLine) {
             {"materials[0]", "anisotropyTexture", "index 9"});
     refused("anisotropy_texture_info", aniso({{"anisotropyStrength", 0.5}, {"anisotropyTexture", 2}}),
             {"materials[0]", "anisotropyTexture", "not a textureInfo"});
+    const auto film = [](const json& fields) { return json{{"extensions", {{"KHR_materials_iridescence", fields}}}}; };
+    refused("iridescence_factor", film({{"iridescenceFactor", 1.5}}), {"materials[0]", "iridescenceFactor 1.5", "outside [0, 1]"});
+    refused("iridescence_negative", film({{"iridescenceFactor", -0.5}}), {"materials[0]", "iridescenceFactor -0.5"});
+    refused("iridescence_ior", film({{"iridescenceFactor", 1}, {"iridescenceIor", 0.8}}), {"materials[0]", "iridescenceIor 0.8", "below 1"});
+    refused("iridescence_thickness_order", film({{"iridescenceFactor", 1}, {"iridescenceThicknessMinimum", 500}, {"iridescenceThicknessMaximum", 300}}),
+            {"materials[0]", "iridescenceThicknessMinimum 500", "above iridescenceThicknessMaximum 300"});
+    refused("iridescence_thickness_negative", film({{"iridescenceFactor", 1}, {"iridescenceThicknessMinimum", -10}}),
+            {"materials[0]", "thickness -10", "negative"});
+    refused("iridescence_thickness_max_negative", film({{"iridescenceFactor", 1}, {"iridescenceThicknessMaximum", -1}}),
+            {"materials[0]", "thickness -1", "negative"});
+    refused("iridescence_texture", film({{"iridescenceFactor", 1}, {"iridescenceThicknessTexture", {{"index", 9}}}}),
+            {"materials[0]", "iridescenceThicknessTexture", "index 9"});
+    {
+        // Its two maps share one texture unit: two textures (here one image, two samplers) are refused.
+        Gltf g = withMaterial(film({{"iridescenceFactor", 1}, {"iridescenceTexture", {{"index", 0}}}, {"iridescenceThicknessTexture", {{"index", 1}}}}));
+        g.add("textures", {{"source", 0}, {"sampler", g.add("samplers", {{"magFilter", 9728}})}});
+        SCOPED_TRACE("iridescence_two_textures");
+        expectFault(g.writeGltf(dir, "iridescence_two_textures"), {"materials[0]", "iridescenceTexture and iridescenceThicknessTexture", "one image"});
+    }
     refused("min_filter", {{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}, {"samplers[0]", "minFilter 1234"},
             {{"minFilter", 1234}});
     refused("wrap", {{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}, {"samplers[0]", "wrapT 5"}, {{"wrapT", 5}});
