@@ -155,7 +155,7 @@ void addFrameOptions(CLI::App& cmd, FrameOptions& o) {
     cmd.add_option("--draw", o.draw, "scene submission: direct (a draw call per draw range) or indirect (multi-draw indirect, a call per texture)")->capture_default_str();
     cmd.add_option("--triangle-order", o.triangleOrder, "each draw range's triangles at upload: as-loaded, vertex-cache or overdraw (meshoptimizer; renderer/scene/triangle_order.h)")->capture_default_str();
     cmd.add_option("--backface-culling", o.backfaceCulling, "on: raster passes cull the back faces of single-sided materials (glTF doubleSided false); off: draw both sides of everything")->capture_default_str();
-    cmd.add_option("--transparency", o.transparency, "on: draw glTF BLEND surfaces (the atrium's glass) blended over the opaque frame, each pixel's in depth order (with --msaa: back to front per draw range); off: leave them out")->capture_default_str();
+    cmd.add_option("--transparency", o.transparency, "on: draw glTF BLEND surfaces (the atrium's glass) blended over the opaque frame, each pixel's in depth order (with --msaa: back to front per draw range), and KHR_materials_transmission surfaces seeing the opaque frame through them; off: leave them out")->capture_default_str();
     cmd.add_flag("--bloom", o.bloom, "bloom: bright pass, half-resolution Gaussian, added to the HDR image before the tonemap");
     cmd.add_option("--bloom-threshold", o.bloomThreshold, "luminance above which pixels bloom")->capture_default_str();
     cmd.add_option("--bloom-strength", o.bloomStrength, "how much of the blurred bright part is added back")->capture_default_str();

@@ -61,6 +61,9 @@
 // tile, as the opaque pixels are (include/list_rounds.glsl); the sums are those of the per-pixel loop.
 #if !ML_GLASS_ALL_LIGHTS && !defined(ML_ZBIN)
 #define ML_GLASS_LIST_ROUNDS 1
+#if ML_HAS(ML_FEATURE_TRANSMISSION)
+#define ML_LIST_ROUNDS_NORMAL_BOUND 0  // a transmissive surface is lit from behind as well
+#endif
 #include "include/spot_cone.glsl"
 #include "include/list_rounds.glsl"
 #else
@@ -136,6 +139,29 @@ void sortFragments(uint begin, uint end) {
     }
 }
 
+#if ML_HAS(ML_FEATURE_TRANSMISSION)
+// The opaque frame before the glass, with its mip chain (TransparentPass): what a transmissive
+// surface sees through itself (shading.glsl's B).
+layout(binding = ML_TEX_REFRACTION_SOURCE) uniform sampler2D u_refractionSource;
+#endif
+
+// A transmissive material's coverage (whole, or MASK's cut-off; a BLEND one keeps its alpha) and
+// what it sees behind: the frame where the refracted view ray leaves its volume (the pixel itself
+// where thin-walled), blurred by its roughness as the Sample Viewer blurs it.
+void seeThrough(Material m, vec3 viewDir, inout SurfacePoint s, inout float alpha) {
+#if ML_HAS(ML_FEATURE_TRANSMISSION)
+    if ((m.info.w & ML_MATERIAL_TRANSMISSIVE_COVERAGE) != 0u) alpha = alpha >= m.emissiveCutoff.a ? 1.0 : 0.0;
+    if (!transmissive(s)) return;
+    float eta = max(s.transmissionIor, 1.0);
+    vec3 exitPoint = s.position;
+    if (s.thickness > 0.0) exitPoint += normalize(refract(-viewDir, s.normal, 1.0 / eta)) * s.thickness;
+    vec4 clip = u_viewProj * vec4(exitPoint, 1.0);
+    vec2 uv = clip.xy / clip.w * 0.5 + 0.5;
+    float blur = clamp(s.roughness, 0.0, 1.0) * clamp(2.0 * eta - 2.0, 0.0, 1.0);
+    s.behind = textureLod(u_refractionSource, uv, log2(u_viewport.x) * blur).rgb;
+#endif
+}
+
 // The fragment's colour from its light sum: as shadeUnclustered adds, or, with --shadows sampled,
 // the lights scaled by the fragment's drawn rays (begun with beginGlassSampling before its loop).
 vec3 litGlassColor(SurfacePoint s, vec3 viewDir, vec3 lightSum) {
@@ -156,6 +182,7 @@ vec4 shadeFragment(uint triangle, Material m, ivec2 p) {
     float alpha;
     SurfacePoint s = triangleSurface(triangle, m, p, alpha);
     vec3 viewDir = normalize(u_cameraPos.xyz - s.position);
+    seeThrough(m, viewDir, s, alpha);
     beginGlassSampling(p, triangle);
 #if ML_GLASS_ALL_LIGHTS
     return vec4(litGlassColor(s, viewDir, shadeEveryLight(s, viewDir)), alpha);
@@ -254,8 +281,10 @@ void takePart(uint part, uint parts, inout uint begin, inout uint end) {
 // Fragment k's surface, view direction and alpha, and the list it waits for.
 uint beginFragment(uint k, ivec2 p, out SurfacePoint s, out vec3 viewDir, out float alpha) {
     uint triangle = fragmentAt(k).y;
-    s = triangleSurface(triangle, materials[triangleMaterial[triangle]], p, alpha);
+    Material m = materials[triangleMaterial[triangle]];
+    s = triangleSurface(triangle, m, p, alpha);
     viewDir = normalize(u_cameraPos.xyz - s.position);
+    seeThrough(m, viewDir, s, alpha);
     beginGlassSampling(p, triangle);
     float viewDepth = -(u_view * vec4(s.position, 1.0)).z;
     return clusterListKey(clusterForFragment(vec2(p) + 0.5, viewDepth), s.normal);

@@ -57,6 +57,10 @@ struct alignas(16) GpuMaterial {
     // KHR_materials_iridescence: iridescenceFactor, iridescenceIor, the thickness's minimum and
     // maximum (nm).
     glm::vec4 iridescence;
+    // KHR_materials_transmission and KHR_materials_volume: transmissionFactor, thicknessFactor,
+    // attenuationDistance (0: infinite), the IOR; and rgb attenuationColor, 0.
+    glm::vec4 transmission;
+    glm::vec4 attenuation;
 };
 static_assert(sizeof(GpuMaterial) == 16 * ML_GPU_MATERIAL_VEC4S(true));
 static_assert(offsetof(GpuMaterial, uvTransforms) + 32 * ML_CORE_TEXTURE_SLOTS == 16 * ML_GPU_MATERIAL_VEC4S(false));

@@ -107,6 +107,10 @@ std::vector<std::uint32_t> SceneBuilder::addInstance(const MeshInstance& instanc
     const bool mirrored = det < 0.0;
     if (mirrored) normalMatrix = -normalMatrix;
 
+    // KHR_materials_volume's thickness is in the mesh's units: the node's scale, rotation aside
+    // (the mean of the columns' lengths, as the Sample Viewer's modelScale, averaged).
+    const double meshScale = (glm::length(linear[0]) + glm::length(linear[1]) + glm::length(linear[2])) / 3.0;
+
     std::vector<Block> blocks;
     blocks.reserve(plan.groups.size());
     for (const VertexGroup& group : plan.groups) blocks.push_back(appendVertices(instance, group, normalMatrix, mirrored));
@@ -122,7 +126,7 @@ std::vector<std::uint32_t> SceneBuilder::addInstance(const MeshInstance& instanc
             ++skipped_.emptyPrimitives;
             continue;
         }
-        runs_.push_back({static_cast<std::uint32_t>(first), static_cast<std::uint32_t>(count), materialSetOf(prim)});
+        runs_.push_back({static_cast<std::uint32_t>(first), static_cast<std::uint32_t>(count), materialSetOf(prim, meshScale)});
         colorsDrawn_ = colorsDrawn_ || plan.groups[prim.group].color >= 0;
         uv1Drawn_ = uv1Drawn_ || prim.readsTexcoord1;
         tangentsDrawn_ = tangentsDrawn_ || prim.normalMapped;
@@ -332,9 +336,9 @@ void SceneBuilder::generateNormals(const Block& block, const Ranges& ranges) {
     for (std::uint32_t i = 0; i < block.count; ++i) scene_.vertices[block.base + i].normal = safeNormalize(glm::vec3(sums[i]));
 }
 
-std::uint32_t SceneBuilder::materialSetOf(const PrimitivePlan& prim) {
-    std::vector<std::uint32_t> set{materials_.materialFor(prim.material)};
-    for (int variantMaterial : prim.variantMaterials) set.push_back(materials_.materialFor(variantMaterial));
+std::uint32_t SceneBuilder::materialSetOf(const PrimitivePlan& prim, double meshScale) {
+    std::vector<std::uint32_t> set{materials_.materialFor(prim.material, meshScale)};
+    for (int variantMaterial : prim.variantMaterials) set.push_back(materials_.materialFor(variantMaterial, meshScale));
     const auto [it, added] = materialSetIndex_.try_emplace(set, static_cast<std::uint32_t>(materialSets_.size()));
     if (added) materialSets_.push_back(std::move(set));
     return it->second;

@@ -106,8 +106,9 @@ private:
                                     const char* attribute, const Format& format, std::size_t count, float replacement,
                                     std::size_t& repairs) const;
     void appendTriangles(const MeshInstance& instance, const PrimitivePlan& prim, const Block& block, bool mirrored);
-    // The index into materialSets_ of the primitive's materials: its default, then one a variant.
-    std::uint32_t materialSetOf(const PrimitivePlan& prim);
+    // The index into materialSets_ of the primitive's materials: its default, then one a variant;
+    // volumes' thicknesses scaled by `meshScale` (MaterialConverter::materialFor).
+    std::uint32_t materialSetOf(const PrimitivePlan& prim, double meshScale);
     void generateNormals(const Block& block, const Ranges& ranges);
 
     // Optional streams (Scene::colors, uv1, tangents): once a stream exists, every vertex appended

@@ -188,7 +188,7 @@ bool isModelledGltfExtension(const std::string& name) {
            name == "KHR_materials_emissive_strength" || name == "KHR_materials_unlit" || name == "KHR_materials_ior" ||
            name == "KHR_materials_specular" || name == "KHR_materials_clearcoat" || name == "KHR_materials_sheen" ||
            name == "KHR_materials_anisotropy" ||
-           name == "KHR_materials_iridescence" ||
+           name == "KHR_materials_iridescence" || name == "KHR_materials_transmission" || name == "KHR_materials_volume" ||
            name == "KHR_materials_pbrSpecularGlossiness" || name == "KHR_materials_variants" ||
            name == "KHR_draco_mesh_compression" || name == "EXT_meshopt_compression" || name == "EXT_mesh_gpu_instancing";
 }

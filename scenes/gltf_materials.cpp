@@ -55,7 +55,7 @@ bool decodeRgba8(const std::vector<unsigned char>& encoded, Image& out, std::uin
 
 }  // namespace
 
-std::uint32_t MaterialConverter::materialFor(int gltfMaterial) {
+std::uint32_t MaterialConverter::materialFor(int gltfMaterial, double meshScale) {
     if (gltfMaterial < 0) {
         // Primitives without a material are drawn white, as glTF's default material is.
         if (!defaultMaterial_) {
@@ -72,7 +72,16 @@ std::uint32_t MaterialConverter::materialFor(int gltfMaterial) {
         slot = static_cast<int>(scene_.materials.size());
         scene_.materials.push_back(std::move(converted));
     }
-    return static_cast<std::uint32_t>(slot);
+    const Material& material = scene_.materials[static_cast<std::size_t>(slot)];
+    if (!(material.transmissionModelled() && material.thicknessFactor > 0.0f) || meshScale == 1.0)
+        return static_cast<std::uint32_t>(slot);
+    const auto [it, added] = scaledVolumes_.try_emplace({gltfMaterial, meshScale}, static_cast<std::uint32_t>(scene_.materials.size()));
+    if (added) {
+        Material scaled = material;
+        scaled.thicknessFactor = static_cast<float>(material.thicknessFactor * meshScale);
+        scene_.materials.push_back(std::move(scaled));
+    }
+    return it->second;
 }
 
 namespace {
@@ -334,6 +343,38 @@ void MaterialConverter::convertMaterialExtensions(const tinygltf::Material& sour
         if (m.iridescenceModelled() && a.present() && b.present() && (a.image != b.image || a.sampler != b.sampler))
             fail(path_, what + ": KHR_materials_iridescence iridescenceTexture and iridescenceThicknessTexture are different "
                                "textures; this renderer samples both from one (free texture units run out): use one image");
+    }
+    if (const tinygltf::Value* transmission = extension("KHR_materials_transmission")) {
+        const double factor = extensionNumber(path_, what, *transmission, "KHR_materials_transmission", "transmissionFactor", 0.0);
+        if (factor < 0.0 || factor > 1.0)
+            fail(path_, what + ": KHR_materials_transmission transmissionFactor " + number(factor) + " is outside [0, 1]");
+        m.transmissionFactor = static_cast<float>(factor);
+        if (transmission->Has("transmissionTexture"))
+            m.transmissionTexture = extensionTextureRef(what + " KHR_materials_transmission transmissionTexture",
+                                                        transmission->Get("transmissionTexture"), false);
+    }
+    // KHR_materials_volume means something only under a transmission (the extension's rule).
+    if (const tinygltf::Value* volume = extension("KHR_materials_volume")) {
+        const auto value = [&](const char* field, double fallback) {
+            return extensionNumber(path_, what, *volume, "KHR_materials_volume", field, fallback);
+        };
+        const double thickness = value("thicknessFactor", 0.0);
+        if (thickness < 0.0) fail(path_, what + ": KHR_materials_volume thicknessFactor " + number(thickness) + " is negative");
+        // glTF writes an infinite distance by leaving it out; 0 is not allowed.
+        const double distance = value("attenuationDistance", 0.0);
+        if (volume->Has("attenuationDistance") && !(distance > 0.0))
+            fail(path_, what + ": KHR_materials_volume attenuationDistance " + number(distance) + " is not above 0");
+        m.thicknessFactor = static_cast<float>(thickness);
+        m.attenuationDistance = static_cast<float>(distance);
+        if (volume->Has("attenuationColor")) {
+            double c[3];
+            if (!readNumbers(volume->Get("attenuationColor"), 3, c) || !(c[0] >= 0.0 && c[1] >= 0.0 && c[2] >= 0.0) || c[0] > 1.0 ||
+                c[1] > 1.0 || c[2] > 1.0)
+                fail(path_, what + ": KHR_materials_volume attenuationColor is not 3 numbers in [0, 1]");
+            m.attenuationColor = glm::vec3(static_cast<float>(c[0]), static_cast<float>(c[1]), static_cast<float>(c[2]));
+        }
+        if (volume->Has("thicknessTexture"))
+            m.thicknessTexture = extensionTextureRef(what + " KHR_materials_volume thicknessTexture", volume->Get("thicknessTexture"), false);
     }
 }
 
@@ -625,6 +666,8 @@ std::vector<MaterialTexture> texturesOf(const tinygltf::Material& material) {
         addExtensionTexture(out, material, "KHR_materials_anisotropy", "anisotropyTexture");
         addExtensionTexture(out, material, "KHR_materials_iridescence", "iridescenceTexture");
         addExtensionTexture(out, material, "KHR_materials_iridescence", "iridescenceThicknessTexture");
+        addExtensionTexture(out, material, "KHR_materials_transmission", "transmissionTexture");
+        addExtensionTexture(out, material, "KHR_materials_volume", "thicknessTexture");
     }
     return out;
 }

@@ -31,8 +31,10 @@ public:
           samplerSlots_(model.samplers.size(), -1) {}
 
     // The Scene::materials index for a glTF material; -1 (no material) is glTF's default, white.
-    // The index was checked by the caller.
-    std::uint32_t materialFor(int gltfMaterial);
+    // The index was checked by the caller. `meshScale`: the drawing node's scale (the mean of its
+    // world matrix's column lengths); a volume's thickness is in the mesh's units, so a material
+    // with one is copied once per scale it is drawn at, its thickness scaled into world units.
+    std::uint32_t materialFor(int gltfMaterial, double meshScale = 1.0);
 
     // One line per kind of material feature the scene model does not hold, or that was repaired.
     std::vector<std::string> warnings() const;
@@ -58,6 +60,7 @@ private:
     const tinygltf::Model& model_;
     Scene& scene_;
     std::vector<int> materialSlots_;  // glTF material -> Scene::materials index
+    std::map<std::pair<int, double>, std::uint32_t> scaledVolumes_;  // (glTF material, mesh scale) -> its copy
     std::vector<int> imageSlots_[2];  // glTF image -> Scene::images index, [0] linear, [1] sRGB
     std::vector<int> samplerSlots_;   // glTF sampler -> Scene::samplers index
     std::optional<std::uint32_t> defaultMaterial_;

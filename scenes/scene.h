@@ -133,6 +133,18 @@ struct Material {
     float iridescenceThicknessMaximum = 400.0f;  // nm, >= 0; the thickness where there is no map
     TextureRef iridescenceThicknessTexture;    // linear; G mixes minimum to maximum (the same image
                                                // as iridescenceTexture where both are set: bindings.h)
+    // KHR_materials_transmission: light through the surface (the opaque scene behind it and the
+    // lights on its far side), in place of the dielectric's diffuse by the factor; and
+    // KHR_materials_volume: the medium under it, of a thickness (0: thin-walled) that refracts
+    // the scene behind by the IOR and tints what passes by Beer's law (docs/lights-and-shading.md).
+    // A transmissive material is drawn as glass (renderer/passes/transparent_pass.h). A factor of
+    // 0 (glTF's default) is opaque.
+    float transmissionFactor = 0.0f;           // [0, 1]
+    TextureRef transmissionTexture;            // linear; R multiplies the factor
+    float thicknessFactor = 0.0f;              // >= 0, in the mesh's units
+    TextureRef thicknessTexture;               // linear; G multiplies the thickness
+    glm::vec3 attenuationColor{1.0f};          // linear, [0, 1]
+    float attenuationDistance = 0.0f;          // > 0; 0: infinite (glTF's default), no tint
 
     bool alphaTested() const { return alphaMode == AlphaMode::Mask; }
     // Does the material ask for anything but glTF's default dielectric Fresnel?
@@ -148,7 +160,11 @@ struct Material {
     bool anisotropyModelled() const { return !unlit && anisotropyStrength > 0.0f; }
     // Is there a film? (glTF: an iridescenceFactor of 0 has no effect, whatever its textures.)
     bool iridescenceModelled() const { return !unlit && iridescenceFactor > 0.0f; }
+    // Does light pass through it? (glTF: a transmissionFactor of 0 is opaque, whatever its texture.)
+    bool transmissionModelled() const { return !unlit && transmissionFactor > 0.0f; }
     bool blended() const { return alphaMode == AlphaMode::Blend; }
+    // Drawn by the transparent pass, after the opaque frame: BLEND, or light passes through it.
+    bool drawnAsGlass() const { return blended() || transmissionModelled(); }
 };
 
 // A contiguous run of triangles (3 indices each) drawn with one material.

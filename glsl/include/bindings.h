@@ -122,13 +122,17 @@
 // Material::info.w bits.
 #define ML_MATERIAL_DOUBLE_SIDED 1u
 #define ML_MATERIAL_UNLIT 2u  // KHR_materials_unlit: the base colour, no lighting
+// Drawn as glass for KHR_materials_transmission, not for BLEND: covers its pixel wholly (OPAQUE)
+// or where alpha >= alphaCutoff (MASK), and the opaque scene behind shows through its lobes.
+#define ML_MATERIAL_TRANSMISSIVE_COVERAGE 4u
 // vec4s in a material (glsl/include/material.glsl, GpuMaterial); info is the fourth. A scene whose
 // materials use an extension with maps of its own (ML_FEATURES_EXTENDED_RECORD: KHR_materials_specular
 // or ior, KHR_materials_clearcoat, KHR_materials_sheen, KHR_materials_anisotropy,
-// KHR_materials_iridescence) has every slot's transforms and the extensions' vec4s
-// (GpuMaterial::specular, clearcoat, sheen, anisotropy, iridescence); every other scene's records
+// KHR_materials_iridescence, KHR_materials_transmission) has every slot's transforms and the
+// extensions' vec4s (GpuMaterial::specular, clearcoat, sheen, anisotropy, iridescence,
+// transmission, attenuation); every other scene's records
 // keep the five core slots, so its shaders read what they read without the extensions.
-#define ML_GPU_MATERIAL_VEC4S(extended) (4 + 2 * ((extended) ? ML_TEXTURE_SLOTS : ML_CORE_TEXTURE_SLOTS) + ((extended) ? 5 : 0))
+#define ML_GPU_MATERIAL_VEC4S(extended) (4 + 2 * ((extended) ? ML_TEXTURE_SLOTS : ML_CORE_TEXTURE_SLOTS) + ((extended) ? 7 : 0))
 // Radix sort (glsl/radix_sort.comp) and z-binning (--assign zbin, glsl/zbin_assign.comp). Kept
 // below 32: llvmpipe offers 32 storage-buffer bindings.
 #define ML_SSBO_RADIX_KEYS_IN 20       // keys to sort (one pass reads these...)
@@ -203,6 +207,18 @@
 // with its own transform and texture coordinates.
 #define ML_TEX_IRIDESCENCE 1
 
+// KHR_materials_transmission's and KHR_materials_volume's maps, and the opaque frame the
+// transmissive surfaces refract. Every unit below 16 is taken where a material is sampled, so the
+// two maps take units 16 and 17: GL 4.5 guarantees 16 a stage, every GPU this was tried on
+// (NVIDIA, Mesa's llvmpipe) offers 32, and a scene whose maps need them on a GPU with fewer is
+// refused in one line (SceneGpu; tests/unit/binding_limits_test.cpp lists these two as the only
+// units past the minimum). Only the transparent pass samples them: transmissive surfaces are
+// drawn as glass. The opaque frame's copy takes the visibility buffer's unit, which no
+// transparent pass reads.
+#define ML_TEX_TRANSMISSION 16
+#define ML_TEX_THICKNESS 17
+#define ML_TEX_REFRACTION_SOURCE 5
+
 #define ML_TEX_DEPTH 1
 #define ML_TEX_GBUFFER0 2
 #define ML_TEX_GBUFFER1 3
@@ -273,7 +289,9 @@
 #define ML_SLOT_ANISOTROPY 12          // KHR_materials_anisotropy anisotropyTexture (RG direction, B strength)
 #define ML_SLOT_IRIDESCENCE 13            // KHR_materials_iridescence iridescenceTexture (R)
 #define ML_SLOT_IRIDESCENCE_THICKNESS 14  // KHR_materials_iridescence iridescenceThicknessTexture (G)
-#define ML_TEXTURE_SLOTS 15
+#define ML_SLOT_TRANSMISSION 15          // KHR_materials_transmission transmissionTexture (R)
+#define ML_SLOT_THICKNESS 16             // KHR_materials_volume thicknessTexture (G)
+#define ML_TEXTURE_SLOTS 17
 #define ML_CORE_TEXTURE_SLOTS 5   // the slots every material record holds (the rest: ML_FEATURES_EXTENDED_RECORD)
 
 // What a scene's materials use (ML_MATERIAL_FEATURES, a bit mask): every shader that samples a
@@ -300,8 +318,12 @@
 #define ML_FEATURE_ANISOTROPY_MAP 262144   // ...with an anisotropy texture
 #define ML_FEATURE_IRIDESCENCE 524288      // some material has KHR_materials_iridescence with a factor above 0
 #define ML_FEATURE_IRIDESCENCE_MAP 1048576 // ...with an iridescence or thickness texture
+#define ML_FEATURE_TRANSMISSION 2097152    // some material has KHR_materials_transmission with a factor above 0
+                                           // (drawn as glass: ML_FEATURE_BLEND with it; KHR_materials_volume too)
+#define ML_FEATURE_TRANSMISSION_MAP 4194304 // ...with a transmission or thickness texture
 // The features whose materials need the whole record (every slot, the extensions' vec4s).
-#define ML_FEATURES_EXTENDED_RECORD (ML_FEATURE_SPECULAR | ML_FEATURE_CLEARCOAT | ML_FEATURE_SHEEN | ML_FEATURE_ANISOTROPY | ML_FEATURE_IRIDESCENCE)
+#define ML_FEATURES_EXTENDED_RECORD \
+    (ML_FEATURE_SPECULAR | ML_FEATURE_CLEARCOAT | ML_FEATURE_SHEEN | ML_FEATURE_ANISOTROPY | ML_FEATURE_IRIDESCENCE | ML_FEATURE_TRANSMISSION)
 
 // Light types (docs/lights-and-shading.md). A point light stores this as its cone cosines: below
 // any cosine, so the spot test passes everywhere and the cone tests never reject it.

@@ -393,5 +393,14 @@ void decodeGBuffer(GBufferTexel t, inout SurfacePoint s) {
     s.iridescenceIor = 1.0;
 #endif
 #endif
+#if ML_HAS(ML_FEATURE_TRANSMISSION)
+    // Transmissive surfaces are drawn as glass, never into a G-buffer: every pixel here is opaque.
+    s.transmission = 0.0;
+    s.thickness = 0.0;
+    s.attenuationDistance = 0.0;
+    s.transmissionIor = 1.5;
+    s.attenuationColor = vec3(1.0);
+    s.behind = vec3(0.0);
+#endif
     deriveShadingTerms(s);
 }

@@ -32,6 +32,10 @@ struct Material {
     vec4 anisotropy;
     // KHR_materials_iridescence: factor, the film's IOR, its thickness's minimum and maximum (nm).
     vec4 iridescence;
+    // KHR_materials_transmission and KHR_materials_volume: factor, thickness, attenuation distance
+    // (0: infinite), the IOR; rgb attenuation colour.
+    vec4 transmission;
+    vec4 attenuation;
 #endif
 };
 layout(std430, binding = ML_SSBO_MATERIALS) readonly buffer MaterialBuffer { Material materials[]; };
@@ -61,6 +65,10 @@ layout(binding = ML_TEX_ANISOTROPY) uniform sampler2D u_anisotropyTexture;  // l
 // Both of KHR_materials_iridescence's maps: one image on one unit (bindings.h), each slot with its
 // own transform and texture coordinates.
 layout(binding = ML_TEX_IRIDESCENCE) uniform sampler2D u_iridescenceTexture;  // linear; R strength, G thickness
+#endif
+#if ML_HAS(ML_FEATURE_TRANSMISSION_MAP)
+layout(binding = ML_TEX_TRANSMISSION) uniform sampler2D u_transmissionTexture;  // linear; R
+layout(binding = ML_TEX_THICKNESS) uniform sampler2D u_thicknessTexture;        // linear; G
 #endif
 
 // Where a point samples its material: its UV sets and their screen-space gradients, which every
@@ -241,6 +249,18 @@ SurfacePoint surfaceFromMaterial(Material m, vec3 worldPos, vec3 worldNormal, ve
     if (hasTexture(m, ML_SLOT_IRIDESCENCE_THICKNESS))
         s.iridescenceThickness =
             mix(m.iridescence.z, m.iridescence.w, sampleMaterialTexture(u_iridescenceTexture, m, ML_SLOT_IRIDESCENCE_THICKNESS, c).g);
+#endif
+#endif
+#if ML_HAS(ML_FEATURE_TRANSMISSION)
+    s.transmission = m.transmission.x;
+    s.thickness = m.transmission.y;
+    s.attenuationDistance = m.transmission.z;
+    s.transmissionIor = m.transmission.w;
+    s.attenuationColor = m.attenuation.rgb;
+    s.behind = vec3(0.0);  // the transparent pass sees what is behind (glass_shade.comp)
+#if ML_HAS(ML_FEATURE_TRANSMISSION_MAP)
+    if (hasTexture(m, ML_SLOT_TRANSMISSION)) s.transmission *= sampleMaterialTexture(u_transmissionTexture, m, ML_SLOT_TRANSMISSION, c).r;
+    if (hasTexture(m, ML_SLOT_THICKNESS)) s.thickness *= sampleMaterialTexture(u_thicknessTexture, m, ML_SLOT_THICKNESS, c).g;
 #endif
 #endif
     deriveShadingTerms(s);

@@ -73,6 +73,21 @@
 //     becomes mix(f0, F_i(|V.H|), k_i). The unlit terms reflect the ambient off the film at |N.V|:
 //     f0 becomes mix(f0, F_i(|N.V|), k_i). A thickness of 0 is no film (F_i = F). --specular off
 //     leaves it out (a specular layer).
+//   KHR_materials_transmission, KHR_materials_volume: the dielectric's diffuse gives up t of itself
+//     to light through the surface (t the transmission factor x map R; metals transmit nothing):
+//       diffuse' = (1 - t) diffuse,  T = t base (1 - metallic),  tint = c_a^(d / d_a) (1 where d or d_a is 0)
+//     A light behind the surface (N.L < 0) adds, through the extension's specular BTDF as the Sample
+//     Viewer evaluates it, with L' = L - 2 (N.L) N the light mirrored through the surface's plane and
+//     H' = normalize(L' + V):
+//       color falloff (1 - F(|V.H'|)) T D(N.H') Vis(N.L', N.V) N.L' tint
+//     (GGX at the surface's alpha; under Blinn-Phong T (1 - f0) (s + 8) / 8 (N.H')^s N.L' tint;
+//     --specular off: none). The unlit terms add the opaque scene behind, B, as the Sample Viewer
+//     refracts it: the frame before the glass, sampled where the refracted ray leaves the volume
+//     (x + d normalize(refract(-V, N, 1 / eta)); thin-walled, d = 0: the pixel itself), at the level
+//     log2(width) r clamp(2 eta - 2, 0, 1) of its mip chain (r the roughness):
+//       + T (1 - f0) B tint
+//     under any coat (dimmed by it), beside any sheen. Transmissive surfaces are drawn as glass
+//     (the transparent pass) in every method, so B is each method's own opaque frame.
 
 #include "include/material_features.glsl"
 
@@ -171,6 +186,14 @@ struct SurfacePoint {
     float iridescenceIor;        // eta_f
     float iridescenceThickness;  // d, nm (0: no film)
 #endif
+#if ML_HAS(ML_FEATURE_TRANSMISSION)
+    float transmission;          // KHR_materials_transmission: t (0: opaque)
+    float thickness;             // KHR_materials_volume: d, world units (0: thin-walled)
+    float attenuationDistance;   // d_a (0: infinite, no tint)
+    float transmissionIor;       // eta, the refraction's
+    vec3 attenuationColor;       // c_a
+    vec3 behind;                 // B: the opaque scene seen through the surface (the transparent pass's)
+#endif
     // Derived by deriveShadingTerms: what the light loop reads, and the unlit term, worked out
     // before the loop so that the material's inputs need not stay in registers through it.
     vec3 diffuse;
@@ -196,6 +219,9 @@ struct SurfacePoint {
 #if ML_HAS(ML_FEATURE_ANISOTROPY)
     float anisotropyAlphaT;    // GGX: alpha_t = mix(alpha, 1, a^2)
 #endif
+#if ML_HAS(ML_FEATURE_TRANSMISSION)
+    vec3 transmitted;          // t base (1 - metallic): what the diffuse gave up to the transmission
+#endif
 };
 
 #if ML_HAS(ML_FEATURE_SHEEN)
@@ -213,6 +239,12 @@ void deriveShadingTerms(inout SurfacePoint s) {
     s.shininess = blinnPhongShininess(alpha);
     s.alpha = max(alpha, ML_GGX_MIN_ALPHA);
     s.diffuse = s.baseColor * (1.0 - m);
+#if ML_HAS(ML_FEATURE_TRANSMISSION)
+    // The dielectric's diffuse becomes transmission by t (a metal transmits nothing); t = 0: to the bit.
+    float t = clamp(s.transmission, 0.0, 1.0);
+    s.transmitted = s.diffuse * t;
+    s.diffuse *= 1.0 - t;
+#endif
     s.diffuseOverPi = s.diffuse * (1.0 / kPi);
 #if ML_HAS(ML_FEATURE_SPECULAR)
     vec3 dielectricF0 = s.specularF0 * s.specularWeight;
@@ -451,6 +483,46 @@ vec3 sheenUnlit(SurfacePoint s, vec3 viewDir) {
 }
 #endif
 
+#if ML_HAS(ML_FEATURE_TRANSMISSION)
+// Does light pass through? Not where there is none, nor under --specular off for the lights (the
+// lobe is a specular BTDF).
+bool transmissive(SurfacePoint s) { return s.transmission > 0.0; }
+
+// Beer's law over the volume's thickness: c_a^(d / d_a); 1 where thin-walled or untinted.
+vec3 volumeTint(SurfacePoint s) {
+    if (!(s.attenuationDistance > 0.0) || !(s.thickness > 0.0)) return vec3(1.0);
+    return pow(s.attenuationColor, vec3(s.thickness / s.attenuationDistance));
+}
+
+// A light from behind the surface (N.L = nDotL < 0) through it, times |N.L|: the extension's
+// specular BTDF as the Sample Viewer evaluates it, GGX's D Vis at the light mirrored through the
+// surface's plane (so N.L' = -N.L), weighted by 1 - F and the transmitted colour, tinted by the
+// volume. Under Blinn-Phong the normalized lobe at the mirrored light's half vector.
+vec3 transmittedLight(SurfacePoint s, vec3 viewDir, vec3 l, float nDotL) {
+    if (!specularEnabled()) return vec3(0.0);
+    vec3 mirrored = l - 2.0 * nDotL * s.normal;
+    float nDotM = -nDotL;
+    vec3 h = normalize(mirrored + viewDir);
+    float nDotH = max(dot(s.normal, h), 0.0);
+    if (!ggxEnabled())
+        return s.transmitted * (1.0 - s.f0) * (nDotM * (s.shininess + 8.0) / 8.0 * pow(nDotH, s.shininess)) * volumeTint(s);
+    float nDotV = abs(dot(s.normal, viewDir));
+    float q = 1.0 - abs(dot(viewDir, h));
+    float q2 = q * q;
+#if ML_HAS(ML_FEATURE_SPECULAR)
+    vec3 fresnel = s.f0 + (s.f90 - s.f0) * (q2 * q2 * q);
+#else
+    vec3 fresnel = s.f0 + (1.0 - s.f0) * (q2 * q2 * q);
+#endif
+    float lobe = ggxDistributionVisibility(nDotH, cross(s.normal, h), nDotM, nDotV, s.alpha * s.alpha);
+    return (1.0 - fresnel) * s.transmitted * (nDotM * lobe) * volumeTint(s);
+}
+
+// The opaque scene behind, as it reaches the eye through the surface: B times the transmitted
+// colour, 1 - f0 (the ambient's Fresnel) and the volume's tint.
+vec3 transmittedBehind(SurfacePoint s) { return s.transmitted * (1.0 - s.f0) * s.behind * volumeTint(s); }
+#endif
+
 // The material under any coat for a light with N.L = nDotL > 0, times N.L: under a sheen where
 // there is one.
 vec3 underCoatReflected(SurfacePoint s, vec3 viewDir, vec3 l, float nDotL) {
@@ -483,9 +555,12 @@ float clearcoatBrdf(SurfacePoint s, vec3 viewDir, vec3 l, float coatNDotL) {
 // A light through the coat: each lobe with its own normal's cosine, layered by k.
 vec3 shadeCoated(SurfacePoint s, vec3 viewDir, vec3 l, vec3 color, float weight, float nDotL) {
     float coatNDotL = dot(s.clearcoatNormal, l);
-    if (nDotL <= 0.0 && coatNDotL <= 0.0) return vec3(0.0);
-    float k = clearcoatLayerWeight(s, viewDir);
     vec3 base = nDotL > 0.0 ? underCoatReflected(s, viewDir, l, nDotL) : vec3(0.0);
+#if ML_HAS(ML_FEATURE_TRANSMISSION)
+    if (nDotL < 0.0 && transmissive(s)) base = transmittedLight(s, viewDir, l, nDotL);
+#endif
+    if (base == vec3(0.0) && coatNDotL <= 0.0) return vec3(0.0);
+    float k = clearcoatLayerWeight(s, viewDir);
     float coat = coatNDotL > 0.0 ? coatNDotL * clearcoatBrdf(s, viewDir, l, coatNDotL) : 0.0;
     return color * weight * (base * (1.0 - k) + coat * k);
 }
@@ -497,6 +572,9 @@ vec3 shadeIncoming(SurfacePoint s, vec3 viewDir, vec3 l, vec3 color, float weigh
     float nDotL = dot(s.normal, l);
 #if ML_HAS(ML_FEATURE_CLEARCOAT)
     if (coated(s)) return shadeCoated(s, viewDir, l, color, weight, nDotL);  // never unlit (the loader's rule)
+#endif
+#if ML_HAS(ML_FEATURE_TRANSMISSION)
+    if (nDotL < 0.0 && transmissive(s)) return color * weight * transmittedLight(s, viewDir, l, nDotL);  // never unlit either
 #endif
     if (nDotL <= 0.0) return vec3(0.0);
 #if ML_HAS(ML_FEATURE_UNLIT)
@@ -548,6 +626,9 @@ vec3 shadeUnlit(SurfacePoint s, vec3 viewDir) {
 #endif
 #if ML_HAS(ML_FEATURE_SHEEN)
     if (sheened(s)) unlit = sheenUnlit(s, viewDir);
+#endif
+#if ML_HAS(ML_FEATURE_TRANSMISSION)
+    if (transmissive(s)) unlit += transmittedBehind(s);
 #endif
 #if ML_HAS(ML_FEATURE_CLEARCOAT)
     if (coated(s)) {

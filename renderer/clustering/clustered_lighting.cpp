@@ -92,6 +92,10 @@ ClusteredLighting::ClusteredLighting(const ClusteringSettings& settings, std::ui
     if (settings.assign == AssignMode::ZBin) zbin_ = std::make_unique<ZBinAssignment>(settings.spotLights, depthSamplesDefine(settings));
     if (settings.normalCones && settings.assign == AssignMode::Capped)
         throw std::invalid_argument("--normal-cones: needs exact lists (--assign exact or per-cluster), not capped ones");
+    // A cone culls the lights behind every normal of its list; a transmissive surface is lit from behind too.
+    if (settings.normalCones && (materialFeatures & ML_FEATURE_TRANSMISSION))
+        throw std::invalid_argument("--normal-cones: the scene has KHR_materials_transmission surfaces, lit through from behind, "
+                                    "which normal cones would cull; leave --normal-cones off");
     GLint64 maxBlock = 0;
     glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &maxBlock);
     maxStorageBlock_ = static_cast<std::size_t>(maxBlock);

@@ -1,6 +1,7 @@
 #include "renderer/passes/transparent_pass.h"
 
 #include <algorithm>
+#include <stdexcept>
 #include <string>
 #include <utility>
 
@@ -16,6 +17,11 @@ TransparentPass::TransparentPass(std::string timerName, std::uint32_t materialFe
     : timerName_(std::move(timerName)) {
     if (!(materialFeatures & ML_FEATURE_BLEND)) return;
     const bool allLights = forwardShader == std::string("naive_forward.frag");
+    seesThrough_ = (materialFeatures & ML_FEATURE_TRANSMISSION) != 0;
+    if (seesThrough_ && transparency.msaa > 1)
+        throw std::invalid_argument("--msaa " + std::to_string(transparency.msaa) +
+                                    ": the scene has KHR_materials_transmission surfaces, which only the single-sample "
+                                    "transparent pass draws; use --msaa 1");
     if (transparency.msaa > 1) {
         // The forward pass's fragment writes its alpha (ML_TRANSPARENT) for blending.
         shaders::Defines forwardDefines = defines;
@@ -82,6 +88,7 @@ void TransparentPass::renderCaptured(const FrameContext& ctx, const ClusteredLig
     if (!capture_->counted()) countFragments(ctx);
     const std::vector<int> sets = ctx.scene.transparentTextureSets();
     capture_->fill(ctx);
+    if (seesThrough_) copyOpaqueFrame(ctx);
     const bool storesColors = sets.size() > 1;
     const bool splits = !storesColors && capture_->hasDeepTileList();
     auto pass = ctx.timer.pass(timerName_);
@@ -108,6 +115,21 @@ void TransparentPass::renderCaptured(const FrameContext& ctx, const ClusteredLig
     }
     ctx.scene.unbindSamplers();
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
+}
+
+void TransparentPass::copyOpaqueFrame(const FrameContext& ctx) {
+    auto pass = ctx.timer.pass(timerName_ + "-behind");
+    const gl::Texture2D& hdr = ctx.targets.hdr();
+    if (!opaqueFrame_ || opaqueFrame_.width() != hdr.width() || opaqueFrame_.height() != hdr.height()) {
+        opaqueFrame_ = gl::Texture2D("transparent.behind", hdr.format(), hdr.width(), hdr.height(), gl::fullMipLevels(hdr.width(), hdr.height()));
+        opaqueFrame_.setSampling(GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR, GL_CLAMP_TO_EDGE);
+    }
+    // The opaque frame may have come from compute passes' image stores.
+    glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    glCopyImageSubData(hdr.id(), GL_TEXTURE_2D, 0, 0, 0, 0, opaqueFrame_.id(), GL_TEXTURE_2D, 0, 0, 0, 0, hdr.width(), hdr.height(), 1);
+    glGenerateTextureMipmap(opaqueFrame_.id());
+    glBindTextureUnit(ML_TEX_REFRACTION_SOURCE, opaqueFrame_.id());
+    glBindSampler(ML_TEX_REFRACTION_SOURCE, 0);
 }
 
 void TransparentPass::shadeSplittingDeepTiles(const FrameContext& ctx, int textureSet) {

@@ -25,6 +25,12 @@
 // pass is what multisampled glass needs, and naive and Forward+ at the same sample count draw
 // the same ranges in the same order, so they stay comparable.
 //
+// Transmissive materials (KHR_materials_transmission) are drawn here too: they cover their pixel
+// (alpha 1, or MASK's cut-off) and show the opaque frame behind them, copied with a mip chain
+// before the shading ([<method>.transparent-behind]) and sampled where the refracted view ray
+// leaves the volume (docs/lights-and-shading.md). The forward pass (--msaa) does not model them:
+// a transmissive scene with --msaa is refused in one line.
+//
 // Naive's pass loops over every light; the clustered methods' (Forward+, deferred, visibility)
 // over the cluster lists, which ClusteredLighting builds to hold every light a transparent
 // fragment needs as well (the fitted depth range, --active-only and --normal-cones take the
@@ -39,6 +45,7 @@
 #include "renderer/clustering/clustering_settings.h"
 #include "renderer/frame_context.h"
 #include "renderer/gl/program.h"
+#include "renderer/gl/texture.h"
 #include "renderer/passes/glass_fragments.h"
 #include "renderer/scene/raster_program.h"
 
@@ -83,6 +90,9 @@ private:
     // The four dispatches of a split frame (glass_shade.comp's kListTiles, then kShadeParts
     // beside kShadeShallowTiles, then kBlendParts).
     void shadeSplittingDeepTiles(const FrameContext& ctx, int textureSet);
+    // KHR_materials_transmission: the opaque frame copied, with its mip chain, to be seen through
+    // the transmissive surfaces (glass_shade.comp's seeThrough) and bound at ML_TEX_REFRACTION_SOURCE.
+    void copyOpaqueFrame(const FrameContext& ctx);
 
     std::string timerName_;
     RasterProgram forward_;                   // --msaa only; empty otherwise or without BLEND
@@ -94,6 +104,8 @@ private:
     shaders::Defines splitDefines_;       // shade_'s, for the split's programs
     // glass_shade.comp's kListTiles, kShadeParts, kBlendParts, kShadeShallowTiles
     std::array<gl::Program, 4> splitPrograms_;
+    bool seesThrough_ = false;  // some material is transmissive (ML_FEATURE_TRANSMISSION)
+    gl::Texture2D opaqueFrame_;  // its copy, full mip chain (RGBA32F, as the HDR target)
 };
 
 }  // namespace ml

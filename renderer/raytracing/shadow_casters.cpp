@@ -17,12 +17,12 @@ bool finite(const glm::vec3& p) { return std::isfinite(p.x) && std::isfinite(p.y
 std::vector<ShadowCaster> shadowCasters(const Scene& scene) {
     std::size_t count = 0;
     for (const DrawRange& d : scene.draws)
-        if (!scene.materials.at(d.material).blended()) count += d.indexCount / 3;
+        if (!scene.materials.at(d.material).drawnAsGlass()) count += d.indexCount / 3;
     std::vector<ShadowCaster> casters;
     casters.reserve(count);
     for (const DrawRange& d : scene.draws) {
         const Material& material = scene.materials.at(d.material);
-        if (material.blended()) continue;
+        if (material.drawnAsGlass()) continue;  // glass casts no shadow: BLEND, or light passes through it
         const std::uint32_t word = material.alphaTested() ? d.material : kShadowOpaque;
         for (std::uint32_t i = d.firstIndex; i + 2 < d.firstIndex + d.indexCount; i += 3) {
             ShadowCaster c;

@@ -94,7 +94,15 @@ ShadingTerms shadingTerms(const SurfaceSample& s) {
     t.alphaT = t.alpha + (1.0f - t.alpha) * (t.anisotropyStrength * t.anisotropyStrength);
     t.anisotropyT = s.anisotropyT;
     t.anisotropyB = s.anisotropyB;
+    const float transmission = std::clamp(s.transmission, 0.0f, 1.0f);
+    t.transmitted = t.diffuse * transmission;
+    t.diffuse *= 1.0f - transmission;
     return t;
+}
+
+glm::vec3 volumeTint(const SurfaceSample& s) {
+    if (!(s.attenuationDistance > 0.0f) || !(s.thickness > 0.0f)) return glm::vec3(1.0f);
+    return glm::pow(s.attenuationColor, glm::vec3(s.thickness / s.attenuationDistance));
 }
 
 bool anisotropyDirections(const glm::vec3& ng, const glm::vec4& tangent, glm::vec2 mapDirection, float rotation, glm::vec3& t,
@@ -226,10 +234,27 @@ glm::vec3 shadeReference(const SurfaceSample& s, const glm::vec3& eye, const std
     const glm::vec3 unlit =
         sheen ? ambient * s.occlusion * ((t.diffuse + unlitF0) * (1.0f - sheenMax * viewAlbedo) + s.sheenColor * viewAlbedo) + s.emissive
               : ambient * s.occlusion * (t.diffuse + unlitF0) + s.emissive;
-    glm::vec3 color = unlit * (1.0f - k) + ambient * s.occlusion * k;
+    // KHR_materials_transmission: the scene behind, through the transmitted colour and 1 - f0.
+    const bool transmits = s.transmission > 0.0f;
+    const glm::vec3 behind = transmits ? t.transmitted * (1.0f - t.f0) * s.behind * volumeTint(s) : glm::vec3(0.0f);
+    glm::vec3 color = (unlit + behind) * (1.0f - k) + ambient * s.occlusion * k;
+    // A light from behind (N.L < 0) through the surface, times |N.L|: mirrored through its plane.
+    const auto transmitted = [&](const glm::vec3& dir, float nDotL) {
+        if (!transmits || !specular) return glm::vec3(0.0f);
+        const glm::vec3 mirrored = dir - 2.0f * nDotL * s.normal;
+        const glm::vec3 h = glm::normalize(mirrored + v);
+        const float nDotH = std::max(glm::dot(s.normal, h), 0.0f);
+        if (model.brdf != Brdf::Ggx)
+            return t.transmitted * (1.0f - t.f0) * (-nDotL * (t.shininess + 8.0f) / 8.0f * std::pow(nDotH, t.shininess)) * volumeTint(s);
+        const float q5 = std::pow(1.0f - std::abs(glm::dot(v, h)), 5.0f);
+        const glm::vec3 fresnel = t.f0 + (t.f90 - t.f0) * q5;
+        return (1.0f - fresnel) * t.transmitted * (-nDotL * ggxDistributionVisibility(s.normal, v, mirrored, t.alpha * t.alpha)) *
+               volumeTint(s);
+    };
     // The material's BRDF times N.L for a light from unit direction `dir`.
     const auto baseReflected = [&](const glm::vec3& dir) {
         const float nDotL = glm::dot(s.normal, dir);
+        if (nDotL < 0.0f) return transmitted(dir, nDotL);
         if (nDotL <= 0.0f) return glm::vec3(0.0f);
         if (model.brdf == Brdf::Ggx) {
             if (!specular) return nDotL * (t.diffuse * (1.0f / kPi));

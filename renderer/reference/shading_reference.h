@@ -53,6 +53,14 @@ struct SurfaceSample {
     float iridescence = 0.0f;
     float iridescenceThickness = 0.0f;
     float iridescenceIor = 1.3f;
+    // KHR_materials_transmission and KHR_materials_volume: the transmission (0: opaque), the
+    // volume's thickness (0: thin-walled), attenuation distance (0: infinite) and colour, and the
+    // opaque scene's radiance seen through the surface (the transparent pass's B).
+    float transmission = 0.0f;
+    float thickness = 0.0f;
+    float attenuationDistance = 0.0f;
+    glm::vec3 attenuationColor{1.0f};
+    glm::vec3 behind{0.0f};
 };
 
 // The metallic-roughness material's terms, shared by every method.
@@ -69,6 +77,8 @@ struct ShadingTerms {
     float alphaT = 0.0f;
     glm::vec3 anisotropyT{1.0f, 0.0f, 0.0f};
     glm::vec3 anisotropyB{0.0f, 1.0f, 0.0f};
+    // KHR_materials_transmission: transmission x baseColor (1 - metallic), which diffuse gave up.
+    glm::vec3 transmitted{0.0f};
 };
 ShadingTerms shadingTerms(const glm::vec3& baseColor, float metallic, float roughness);
 // The same with KHR_materials_ior / KHR_materials_specular (glsl/include/shading.glsl has the formulas).
@@ -102,6 +112,9 @@ float sheenCharlieTimesNDotL(const glm::vec3& n, const glm::vec3& v, const glm::
 // KHR_materials_iridescence (glsl/include/shading.glsl has the formulas): the film's Fresnel F_i at
 // cosine cosTheta1 from air, over a base of normal-incidence reflectance f0.
 glm::vec3 iridescentFresnel(float cosTheta1, float filmIor, float thicknessNm, const glm::vec3& f0);
+
+// KHR_materials_volume's tint over the thickness, Beer's law: c_a^(d / d_a) (1 where d or d_a is 0).
+glm::vec3 volumeTint(const SurfaceSample& s);
 
 // The linear radiance the shaders compute for a surface point seen from `eye`, from lights of
 // every type (glsl/include/shading.glsl and sun_lights.glsl), in the given light model; without

@@ -57,8 +57,13 @@ std::uint32_t materialFeatures(const Scene& scene) {
             f |= ML_FEATURE_IRIDESCENCE;
             if (uses(m.iridescenceTexture) | uses(m.iridescenceThicknessTexture)) f |= ML_FEATURE_IRIDESCENCE_MAP;
         }
+        // Transmissive surfaces are drawn as glass: by the transparent pass, as BLEND is.
+        if (m.transmissionModelled()) {
+            f |= ML_FEATURE_TRANSMISSION;
+            if (uses(m.transmissionTexture) | uses(m.thicknessTexture)) f |= ML_FEATURE_TRANSMISSION_MAP;
+        }
         if (m.alphaTested()) f |= ML_FEATURE_ALPHA_TEST;
-        if (m.blended()) f |= ML_FEATURE_BLEND;
+        if (m.drawnAsGlass()) f |= ML_FEATURE_BLEND;
     }
     if (!scene.colors.empty()) f |= ML_FEATURE_VERTEX_COLOR;
     return f;
@@ -91,6 +96,8 @@ std::string describeMaterialFeatures(std::uint32_t features) {
         {ML_FEATURE_ANISOTROPY_MAP, "anisotropy maps"},
         {ML_FEATURE_IRIDESCENCE, "iridescence"},
         {ML_FEATURE_IRIDESCENCE_MAP, "iridescence maps"},
+        {ML_FEATURE_TRANSMISSION, "transmission and volume"},
+        {ML_FEATURE_TRANSMISSION_MAP, "transmission maps"},
     };
     std::string text;
     for (const auto& [bit, name] : kNames) {

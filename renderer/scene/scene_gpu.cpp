@@ -7,6 +7,7 @@
 #include <limits>
 #include <map>
 #include <stdexcept>
+#include <string>
 
 #include "glsl/include/bindings.h"
 #include "renderer/gpu_types.h"
@@ -25,14 +26,22 @@ constexpr GLuint kSlotUnits[ML_TEXTURE_SLOTS] = {ML_TEX_BASE_COLOR,       ML_TEX
                                                  ML_TEX_OCCLUSION,        ML_TEX_EMISSIVE,            ML_TEX_SPECULAR,
                                                  ML_TEX_SPECULAR_COLOR,   ML_TEX_CLEARCOAT,           ML_TEX_CLEARCOAT_ROUGHNESS,
                                                  ML_TEX_CLEARCOAT_NORMAL, ML_TEX_SHEEN_COLOR,         ML_TEX_SHEEN_ROUGHNESS,
-                                                 ML_TEX_ANISOTROPY,       ML_TEX_IRIDESCENCE,         ML_TEX_IRIDESCENCE};
+                                                 ML_TEX_ANISOTROPY,       ML_TEX_IRIDESCENCE,         ML_TEX_IRIDESCENCE,
+                                                 ML_TEX_TRANSMISSION,     ML_TEX_THICKNESS};
+constexpr GLuint kUnitsBound = ML_TEX_THICKNESS + 1;
+
+// Does this scene bind the slot's unit? The transmission maps' units lie past GL 4.5's minimum
+// (bindings.h): only a scene that samples them binds them.
+bool bindsSlot(int slot, std::uint32_t features) {
+    return kSlotUnits[slot] < 16 || (features & ML_FEATURE_TRANSMISSION_MAP) != 0;
+}
 
 // Does the scene's material record hold every slot and the extensions' vec4s (bindings.h)?
 bool extendedRecord(std::uint32_t features) { return (features & ML_FEATURES_EXTENDED_RECORD) != 0; }
 
 // The slots a scene's material records and texture bindings hold: the extensions' only where some
 // material models one (KHR_materials_specular or ior, KHR_materials_clearcoat, KHR_materials_sheen,
-// KHR_materials_anisotropy, KHR_materials_iridescence).
+// KHR_materials_anisotropy, KHR_materials_iridescence, KHR_materials_transmission).
 int materialSlots(std::uint32_t features) { return extendedRecord(features) ? ML_TEXTURE_SLOTS : ML_CORE_TEXTURE_SLOTS; }
 
 // The texture slots whose shader path this scene compiles in (a slot whose feature is off is never sampled).
@@ -61,6 +70,10 @@ std::array<const TextureRef*, ML_TEXTURE_SLOTS> sampledSlots(const Material& m, 
         slots[ML_SLOT_IRIDESCENCE] = &m.iridescenceTexture;  // both on one unit: the loader made them one texture
         slots[ML_SLOT_IRIDESCENCE_THICKNESS] = &m.iridescenceThicknessTexture;
     }
+    if ((features & ML_FEATURE_TRANSMISSION_MAP) && m.transmissionModelled()) {
+        slots[ML_SLOT_TRANSMISSION] = &m.transmissionTexture;
+        slots[ML_SLOT_THICKNESS] = &m.thicknessTexture;
+    }
     return slots;
 }
 
@@ -82,6 +95,17 @@ gl::Handle<gl::SamplerDeleter> makeSampler(const std::string& name, const Sample
 }  // namespace
 
 SceneGpu::SceneGpu(const Scene& scene, TriangleOrder order) : features_(ml::materialFeatures(scene)) {
+    if (features_ & ML_FEATURE_TRANSMISSION_MAP) {
+        // Units 16 and 17 (bindings.h): past GL 4.5's minimum, so asked of the GPU. The transparent
+        // pass samples them in a compute shader, and the MSAA forward pass in a fragment shader.
+        GLint fragment = 0, compute = 0;
+        glGetIntegerv(GL_MAX_TEXTURE_IMAGE_UNITS, &fragment);
+        glGetIntegerv(GL_MAX_COMPUTE_TEXTURE_IMAGE_UNITS, &compute);
+        if (std::min(fragment, compute) < GLint(kUnitsBound))
+            throw std::runtime_error("the scene's KHR_materials_transmission or KHR_materials_volume textures need " +
+                                     std::to_string(kUnitsBound) + " texture units a shader stage; this GPU offers " +
+                                     std::to_string(std::min(fragment, compute)));
+    }
     vertices_ = gl::Buffer::fromSpan<Vertex>("scene.vertices", scene.vertices, 0);
 
     GLuint vao = 0;
@@ -139,6 +163,15 @@ SceneGpu::SceneGpu(const Scene& scene, TriangleOrder order) : features_(ml::mate
             g.anisotropy = glm::vec4(std::cos(m.anisotropyRotation), std::sin(m.anisotropyRotation), m.anisotropyStrength, 0.0f);
         if (m.iridescenceModelled())
             g.iridescence = glm::vec4(m.iridescenceFactor, m.iridescenceIor, m.iridescenceThicknessMinimum, m.iridescenceThicknessMaximum);
+        if (m.transmissionModelled()) {
+            // The IOR itself (the specular record holds its F0): the refraction and the rough lobe's blur.
+            g.transmission = glm::vec4(m.transmissionFactor, m.thicknessFactor, m.attenuationDistance, m.ior);
+            g.attenuation = glm::vec4(m.attenuationColor, 0.0f);
+            if (!m.blended()) {
+                g.info.w |= ML_MATERIAL_TRANSMISSIVE_COVERAGE;
+                if (!m.alphaTested()) g.emissiveCutoff.a = 0.0f;  // OPAQUE: covered wherever it is drawn
+            }
+        }
         if (m.unlit) g.info.w |= ML_MATERIAL_UNLIT;
         TextureSet set{};
         bool textured = false;
@@ -192,7 +225,7 @@ SceneGpu::SceneGpu(const Scene& scene, TriangleOrder order) : features_(ml::mate
     // with baseInstance i, so the per-draw attribute (divisor 1) reads element i.
     const auto blended = [&](const DrawRange& d) {
         const std::uint32_t m = materialOf(d);
-        return m < scene.materials.size() && scene.materials[m].blended();
+        return m < scene.materials.size() && scene.materials[m].drawnAsGlass();
     };
     const auto groupOf = [&](const DrawRange& d) {
         const std::uint32_t m = materialOf(d);
@@ -279,8 +312,9 @@ const char* drawSubmissionName(DrawSubmission submission) {
 void SceneGpu::bindTextureSet(int set) const {
     // Slots that share a unit (KHR_materials_iridescence's two maps) bind the one with a texture:
     // the loader made them one texture where both have one.
-    std::array<bool, 16> unitTextured{};
+    std::array<bool, kUnitsBound> unitTextured{};
     for (int slot = 0; slot < materialSlots(features_); ++slot) {
+        if (!bindsSlot(slot, features_)) continue;
         const SlotBinding b = set >= 0 && set < static_cast<int>(textureSets_.size()) ? textureSets_[static_cast<std::size_t>(set)][slot]
                                                                                      : SlotBinding{};
         if (b.texture < 0 && unitTextured[kSlotUnits[slot]]) continue;
@@ -426,7 +460,8 @@ std::optional<glm::ivec4> SceneGpu::transparentScreenRect(const glm::mat4& viewP
 }
 
 void SceneGpu::unbindSamplers() const {
-    for (GLuint unit : kSlotUnits) glBindSampler(unit, 0);
+    for (int slot = 0; slot < ML_TEXTURE_SLOTS; ++slot)
+        if (bindsSlot(slot, features_)) glBindSampler(kSlotUnits[slot], 0);
 }
 
 void SceneGpu::refitTransparentBounds(const std::function<glm::vec3(std::uint32_t, const glm::vec3&)>& posed) {

@@ -30,10 +30,11 @@ truncation at two orders leaves out against 40.
 """
 import argparse
 import math
-import subprocess
 import sys
 
 import numpy as np
+
+from shading_mirror_io import as_float32, run_mirror, sunlit_row
 
 MIN_ALPHA = 0.002         # renderer convention: GGX's alpha floor (ML_GGX_MIN_ALPHA)
 MIRROR_TOLERANCE = 2e-4
@@ -199,15 +200,10 @@ def main():
     eye = position + v * eye_distance
     rows = []
     for i in range(count):
-        rows.append([*eye[i], *position[i], *n[i], *base[i], metallic[i], roughness[i], ior[i], 1.0, 1.0, 1.0, 1.0, 0,
-                     0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, ambient, *(-l[i]), *sun_color,
-                     0.0, 0.0, 1.0, 0.0, 0.0, 1.0, 0.0, 0.0, 1.0, 1.0, 0.0,  # no anisotropy
-                     k[i], d[i], eta[i]])
-    text = "\n".join(" ".join(f"{x:.9g}" for x in row) for row in rows) + "\n"
-    out = subprocess.run([args.mirror], input=text, capture_output=True, text=True, check=True).stdout
-    got = np.array([[float(x) for x in line.split()] for line in out.splitlines()])
-    # What the mirror reads, and so sees: the float32 of every input.
-    f32 = lambda a: np.asarray(a, np.float32).astype(float)
+        rows.append(sunlit_row(eye[i], position[i], n[i], base[i], metallic[i], roughness[i], ior[i], ambient, -l[i], sun_color) + [
+            k[i], d[i], eta[i]])
+    got = run_mirror(args.mirror, rows)
+    f32 = as_float32
     v32 = normalize(f32(eye) - f32(position))
     expected = radiance(n, v32, normalize(f32(l)), f32(sun_color), ambient, f32(base), metallic, f32(roughness),
                         f32(ior), f32(k), f32(d), f32(eta))

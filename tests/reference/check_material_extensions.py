@@ -30,7 +30,6 @@ exactly, and reports how far apart they are on the half metal.
 import argparse
 import math
 import os
-import subprocess
 import sys
 from typing import NamedTuple
 
@@ -41,6 +40,7 @@ import analytic_gltf  # noqa: E402
 import check_cpu_reference as cpu_check  # noqa: E402
 import cpu_reference as ref  # noqa: E402
 import material_extensions as mx  # noqa: E402
+from shading_mirror_io import run_mirror  # noqa: E402
 
 MIRROR_TOLERANCE = 1e-4   # relative, float32 (the mirror) against float64
 PIXEL_TOLERANCE = 1e-3    # relative: the rasterizer's interpolated positions at grazing view
@@ -196,12 +196,6 @@ def directions(rng):
         l = ref.normalize(math.sin(el) * n - math.cos(el) * t + side * math.sin(el) * b)
         cases.append((n, v, l))
     return cases
-
-
-def run_mirror(mirror, rows):
-    text = "\n".join(" ".join(f"{x:.9g}" for x in row) for row in rows) + "\n"
-    out = subprocess.run([mirror], input=text, capture_output=True, text=True, check=True).stdout
-    return np.array([[float(x) for x in line.split()] for line in out.splitlines()])
 
 
 def relative(got, expected):

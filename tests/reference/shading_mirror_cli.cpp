@@ -4,9 +4,12 @@
 //   eye(3) position(3) normal(3) base(3) metallic roughness ior specularFactor specularColor(3)
 //   unlit clearcoat clearcoatRoughness clearcoatNormal(3) sheenColor(3) sheenRoughness ambient
 //   sunDirection(3) sunColor(3) anisotropyStrength anisotropyRotation tangent(4) geometricNormal(3)
-//   anisotropyMapDirection(2) [iridescence iridescenceThickness iridescenceIor]
-// (the last three optional: KHR_materials_iridescence's strength, thickness in nm and film IOR;
-// tests/reference/check_iridescence.py gives them)
+//   anisotropyMapDirection(2) [iridescence iridescenceThickness iridescenceIor
+//   [transmission thickness attenuationDistance attenuationColor(3) behind(3)]]
+// (the optional three: KHR_materials_iridescence's strength, thickness in nm and film IOR;
+// tests/reference/check_iridescence.py gives them; after them the optional nine:
+// KHR_materials_transmission's and KHR_materials_volume's, and the radiance seen through the
+// surface; tests/reference/check_transmission.py gives them)
 // and one line "r g b" of shadeReference's linear radiance on stdout, in float's shortest exact form.
 #include <algorithm>
 #include <cstdio>
@@ -41,6 +44,9 @@ int main() {
         if (s.anisotropyStrength > 0.0f && !anisotropyDirections(ng, tangent, mapDirection, rotation, s.anisotropyT, s.anisotropyB))
             s.anisotropyStrength = 0.0f;
         if (!(in >> s.iridescence >> s.iridescenceThickness >> s.iridescenceIor)) s.iridescence = 0.0f;
+        if (!(in >> s.transmission >> s.thickness >> s.attenuationDistance >> s.attenuationColor.r >> s.attenuationColor.g >>
+              s.attenuationColor.b >> s.behind.r >> s.behind.g >> s.behind.b))
+            s.transmission = 0.0f;
         s.baseColor = base;
         s.specularF0 = glm::min(dielectricF0(ior) * specularColor, glm::vec3(1.0f));  // as glsl/include/material.glsl
         s.specularWeight = specularFactor;

@@ -1,5 +1,6 @@
 // The glTF loader's materials: what a file's material says reaches the scene model, once and in
 // the right colour space, and every bad value is refused in one line that names it.
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -300,6 +301,59 @@ TEST(GltfMaterials, IridescenceIsRead) {
     EXPECT_FALSE(s.materials.at(0).iridescenceModelled()) << "glTF's default iridescenceFactor is 0";
 }
 
+// KHR_materials_transmission and KHR_materials_volume load their factors and maps with glTF's
+// defaults (thin-walled, no tint); a transmissive material is drawn as glass, and a factor of 0 is
+// opaque whatever its map.
+TEST(GltfMaterials, TransmissionAndVolumeReachTheSceneModel) {
+    const fs::path dir = testDir();
+    Gltf g = withMaterial({{"extensions",
+                            {{"KHR_materials_transmission", {{"transmissionFactor", 0.75}, {"transmissionTexture", {{"index", 0}}}}},
+                             {"KHR_materials_volume", {{"thicknessFactor", 0.3},
+                                                       {"thicknessTexture", {{"index", 0}}},
+                                                       {"attenuationDistance", 2.5},
+                                                       {"attenuationColor", {0.2, 0.5, 0.9}}}}}}});
+    g.doc["extensionsUsed"] = {"KHR_materials_transmission", "KHR_materials_volume"};
+    std::vector<std::string> warnings;
+    Scene s = load(g.writeGltf(dir, "transmission"), warnings);
+    const Material& m = s.materials.at(0);
+    EXPECT_FLOAT_EQ(m.transmissionFactor, 0.75f);
+    EXPECT_TRUE(m.transmissionTexture.present());
+    EXPECT_FLOAT_EQ(m.thicknessFactor, 0.3f);
+    EXPECT_TRUE(m.thicknessTexture.present());
+    EXPECT_FLOAT_EQ(m.attenuationDistance, 2.5f);
+    EXPECT_EQ(m.attenuationColor, glm::vec3(0.2f, 0.5f, 0.9f));
+    EXPECT_TRUE(m.transmissionModelled());
+    EXPECT_TRUE(m.drawnAsGlass()) << "light passes through: drawn by the transparent pass";
+    EXPECT_FALSE(m.blended());
+    for (const std::string& w : warnings) EXPECT_EQ(w.find("not modelled"), std::string::npos) << w;
+
+    Gltf defaults = withMaterial({{"extensions", {{"KHR_materials_transmission", {{"transmissionFactor", 1.0}}},
+                                                  {"KHR_materials_volume", json::object()}}}});
+    s = load(defaults.writeGltf(dir, "transmission_defaults"), warnings);
+    EXPECT_FLOAT_EQ(s.materials.at(0).thicknessFactor, 0.0f) << "thin-walled";
+    EXPECT_FLOAT_EQ(s.materials.at(0).attenuationDistance, 0.0f) << "infinite: no tint";
+    EXPECT_EQ(s.materials.at(0).attenuationColor, glm::vec3(1.0f));
+
+    // The thickness is in the mesh's units: a node drawn at scale 2 draws a copy twice as thick.
+    Gltf scaled;
+    scaled.add("materials", {{"extensions", {{"KHR_materials_transmission", {{"transmissionFactor", 1.0}}},
+                                            {"KHR_materials_volume", {{"thicknessFactor", 0.3}}}}}});
+    const int mesh = scaled.mesh({trianglePrimitive(scaled, true, 0)});
+    scaled.scene({scaled.node({{"mesh", mesh}}), scaled.node({{"mesh", mesh}, {"scale", {2.0, 2.0, 2.0}}})});
+    s = load(scaled.writeGltf(dir, "volume_scaled"), warnings);
+    std::vector<float> thicknesses;
+    for (const DrawRange& d : s.draws) thicknesses.push_back(s.materials.at(d.material).thicknessFactor);
+    std::sort(thicknesses.begin(), thicknesses.end());
+    ASSERT_EQ(thicknesses.size(), 2u);
+    EXPECT_FLOAT_EQ(thicknesses[0], 0.3f);
+    EXPECT_FLOAT_EQ(thicknesses[1], 0.6f);
+
+    Gltf off = withMaterial({{"extensions", {{"KHR_materials_transmission", {{"transmissionTexture", {{"index", 0}}}}}}}});
+    s = load(off.writeGltf(dir, "no_transmission"), warnings);
+    EXPECT_FALSE(s.materials.at(0).transmissionModelled()) << "glTF's default transmissionFactor is 0";
+    EXPECT_FALSE(s.materials.at(0).drawnAsGlass());
+}
+
 TEST(GltfMaterials, BadValuesAreNamedInOneLine) {
     const fs::path dir = testDir();
     const auto refused = [&](const char* name, const json& material, std::initializer_list<const char*> keywords,
@@ -370,6 +424,17 @@ TEST(GltfMaterials, BadValuesAreNamedInOneLine) {
             {"materials[0]", "thickness -10", "negative"});
     refused("iridescence_thickness_max_negative", film({{"iridescenceFactor", 1}, {"iridescenceThicknessMaximum", -1}}),
             {"materials[0]", "thickness -1", "negative"});
+    const auto transmission = [](const json& fields) { return json{{"extensions", {{"KHR_materials_transmission", fields}}}}; };
+    refused("transmission_factor", transmission({{"transmissionFactor", 1.5}}), {"materials[0]", "transmissionFactor 1.5", "outside [0, 1]"});
+    refused("transmission_texture", transmission({{"transmissionFactor", 1}, {"transmissionTexture", {{"index", 9}}}}),
+            {"materials[0]", "transmissionTexture", "index 9"});
+    const auto volume = [](const json& fields) {
+        return json{{"extensions", {{"KHR_materials_transmission", {{"transmissionFactor", 1}}}, {"KHR_materials_volume", fields}}}};
+    };
+    refused("volume_thickness", volume({{"thicknessFactor", -0.5}}), {"materials[0]", "thicknessFactor -0.5", "negative"});
+    refused("volume_distance", volume({{"attenuationDistance", 0}}), {"materials[0]", "attenuationDistance 0", "not above 0"});
+    refused("volume_colour", volume({{"attenuationColor", {0.5, 1.5, 0.5}}}), {"materials[0]", "attenuationColor", "[0, 1]"});
+    refused("volume_colour_length", volume({{"attenuationColor", {0.5, 0.5}}}), {"materials[0]", "attenuationColor"});
     refused("iridescence_texture", film({{"iridescenceFactor", 1}, {"iridescenceThicknessTexture", {{"index", 9}}}}),
             {"materials[0]", "iridescenceThicknessTexture", "index 9"});
     {
