@@ -21,20 +21,23 @@ void NaiveForward::render(const FrameContext& ctx) {
     const double pixelLights = static_cast<double>(width) * height * std::max<std::uint32_t>(ctx.lights.count(), 1u);
     const int bands = std::clamp(static_cast<int>(std::ceil(pixelLights / pixelLightsPerDraw_)), 1, height);
     if (bands == 1) {
-        renderBand(ctx);
+        shadeOpaque(ctx);
+        transparent_.render(ctx, nullptr);
         return;
     }
-    for (int band = 0; band < bands; ++band) {
-        const int y0 = height * band / bands, y1 = height * (band + 1) / bands;
-        gl::ScissorScope scissor({0, y0, width, y1 - y0});
-        renderBand(ctx);
-        glFinish();  // each band its own submission, finished before the next
-    }
-}
-
-void NaiveForward::renderBand(const FrameContext& ctx) {
-    shadeOpaque(ctx);
-    transparent_.render(ctx, nullptr);
+    // Every band's opaque frame before any glass: a transmissive surface sees the opaque frame
+    // behind it beyond its own band (refracted, blurred), copied once when the last band is drawn.
+    const auto inBands = [&](const auto& drawBand) {
+        for (int band = 0; band < bands; ++band) {
+            const int y0 = height * band / bands, y1 = height * (band + 1) / bands;
+            gl::ScissorScope scissor({0, y0, width, y1 - y0});
+            drawBand();
+            glFinish();  // each band its own submission, finished before the next
+        }
+    };
+    inBands([&] { shadeOpaque(ctx); });
+    transparent_.copyOpaqueFrame(ctx);
+    inBands([&] { transparent_.render(ctx, nullptr, OpaqueFrame::AlreadyCopied); });
 }
 
 void NaiveForward::shadeOpaque(const FrameContext& ctx) {

@@ -4,7 +4,8 @@
 // each, waited for before the next (a flush alone still met the watchdog on an H100), so no
 // submission runs into the driver's watchdog (seconds on NVIDIA): the physical reference at tens
 // of thousands of lights and more is such a frame. A pass inside a band that scissors its own
-// raster keeps to the band (gl::ScissorScope).
+// raster keeps to the band (gl::ScissorScope). Every band's opaque frame is drawn before any
+// band's glass: a transmissive surface sees the opaque frame beyond its band.
 #pragma once
 
 #include "renderer/scene/raster_program.h"
@@ -26,7 +27,6 @@ public:
 
 private:
     void shadeOpaque(const FrameContext& ctx);
-    void renderBand(const FrameContext& ctx);
 
     double pixelLightsPerDraw_;
     RasterProgram program_;

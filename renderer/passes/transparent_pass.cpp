@@ -62,11 +62,11 @@ void TransparentPass::countFragments(const FrameContext& ctx, DebugView view) {
     capture_->count(ctx, severalSets ? GlassColors::Always : layerGroups_ ? GlassColors::WhereRoom : GlassColors::None, layerGroups_);
 }
 
-void TransparentPass::render(const FrameContext& ctx, const ClusteredLighting* lists) {
+void TransparentPass::render(const FrameContext& ctx, const ClusteredLighting* lists, OpaqueFrame opaqueFrame) {
     if (!ctx.scene.hasTransparent()) return;
     if (lists && lists->settings().view != DebugView::Shaded) return;
     if (forward_.variant(false)) renderForward(ctx, lists);
-    else if (capture_) renderCaptured(ctx, lists);
+    else if (capture_) renderCaptured(ctx, lists, opaqueFrame);
 }
 
 void TransparentPass::renderForward(const FrameContext& ctx, const ClusteredLighting* lists) const {
@@ -84,11 +84,12 @@ void TransparentPass::renderForward(const FrameContext& ctx, const ClusteredLigh
     glDepthMask(GL_TRUE);
 }
 
-void TransparentPass::renderCaptured(const FrameContext& ctx, const ClusteredLighting* lists) {
+void TransparentPass::renderCaptured(const FrameContext& ctx, const ClusteredLighting* lists, OpaqueFrame opaqueFrame) {
     if (!capture_->counted()) countFragments(ctx);
     const std::vector<int> sets = ctx.scene.transparentTextureSets();
     capture_->fill(ctx);
-    if (seesThrough_) copyOpaqueFrame(ctx);
+    if (opaqueFrame == OpaqueFrame::CopyNow) copyOpaqueFrame(ctx);
+    else if (seesThrough_) glBindTextureUnit(ML_TEX_REFRACTION_SOURCE, opaqueFrame_.id());
     const bool storesColors = sets.size() > 1;
     const bool splits = !storesColors && capture_->hasDeepTileList();
     auto pass = ctx.timer.pass(timerName_);
@@ -118,6 +119,7 @@ void TransparentPass::renderCaptured(const FrameContext& ctx, const ClusteredLig
 }
 
 void TransparentPass::copyOpaqueFrame(const FrameContext& ctx) {
+    if (!seesThrough_ || !capture_ || !ctx.scene.hasTransparent()) return;
     auto pass = ctx.timer.pass(timerName_ + "-behind");
     const gl::Texture2D& hdr = ctx.targets.hdr();
     if (!opaqueFrame_ || opaqueFrame_.width() != hdr.width() || opaqueFrame_.height() != hdr.height()) {

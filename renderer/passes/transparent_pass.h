@@ -62,6 +62,10 @@ struct TransparencySettings {
     std::uint32_t layerGroups = 1;
 };
 
+// Whether render() copies the opaque frame the transmissive surfaces see (copyOpaqueFrame) or a
+// method that draws its glass in parts (naive's bands) copied it before the first part.
+enum class OpaqueFrame { CopyNow, AlreadyCopied };
+
 class TransparentPass {
 public:
     // Naive's pass: every fragment loops over every light. `lights`: spots and the light sum alone.
@@ -77,7 +81,11 @@ public:
     // Shades and blends the transparent ranges into the HDR target; nothing where the scene has
     // none (or --transparency off). `lists` is null for naive. Throws std::runtime_error when
     // the capture does not fit (GlassFragments::fill).
-    void render(const FrameContext& ctx, const ClusteredLighting* lists);
+    void render(const FrameContext& ctx, const ClusteredLighting* lists, OpaqueFrame opaqueFrame = OpaqueFrame::CopyNow);
+    // KHR_materials_transmission: the opaque frame copied, with its mip chain, to be seen through
+    // the transmissive surfaces (glass_shade.comp's seeThrough) and bound at ML_TEX_REFRACTION_SOURCE;
+    // nothing where no material transmits, the pass draws nothing or the forward pass draws it.
+    void copyOpaqueFrame(const FrameContext& ctx);
 
     // The capture of the last frame (null with --msaa or without BLEND materials).
     const GlassFragments* capture() const { return capture_.get(); }
@@ -86,13 +94,10 @@ private:
     TransparentPass(std::string timerName, std::uint32_t materialFeatures, const TransparencySettings& transparency,
                     const char* forwardShader, const shaders::Defines& defines, bool listRounds);
     void renderForward(const FrameContext& ctx, const ClusteredLighting* lists) const;
-    void renderCaptured(const FrameContext& ctx, const ClusteredLighting* lists);
+    void renderCaptured(const FrameContext& ctx, const ClusteredLighting* lists, OpaqueFrame opaqueFrame);
     // The four dispatches of a split frame (glass_shade.comp's kListTiles, then kShadeParts
     // beside kShadeShallowTiles, then kBlendParts).
     void shadeSplittingDeepTiles(const FrameContext& ctx, int textureSet);
-    // KHR_materials_transmission: the opaque frame copied, with its mip chain, to be seen through
-    // the transmissive surfaces (glass_shade.comp's seeThrough) and bound at ML_TEX_REFRACTION_SOURCE.
-    void copyOpaqueFrame(const FrameContext& ctx);
 
     std::string timerName_;
     RasterProgram forward_;                   // --msaa only; empty otherwise or without BLEND
