@@ -28,13 +28,12 @@ truncation at two orders leaves out against 40.
 
   check_iridescence.py --mirror build-test/tests/ml_shading_mirror
 """
-import argparse
 import math
 import sys
 
 import numpy as np
 
-from shading_mirror_io import as_float32, run_mirror, sunlit_row
+from shading_mirror_io import as_float32, dot, mirror_arguments, normalize, random_views, run_mirror, sunlit_row
 
 MIN_ALPHA = 0.002         # renderer convention: GGX's alpha floor (ML_GGX_MIN_ALPHA)
 MIRROR_TOLERANCE = 2e-4
@@ -135,14 +134,6 @@ def check_spectral_integration(rng, cases=30):
     return worst_form, worst_truncation
 
 
-def dot(a, b):
-    return np.sum(a * b, axis=-1)
-
-
-def normalize(v):
-    return v / np.linalg.norm(v, axis=-1, keepdims=True)
-
-
 def ggx_dv(n, v, l, roughness):
     nl = np.maximum(dot(n, l), 0.0)
     nv = np.abs(dot(n, v))
@@ -173,19 +164,10 @@ def radiance(n, v, l, sun, ambient, base, metallic, roughness, ior, k, d, eta):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--mirror", required=True, help="ml_shading_mirror")
-    parser.add_argument("--cases", type=int, default=2000)
-    args = parser.parse_args()
+    args = mirror_arguments(__doc__.splitlines()[0])
     rng = np.random.default_rng(7)
     count = args.cases
-    n = np.tile([0.0, 0.0, 1.0], (count, 1))
-    v = normalize(rng.normal(size=(count, 3)))
-    v[:, 2] = np.abs(v[:, 2]) + 0.05
-    v = normalize(v)
-    l = normalize(rng.normal(size=(count, 3)))
-    l[:, 2] = np.abs(l[:, 2]) + 0.02
-    l = normalize(l)
+    n, v, l = random_views(rng, count)
     base = rng.uniform(0.05, 0.95, size=(count, 3))
     metallic = (rng.uniform(size=count) < 0.35).astype(float)
     roughness = rng.uniform(0.1, 1.0, size=count)

@@ -23,24 +23,15 @@ lights behind add nothing (so a lobe that is never evaluated cannot pass).
 
   check_transmission.py --mirror build-test/tests/ml_shading_mirror
 """
-import argparse
 import math
 import sys
 
 import numpy as np
 
-from shading_mirror_io import as_float32, run_mirror, sunlit_row
+from shading_mirror_io import as_float32, dot, mirror_arguments, normalize, random_views, run_mirror, sunlit_row
 
 MIN_ALPHA = 0.002         # renderer convention: GGX's alpha floor (ML_GGX_MIN_ALPHA)
 MIRROR_TOLERANCE = 2e-4   # relative, float32 (the mirror) against float64, plus 1e-6 absolute
-
-
-def dot(a, b):
-    return np.sum(a * b, axis=-1)
-
-
-def normalize(v):
-    return v / np.linalg.norm(v, axis=-1, keepdims=True)
 
 
 def schlick(f0, cos):
@@ -84,18 +75,10 @@ def radiance(n, v, l, sun, ambient, base, metallic, roughness, ior, t, thickness
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--mirror", required=True, help="ml_shading_mirror")
-    parser.add_argument("--cases", type=int, default=2000)
-    args = parser.parse_args()
+    args = mirror_arguments(__doc__.splitlines()[0])
     rng = np.random.default_rng(11)
     count = args.cases
-    n = np.tile([0.0, 0.0, 1.0], (count, 1))
-    v = normalize(rng.normal(size=(count, 3)))
-    v[:, 2] = np.abs(v[:, 2]) + 0.05
-    v = normalize(v)
-    l = normalize(rng.normal(size=(count, 3)))
-    l[:, 2] = np.abs(l[:, 2]) + 0.02
+    n, v, l = random_views(rng, count)
     behind_side = rng.uniform(size=count) < 0.5
     l[behind_side, 2] *= -1.0  # half the suns behind the surface
     l = normalize(l)
