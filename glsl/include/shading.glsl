@@ -484,8 +484,8 @@ vec3 sheenUnlit(SurfacePoint s, vec3 viewDir) {
 #endif
 
 #if ML_HAS(ML_FEATURE_TRANSMISSION)
-// Does light pass through? Not where there is none, nor under --specular off for the lights (the
-// lobe is a specular BTDF).
+// Does light pass through? Not where there is none. (Under --specular off the lights behind add
+// nothing, transmittedLight says so, but the scene behind still shows through.)
 bool transmissive(SurfacePoint s) { return s.transmission > 0.0; }
 
 // Beer's law over the volume's thickness: c_a^(d / d_a); 1 where thin-walled or untinted.
